@@ -1,0 +1,97 @@
+#include "files.h"
+
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <system_error>
+
+namespace fs = std::filesystem;
+
+namespace rb::cli {
+
+namespace {
+bool sameIgnoringCase(const std::string& a, const std::string& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+      return false;
+  return true;
+}
+}  // namespace
+
+std::optional<std::string> FileSourceReader::find(const std::string& path) {
+  std::error_code ec;
+  fs::path p(path);
+  if (fs::is_regular_file(p, ec)) return fs::weakly_canonical(p, ec).string();
+  // Resolve each component of the path without regard to case.
+  fs::path resolved = p.is_absolute() ? p.root_path() : fs::path(".");
+  for (const fs::path& part : p.relative_path()) {
+    fs::path exact = resolved / part;
+    if (part == "." || part == ".." || fs::exists(exact, ec)) {
+      resolved = exact;
+      continue;
+    }
+    bool found = false;
+    for (const auto& entry : fs::directory_iterator(resolved, ec)) {
+      if (sameIgnoringCase(entry.path().filename().string(), part.string())) {
+        resolved = entry.path();
+        found = true;
+        break;
+      }
+    }
+    if (!found) return std::nullopt;
+  }
+  if (!fs::is_regular_file(resolved, ec)) return std::nullopt;
+  return fs::weakly_canonical(resolved, ec).string();
+}
+
+std::optional<std::string> FileSourceReader::read(const std::string& canonical) {
+  return readFile(canonical);
+}
+
+std::optional<std::string> readFile(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return ss.str();
+}
+
+std::string readStdin() {
+  std::ostringstream ss;
+  ss << std::cin.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> libraryDirs() {
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("RB_LIB_PATH")) {
+    std::string s(env);
+    size_t start = 0;
+    while (start <= s.size()) {
+      size_t colon = s.find(':', start);
+      std::string part = s.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+      if (!part.empty()) dirs.push_back(part);
+      if (colon == std::string::npos) break;
+      start = colon + 1;
+    }
+  }
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    fs::path installed = exe.parent_path().parent_path() / "share" / "rb" / "lib";
+    if (fs::is_directory(installed, ec)) dirs.push_back(installed.string());
+  }
+#ifdef RB_SOURCE_LIB_DIR
+  dirs.push_back(RB_SOURCE_LIB_DIR);
+#endif
+  return dirs;
+}
+
+}  // namespace rb::cli

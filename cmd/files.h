@@ -1,0 +1,30 @@
+#pragma once
+// Program files on disk: the SourceReader that core's loader uses, and where rb's own library
+// files (RB-9.bas) live.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "loader.h"
+
+namespace rb::cli {
+
+/// Reads program files from the file system. A name that does not exist as written is also
+/// looked up without regard to case, since RobotBASIC programs come from Windows.
+class FileSourceReader : public SourceReader {
+ public:
+  std::optional<std::string> find(const std::string& path) override;
+  std::optional<std::string> read(const std::string& canonical) override;
+};
+
+/// Reads a whole file; nullopt when it cannot be read.
+std::optional<std::string> readFile(const std::string& path);
+/// Reads standard input to the end.
+std::string readStdin();
+
+/// Folders searched for #include files after the including file's folder: $RB_LIB_PATH
+/// (colon-separated), the installed share/rb/lib beside the executable, and the source tree's lib/.
+std::vector<std::string> libraryDirs();
+
+}  // namespace rb::cli

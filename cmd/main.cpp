@@ -1,0 +1,31 @@
+// rb: a RobotBASIC toolchain. This file only wires the subcommands together and maps outcomes
+// to exit codes; each subcommand lives in its own *_command.cpp.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "check_command.h"
+#include "exit_codes.h"
+#include "run_command.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"rb: run, check, trace and render RobotBASIC programs", "rb"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "rb " RB_VERSION);
+  int exitCode = rb::exitcode::kOk;
+  rb::cli::addRunCommand(app, exitCode);
+  rb::cli::addCheckCommand(app, exitCode);
+  app.footer("Run 'rb SUBCOMMAND --help' for the options of a subcommand. Manual: man rb.");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return rb::exitcode::kUsage;
+  }
+  return exitCode;
+}

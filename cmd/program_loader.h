@@ -1,0 +1,33 @@
+#pragma once
+// Loading and compiling a program file for the subcommands, with the diagnostics kept for
+// printing. This is orchestration only: the language work happens in core/.
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "bytecode.h"
+#include "compiler.h"
+#include "diagnostic.h"
+#include "loader.h"
+
+namespace rb::cli {
+
+struct LoadedFile {
+  std::unique_ptr<LoadedProgram> program;  ///< null when the file could not be read
+  std::unique_ptr<Program> compiled;       ///< null when there are errors
+  DiagnosticList diags;
+  int exitCode = 0;                        ///< kNoInput when the file is missing, else 0
+};
+
+/// Reads FILE ("-": standard input), loads its includes and compiles it.
+LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint);
+
+/// Prints diagnostics gcc-style; warnings and notes too unless `errorsOnly`.
+void printDiagnostics(std::FILE* out, const SourceSet& sources, const DiagnosticList& diags,
+                      bool errorsOnly);
+
+/// Prints one diagnostic (used for runtime errors).
+void printDiagnostic(std::FILE* out, const SourceSet& sources, const Diagnostic& d);
+
+}  // namespace rb::cli

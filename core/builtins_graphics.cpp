@@ -1,0 +1,8 @@
+// graphics built-ins (filled in by the simulator and interaction work).
+#include "builtins_impl.h"
+
+namespace rb::builtins {
+
+void appendGraphicsBuiltins(std::vector<Builtin>& /*table*/) {}
+
+}  // namespace rb::builtins

@@ -1,0 +1,36 @@
+#pragma once
+// Everything a running program does to the outside world goes through a Host: output, typed
+// input, the clock, waiting, and the hooks a live view or a tracer needs. rb's commands build
+// a Host for the terminal, for headless runs and for tests; core/ never touches stdin, stdout or
+// the system clock itself.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "source.h"
+
+namespace rb {
+
+class Host {
+ public:
+  virtual ~Host() = default;
+
+  /// Text the program prints (already formatted; "\n" ends lines).
+  virtual void output(std::string_view text) = 0;
+  /// One line typed in answer to `input` (without its line end); nullopt when input is over.
+  virtual std::optional<std::string> inputLine(std::string_view prompt) = 0;
+  /// Milliseconds since the run started, on the run's clock (virtual when headless).
+  virtual double clockMs() = 0;
+  /// Lets `ms` milliseconds pass on the run's clock (a headless run only advances its clock).
+  virtual void wait(double ms) = 0;
+  /// Seconds of real time since the run started, for --timeout.
+  virtual double wallSeconds() = 0;
+  /// Called regularly while the program runs; a live view redraws and reads keys here.
+  /// Returning false stops the program (the user quit).
+  virtual bool poll() { return true; }
+  /// Called before each statement when the program was compiled for line tracing.
+  virtual void onLine(SourceLoc /*loc*/) {}
+};
+
+}  // namespace rb

@@ -1,0 +1,16 @@
+#pragma once
+// The one exception type for errors while a program runs. It is thrown anywhere in the
+// interpreter or a built-in and caught once, at the run boundary, which adds the position of
+// the instruction that failed.
+
+#include <stdexcept>
+#include <string>
+
+namespace rb {
+
+class RuntimeError : public std::runtime_error {
+ public:
+  explicit RuntimeError(const std::string& message) : std::runtime_error(message) {}
+};
+
+}  // namespace rb

@@ -1,0 +1,113 @@
+#pragma once
+// RobotBASIC values are typeless: a slot holds an integer, a double, a string or an array
+// (arrays live in variables; they are not first-class in expressions). Integers and doubles are
+// kept apart so that integral results print without a decimal point. Strings and arrays are
+// reference counted and shared between copies; arrays are never copied implicitly.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rb {
+
+enum class VType : uint8_t { Undef, Int, Num, Str, Arr };
+
+class Value;
+
+struct StrObj {
+  uint32_t refs = 1;
+  std::string s;
+};
+
+struct ArrObj {
+  uint32_t refs = 1;
+  std::vector<int64_t> dims;   ///< extent of each dimension
+  std::vector<Value> items;    ///< row-major
+};
+
+class Value {
+ public:
+  Value() : type_(VType::Undef), i_(0) {}
+  static Value integer(int64_t v) { Value r; r.type_ = VType::Int; r.i_ = v; return r; }
+  static Value number(double v) { Value r; r.type_ = VType::Num; r.d_ = v; return r; }
+  static Value boolean(bool b) { return integer(b ? 1 : 0); }
+  static Value string(std::string s);
+  static Value array(std::vector<int64_t> dims);
+
+  Value(const Value& o) : type_(o.type_), i_(o.i_) { retain(); }
+  Value(Value&& o) noexcept : type_(o.type_), i_(o.i_) { o.type_ = VType::Undef; }
+  Value& operator=(const Value& o) {
+    if (this != &o) {
+      o.retainConst();
+      release();
+      type_ = o.type_;
+      i_ = o.i_;
+    }
+    return *this;
+  }
+  Value& operator=(Value&& o) noexcept {
+    if (this != &o) {
+      release();
+      type_ = o.type_;
+      i_ = o.i_;
+      o.type_ = VType::Undef;
+    }
+    return *this;
+  }
+  ~Value() { release(); }
+
+  VType type() const { return type_; }
+  bool isUndef() const { return type_ == VType::Undef; }
+  bool isInt() const { return type_ == VType::Int; }
+  bool isNum() const { return type_ == VType::Num; }
+  bool isNumeric() const { return type_ == VType::Int || type_ == VType::Num; }
+  bool isStr() const { return type_ == VType::Str; }
+  bool isArr() const { return type_ == VType::Arr; }
+  bool isHeap() const { return type_ == VType::Str || type_ == VType::Arr; }
+
+  int64_t i() const { return i_; }
+  double d() const { return d_; }
+  /// The numeric value as a double (Int or Num only).
+  double asDouble() const { return type_ == VType::Int ? static_cast<double>(i_) : d_; }
+  const std::string& str() const { return s_->s; }
+  ArrObj& arr() const { return *a_; }
+
+  // Fast in-place setters used by the interpreter's hot paths.
+  void setInt(int64_t v) { if (isHeap()) release(); type_ = VType::Int; i_ = v; }
+  void setNum(double v) { if (isHeap()) release(); type_ = VType::Num; d_ = v; }
+  void clear() { release(); type_ = VType::Undef; i_ = 0; }
+
+ private:
+  void retain() {
+    if (type_ == VType::Str) ++s_->refs;
+    else if (type_ == VType::Arr) ++a_->refs;
+  }
+  void retainConst() const { const_cast<Value*>(this)->retain(); }
+  void release() {
+    if (type_ == VType::Str) {
+      if (--s_->refs == 0) delete s_;
+    } else if (type_ == VType::Arr) {
+      if (--a_->refs == 0) delete a_;
+    }
+  }
+
+  VType type_;
+  union {
+    int64_t i_;
+    double d_;
+    StrObj* s_;
+    ArrObj* a_;
+  };
+};
+
+/// A number as `print` shows it: integers plainly, doubles with up to 15 significant digits and
+/// no trailing zeros ("3.5", "0.333333333333333", "1e+20").
+std::string formatNumber(double d);
+/// A value as `print` shows it.
+std::string formatValue(const Value& v);
+/// Parses text the way `input` and toNumber() do: the whole text (spaces trimmed) must be a
+/// number. Returns false when it is not.
+bool parseNumber(std::string_view text, Value& out);
+
+}  // namespace rb

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every build, test and benchmark dependency of rb from Debian packages.
+# Idempotent: packages already present are left alone. Run as root or with sudo available.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config
+  libcli11-dev catch2 libeigen3-dev libpng-dev libncurses-dev
+  console-setup-linux   # PSF console fonts: the font compiled into the canvas
+  clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
+  tmux                  # end-to-end tests of the terminal view
+  python3               # golden-test helpers and PNG checks
+  lua5.4 yabasic brandy hyperfine   # benchmark peers
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,13 @@
+// Declaration errors of subs.
+call A(1, 2)
+end
+sub A(x, x) // expect-error: parameter 'x' appears twice
+return
+sub A(y) // expect-error: duplicate sub 'A'
+return
+sub abs(v) // expect-error: sub 'abs' has the name of a built-in
+return
+B: // expect-error: label 'B' has the name of a sub
+return
+sub B()
+return

@@ -1,0 +1,1 @@
+print 1.5 / 0.0 // expect-runtime-error: division by zero

@@ -1,0 +1,3 @@
+// stdin: only
+input a
+input b // expect-runtime-error: input: no more input to read (end of input)

@@ -1,0 +1,1 @@
+print (-8) ^ 0.5 // expect-runtime-error: the result is not a number

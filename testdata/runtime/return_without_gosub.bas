@@ -1,0 +1,2 @@
+print "a" // expect: a
+return // expect-runtime-error: return without gosub or call

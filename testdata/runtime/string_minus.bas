@@ -1,0 +1,1 @@
+print -"a" // expect-runtime-error: '-' needs a number, not a string
