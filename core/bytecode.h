@@ -17,56 +17,62 @@
 
 namespace rb {
 
+// Every instruction, in one list: the enum and the interpreter's dispatch table both come
+// from it. Operand use is given beside each.
+#define RB_OPCODES(X)                                                                        \
+  /* R[a] = R[b]; an unassigned R[b] is an error naming the variable unless flags has   */  \
+  /* kMoveMayBeUnassigned                                                                */  \
+  X(Move)                                                                                    \
+  /* R[a] = R[b] op R[c] */                                                                  \
+  X(Add) X(Sub) X(Mul) X(Div) X(Mod) X(Pow) X(BitAnd) X(BitOr) X(Shl) X(Shr)                 \
+  X(Eq) X(Ne) X(Lt) X(Le) X(Gt) X(Ge)                                                        \
+  /* R[a] = op R[b] */                                                                       \
+  X(Neg) X(Not) X(BitNot)                                                                    \
+  /* R[a] += 1 / -= 1 in place */                                                            \
+  X(Inc) X(Dec)                                                                              \
+  /* pc = a (n statements counted) */                                                        \
+  X(Jump)                                                                                    \
+  /* if (!R[b]) pc = a / if (R[b]) pc = a */                                                 \
+  X(JumpIfFalse) X(JumpIfTrue)                                                               \
+  /* if (!(R[b] op R[c])) pc = a */                                                          \
+  X(JumpIfNotLt) X(JumpIfNotLe) X(JumpIfNotGt) X(JumpIfNotGe) X(JumpIfNotEq) X(JumpIfNotNe)  \
+  /* if (R[b] op R[c]) pc = a */                                                             \
+  X(JumpIfLt) X(JumpIfLe) X(JumpIfGt) X(JumpIfGe) X(JumpIfEq) X(JumpIfNe)                    \
+  /* for: a = control variable, b = limit (step at b+1), c = exit / body target */           \
+  X(ForPrep) X(ForLoop)                                                                      \
+  /* push a return address, frame base += b; pc = a */                                      \
+  X(Gosub)                                                                                   \
+  /* pop the innermost gosub or sub call; b = result operand when c = 1 */                   \
+  X(Return)                                                                                  \
+  /* call sub a with arguments in frame slots b..; result to operand c (or kNoOperand) */     \
+  X(CallSub)                                                                                 \
+  /* call built-in a, arguments in R[b]..R[b+n-1], result to operand c (or kNoOperand) */     \
+  X(CallBuiltin)                                                                             \
+  /* R[a] = R[b][R[c]..R[c+n-1]] */                                                          \
+  X(IndexGet)                                                                                \
+  /* R[a][R[c]..R[c+n-1]] = R[b] */                                                          \
+  X(IndexSet)                                                                                \
+  /* R[a] = new array with the n extents R[c].. */                                           \
+  X(Dim)                                                                                     \
+  /* append R[b] to the 1-D array R[a] (creating it) */                                      \
+  X(DataAppend)                                                                              \
+  /* print R[b]..R[b+n-1] with separator list c */                                           \
+  X(Print)                                                                                   \
+  /* R[a] = the items R[b]..R[b+n-1] formatted with separator list c */                      \
+  X(Format)                                                                                  \
+  /* R[a] = a line typed by the user, prompt R[b] when c = 1 */                              \
+  X(Input)                                                                                   \
+  /* count n statements (where more than kMaxPending piled up) */                            \
+  X(Steps)                                                                                   \
+  /* statement boundary, emitted only in line-tracing mode */                                \
+  X(Line)                                                                                    \
+  /* stop the program (n statements counted) */                                              \
+  X(End)
+
 enum class Op : uint8_t {
-  // R[a] = R[b] (an unassigned R[b] is an error naming the variable, unless flags has
-  // kMoveMayBeUnassigned)
-  Move,
-  // R[a] = R[b] op R[c]
-  Add, Sub, Mul, Div, Mod, Pow, BitAnd, BitOr, Shl, Shr, Eq, Ne, Lt, Le, Gt, Ge,
-  // R[a] = op R[b]
-  Neg, Not, BitNot, Truth,
-  // R[a] += 1 / -= 1 in place
-  Inc, Dec,
-  // pc = a (n statements counted)
-  Jump,
-  // if (!R[b]) pc = a / if (R[b]) pc = a
-  JumpIfFalse, JumpIfTrue,
-  // if (!(R[b] op R[c])) pc = a
-  JumpIfNotLt, JumpIfNotLe, JumpIfNotGt, JumpIfNotGe, JumpIfNotEq, JumpIfNotNe,
-  // if (R[b] op R[c]) pc = a
-  JumpIfLt, JumpIfLe, JumpIfGt, JumpIfGe, JumpIfEq, JumpIfNe,
-  // for: a = control variable, b = limit (step at b+1), c = exit target / body target
-  ForPrep, ForLoop,
-  // push a return address, frame base += b; pc = a
-  Gosub,
-  // pop the innermost gosub or sub call; b = result operand when c = 1
-  Return,
-  // call sub a with arguments in frame slots b..; result to operand c (kNoOperand: none)
-  CallSub,
-  // call built-in a, arguments in R[b]..R[b+n-1], result to operand c (kNoOperand: none)
-  CallBuiltin,
-  // R[a] = R[b][R[c]..R[c+n-1]]
-  IndexGet,
-  // R[a][R[c]..R[c+n-1]] = R[b]
-  IndexSet,
-  // R[a] = new array with the n extents R[c]..
-  Dim,
-  // append R[b] to the 1-D array R[a] (creating it)
-  DataAppend,
-  // print R[b]..R[b+n-1] with separator list c
-  Print,
-  // R[a] = the items R[b]..R[b+n-1] formatted with separator list c
-  Format,
-  // R[a] = a line typed by the user, prompt R[b] when c = 1
-  Input,
-  // count n statements (where code falls into a jump target)
-  Steps,
-  // statement boundary, emitted only in line-tracing mode
-  Line,
-  // stop the program (n statements counted)
-  End,
-  // the runtime error message constant R[b] (for statements that can only fail)
-  Fail,
+#define RB_OPCODE_ENUM(name) name,
+  RB_OPCODES(RB_OPCODE_ENUM)
+#undef RB_OPCODE_ENUM
 };
 
 constexpr uint8_t kMoveMayBeUnassigned = 1;

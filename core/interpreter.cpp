@@ -208,27 +208,73 @@ bool Interpreter::checkpoint(uint32_t /*pc*/) {
 }
 
 // The dispatch loop. Operands address one of three bases (globals, the current frame,
-// constants) through bases_; R(x) is the value an operand names.
-#define R(x) (bases_[(x) >> kBaseShift][(x) & kIndexMask])
+// constants); R(x) is the value an operand names. The program counter, the bases and the step
+// budget live in locals so that they stay in registers; they are written back to members
+// before anything that reads them (a checkpoint, a frame change, an exception).
+//
+// With GCC and Clang the loop is threaded (each handler jumps straight to the next through a
+// table of label addresses, a GNU extension); elsewhere it is a plain switch.
+#if defined(__GNUC__)
+#define RB_THREADED_DISPATCH 1
+#endif
+
+#define R(x) (B[(x) >> kBaseShift][(x) & kIndexMask])
 #define COUNT_STEPS(in)                                              \
   do {                                                               \
-    stepsLeft_ -= static_cast<int16_t>((in).n);                      \
-    if (stepsLeft_ <= 0 && !checkpoint(pc)) return;                  \
+    stepsLeft -= static_cast<int16_t>((in).n);                       \
+    if (stepsLeft <= 0) {                                            \
+      stepsLeft_ = stepsLeft;                                        \
+      if (!checkpoint(pc)) {                                         \
+        pcOut = pc;                                                  \
+        return;                                                      \
+      }                                                              \
+      stepsLeft = stepsLeft_;                                        \
+    }                                                                \
   } while (0)
+#define SYNC_FRAME() B[1] = bases_[1]
 
-void Interpreter::execute(uint32_t& pc) {
+#ifdef RB_THREADED_DISPATCH
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpedantic"
+#define CASE(name) op_##name:
+#define CASE2(a, b) op_##a: op_##b:
+#define NEXT goto *kDispatch[static_cast<uint8_t>(code[pc].op)]
+#else
+#define CASE(name) case Op::name:
+#define CASE2(a, b) case Op::a: case Op::b:
+#define NEXT continue
+#endif
+
+void Interpreter::execute(uint32_t& pcOut) {
   const Instr* code = prog_.code.data();
+  uint32_t pc = pcOut;
+  int64_t stepsLeft = stepsLeft_;
+  Value* B[3] = {bases_[0], bases_[1], bases_[2]};
+#ifdef RB_THREADED_DISPATCH
+  static const void* const kDispatch[] = {
+#define RB_OPCODE_LABEL(name) &&op_##name,
+      RB_OPCODES(RB_OPCODE_LABEL)
+#undef RB_OPCODE_LABEL
+  };
+#endif
+  try {
+#ifdef RB_THREADED_DISPATCH
+  NEXT;
+  {
+#else
   for (;;) {
-    const Instr& in = code[pc];
-    switch (in.op) {
-      case Op::Move: {
+    switch (code[pc].op) {
+#endif
+      CASE(Move) {
+        const Instr& in = code[pc];
         const Value& s = R(in.b);
         if (s.isUndef() && !in.flags) undefined(in.b);
         R(in.a) = s;
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Add: {
+      CASE(Add) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         const Value& b = R(in.c);
         Value& d = R(in.a);
@@ -246,10 +292,10 @@ void Interpreter::execute(uint32_t& pc) {
           throw RuntimeError("cannot add " + typeName(a) + " and " + typeName(b));
         }
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Sub:
-      case Op::Mul: {
+      CASE2(Sub, Mul) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         const Value& b = R(in.c);
         Value& d = R(in.a);
@@ -269,9 +315,10 @@ void Interpreter::execute(uint32_t& pc) {
                              typeName(a.isNumeric() ? b : a));
         }
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Div: {
+      CASE(Div) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         const Value& b = R(in.c);
         Value& d = R(in.a);
@@ -296,9 +343,10 @@ void Interpreter::execute(uint32_t& pc) {
           throw RuntimeError("'/' needs numbers, not " + typeName(a.isNumeric() ? b : a));
         }
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Mod: {
+      CASE(Mod) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         const Value& b = R(in.c);
         Value& d = R(in.a);
@@ -317,9 +365,10 @@ void Interpreter::execute(uint32_t& pc) {
           throw RuntimeError("'%' needs numbers, not " + typeName(a.isNumeric() ? b : a));
         }
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Pow: {
+      CASE(Pow) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         const Value& b = R(in.c);
         Value& d = R(in.a);
@@ -339,17 +388,17 @@ void Interpreter::execute(uint32_t& pc) {
           if (!overflow) {
             d.setInt(r);
             ++pc;
-            break;
+            NEXT;
           }
         }
         d.setNum(checked(std::pow(a.asDouble(), b.asDouble())));
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::BitAnd:
-      case Op::BitOr:
-      case Op::Shl:
-      case Op::Shr: {
+      CASE(BitAnd)
+      CASE(BitOr)
+      CASE2(Shl, Shr) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         const Value& b = R(in.c);
         if (!a.isNumeric() || !b.isNumeric()) {
@@ -367,14 +416,14 @@ void Interpreter::execute(uint32_t& pc) {
         }
         R(in.a).setInt(r);
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Eq:
-      case Op::Ne:
-      case Op::Lt:
-      case Op::Le:
-      case Op::Gt:
-      case Op::Ge: {
+      CASE(Eq)
+      CASE(Ne)
+      CASE(Lt)
+      CASE(Le)
+      CASE2(Gt, Ge) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         const Value& b = R(in.c);
         int cmp;
@@ -394,7 +443,7 @@ void Interpreter::execute(uint32_t& pc) {
           if (in.op == Op::Eq || in.op == Op::Ne) {
             R(in.a).setInt(in.op == Op::Ne);
             ++pc;
-            break;
+            NEXT;
           }
           throw RuntimeError("cannot compare " + typeName(a) + " with " + typeName(b));
         }
@@ -409,9 +458,10 @@ void Interpreter::execute(uint32_t& pc) {
         }
         R(in.a).setInt(r);
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Neg: {
+      CASE(Neg) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         if (a.isInt() && a.i() != INT64_MIN) R(in.a).setInt(-a.i());
         else if (a.isNumeric()) R(in.a).setNum(-a.asDouble());
@@ -420,10 +470,10 @@ void Interpreter::execute(uint32_t& pc) {
           throw RuntimeError("'-' needs a number, not " + typeName(a));
         }
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Not:
-      case Op::Truth: {
+      CASE(Not) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         bool t;
         if (a.isInt()) t = a.i() != 0;
@@ -432,11 +482,12 @@ void Interpreter::execute(uint32_t& pc) {
           if (a.isUndef()) undefined(in.b);
           throw RuntimeError("'not' needs a number, not " + typeName(a));
         }
-        R(in.a).setInt(in.op == Op::Not ? !t : t);
+        R(in.a).setInt(!t);
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::BitNot: {
+      CASE(BitNot) {
+        const Instr& in = code[pc];
         const Value& a = R(in.b);
         if (!a.isNumeric()) {
           if (a.isUndef()) undefined(in.b);
@@ -444,10 +495,10 @@ void Interpreter::execute(uint32_t& pc) {
         }
         R(in.a).setInt(~toInteger(a));
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Inc:
-      case Op::Dec: {
+      CASE2(Inc, Dec) {
+        const Instr& in = code[pc];
         Value& a = R(in.a);
         int64_t delta = in.op == Op::Inc ? 1 : -1;
         int64_t r;
@@ -458,14 +509,16 @@ void Interpreter::execute(uint32_t& pc) {
           throw RuntimeError(std::string("'") + opSymbol(in.op) + "' needs a number, not " + typeName(a));
         }
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Jump:
+      CASE(Jump) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         pc = in.a;
-        break;
-      case Op::JumpIfFalse:
-      case Op::JumpIfTrue: {
+        NEXT;
+      }
+      CASE2(JumpIfFalse, JumpIfTrue) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         const Value& v = R(in.b);
         bool t;
@@ -476,11 +529,15 @@ void Interpreter::execute(uint32_t& pc) {
           throw RuntimeError("a condition must be a number, not " + typeName(v));
         }
         pc = (t == (in.op == Op::JumpIfTrue)) ? in.a : pc + 1;
-        break;
+        NEXT;
       }
-      case Op::JumpIfNotLt: case Op::JumpIfNotLe: case Op::JumpIfNotGt: case Op::JumpIfNotGe:
-      case Op::JumpIfNotEq: case Op::JumpIfNotNe: case Op::JumpIfLt: case Op::JumpIfLe:
-      case Op::JumpIfGt: case Op::JumpIfGe: case Op::JumpIfEq: case Op::JumpIfNe: {
+      CASE2(JumpIfNotLt, JumpIfNotLe)
+      CASE2(JumpIfNotGt, JumpIfNotGe)
+      CASE2(JumpIfNotEq, JumpIfNotNe)
+      CASE2(JumpIfLt, JumpIfLe)
+      CASE2(JumpIfGt, JumpIfGe)
+      CASE2(JumpIfEq, JumpIfNe) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         const Value& a = R(in.b);
         const Value& b = R(in.c);
@@ -516,9 +573,10 @@ void Interpreter::execute(uint32_t& pc) {
           throw RuntimeError("cannot compare " + typeName(a) + " with " + typeName(b));
         bool jumpWhenTrue = in.op >= Op::JumpIfLt;
         pc = (r == jumpWhenTrue) ? in.a : pc + 1;
-        break;
+        NEXT;
       }
-      case Op::ForPrep: {
+      CASE(ForPrep) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         Value& v = R(in.a);
         const Value& limit = R(in.b);
@@ -534,9 +592,10 @@ void Interpreter::execute(uint32_t& pc) {
         else
           run = step.asDouble() > 0 ? v.asDouble() <= limit.asDouble() : v.asDouble() >= limit.asDouble();
         pc = run ? pc + 1 : in.c;
-        break;
+        NEXT;
       }
-      case Op::ForLoop: {
+      CASE(ForLoop) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         Value& v = R(in.a);
         const Value& limit = R(in.b);
@@ -545,7 +604,7 @@ void Interpreter::execute(uint32_t& pc) {
         if (v.isInt() && limit.isInt() && step.isInt() && !__builtin_add_overflow(v.i(), step.i(), &r)) {
           v.setInt(r);
           pc = (step.i() > 0 ? r <= limit.i() : r >= limit.i()) ? in.c : pc + 1;
-          break;
+          NEXT;
         }
         if (!v.isNumeric()) {
           if (v.isUndef()) undefined(in.a);
@@ -554,9 +613,10 @@ void Interpreter::execute(uint32_t& pc) {
         double x = v.asDouble() + step.asDouble();
         v.setNum(x);
         pc = (step.asDouble() > 0 ? x <= limit.asDouble() : x >= limit.asDouble()) ? in.c : pc + 1;
-        break;
+        NEXT;
       }
-      case Op::Gosub: {
+      CASE(Gosub) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         if (frames_.size() >= limits_.maxCallDepth)
           throw RuntimeError("too many nested gosub/call (" + std::to_string(limits_.maxCallDepth) +
@@ -565,10 +625,12 @@ void Interpreter::execute(uint32_t& pc) {
         base_ += in.b;
         ensureStack(size_t(base_) + prog_.mainFrameSize + 64);
         bases_[1] = stack_.data() + base_;
+        SYNC_FRAME();
         pc = in.a;
-        break;
+        NEXT;
       }
-      case Op::Return: {
+      CASE(Return) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         if (frames_.empty()) throw RuntimeError("return without gosub or call");
         Frame f = frames_.back();
@@ -577,8 +639,9 @@ void Interpreter::execute(uint32_t& pc) {
           frames_.pop_back();
           base_ = f.base;
           bases_[1] = stack_.data() + base_;
+          SYNC_FRAME();
           pc = f.returnPc;
-          break;
+          NEXT;
         }
         Value result;
         if (in.c) result = R(in.b);
@@ -586,6 +649,7 @@ void Interpreter::execute(uint32_t& pc) {
         base_ = f.base;
         sub_ = f.callerSub;
         bases_[1] = stack_.data() + base_;
+        SYNC_FRAME();
         if (f.dest != kNoOperand) {
           if (!in.c) {
             pc = f.returnPc - 1;  // report at the call
@@ -595,9 +659,10 @@ void Interpreter::execute(uint32_t& pc) {
           R(f.dest) = std::move(result);
         }
         pc = f.returnPc;
-        break;
+        NEXT;
       }
-      case Op::CallSub: {
+      CASE(CallSub) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         if (frames_.size() >= limits_.maxCallDepth)
           throw RuntimeError("too many nested gosub/call (" + std::to_string(limits_.maxCallDepth) +
@@ -611,18 +676,21 @@ void Interpreter::execute(uint32_t& pc) {
         base_ = newBase;
         sub_ = static_cast<int32_t>(in.a);
         bases_[1] = frame;
+        SYNC_FRAME();
         pc = s.entry;
-        break;
+        NEXT;
       }
-      case Op::CallBuiltin: {
+      CASE(CallBuiltin) {
+        const Instr& in = code[pc];
         const Builtin& b = builtinTable()[in.a];
         Args args(b, &R(in.b), in.n);
         Value r = b.fn(m_, args);
         if (in.c != kNoOperand) R(in.c) = std::move(r);
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::IndexGet: {
+      CASE(IndexGet) {
+        const Instr& in = code[pc];
         Value& arr = arrayOperand(in.b);
         ArrObj& a = arr.arr();
         size_t off;
@@ -633,9 +701,10 @@ void Interpreter::execute(uint32_t& pc) {
           off = elementOffset(a, in.b, &i0, in.n);
         R(in.a) = a.items[off];
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::IndexSet: {
+      CASE(IndexSet) {
+        const Instr& in = code[pc];
         const Value& v = R(in.b);
         if (v.isUndef()) undefined(in.b);
         if (v.isArr()) throw RuntimeError("an array cannot be stored in an array element");
@@ -649,9 +718,10 @@ void Interpreter::execute(uint32_t& pc) {
           off = elementOffset(a, in.a, &i0, in.n);
         a.items[off] = v;
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Dim: {
+      CASE(Dim) {
+        const Instr& in = code[pc];
         std::vector<int64_t> dims;
         uint64_t total = 1;
         for (uint32_t k = 0; k < in.n; ++k) {
@@ -670,9 +740,10 @@ void Interpreter::execute(uint32_t& pc) {
         }
         R(in.a) = Value::array(std::move(dims));
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::DataAppend: {
+      CASE(DataAppend) {
+        const Instr& in = code[pc];
         const Value& v = R(in.b);
         if (v.isUndef()) undefined(in.b);
         if (v.isArr()) throw RuntimeError("an array cannot be stored in an array element");
@@ -685,23 +756,26 @@ void Interpreter::execute(uint32_t& pc) {
         a.items.push_back(v);
         a.dims[0] = static_cast<int64_t>(a.items.size());
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Print: {
+      CASE(Print) {
+        const Instr& in = code[pc];
         bool newline;
         std::string text = formatItems(&R(in.b), in.n, prog_.separatorLists[in.c], newline);
         m_.print(text, newline);
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Format: {
+      CASE(Format) {
+        const Instr& in = code[pc];
         bool newline;
         std::string text = formatItems(&R(in.b), in.n, prog_.separatorLists[in.c], newline);
         R(in.a) = Value::string(std::move(text));
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Input: {
+      CASE(Input) {
+        const Instr& in = code[pc];
         std::string prompt;
         if (in.c) prompt = formatValue(R(in.b));
         std::string line = m_.input(prompt);
@@ -709,26 +783,46 @@ void Interpreter::execute(uint32_t& pc) {
         if (!parseNumber(line, v)) v = Value::string(line);
         R(in.a) = std::move(v);
         ++pc;
-        break;
+        NEXT;
       }
-      case Op::Steps:
+      CASE(Steps) {
+        const Instr& in = code[pc];
         COUNT_STEPS(in);
         ++pc;
-        break;
-      case Op::Line:
+        NEXT;
+      }
+      CASE(Line) {
         m_.host().onLine(prog_.locs[pc]);
         ++pc;
-        break;
-      case Op::End:
-        stepsLeft_ -= static_cast<int16_t>(in.n);
+        NEXT;
+      }
+      CASE(End) {
+        stepsLeft_ = stepsLeft - static_cast<int16_t>(code[pc].n);
+        pcOut = pc;
         return;
-      case Op::Fail:
-        throw RuntimeError(formatValue(R(in.b)));
+      }
+#ifdef RB_THREADED_DISPATCH
+  }
+#else
     }
+  }
+#endif
+  } catch (...) {
+    pcOut = pc;
+    stepsLeft_ = stepsLeft;
+    throw;
   }
 }
 
+#ifdef RB_THREADED_DISPATCH
+#pragma GCC diagnostic pop
+#endif
+
 #undef R
 #undef COUNT_STEPS
+#undef SYNC_FRAME
+#undef CASE
+#undef CASE2
+#undef NEXT
 
 }  // namespace rb
