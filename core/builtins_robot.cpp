@@ -1,8 +1,161 @@
-// robot built-ins (filled in by the simulator and interaction work).
+// Robot built-ins: rLocate, rForward, rTurn, the sensors. They act on the simulated robot
+// (SimRobot) and report what they did to the Machine's observer for `rb trace`.
+#include <cmath>
+
 #include "builtins_impl.h"
+#include "runtime_error.h"
+#include "sim_constants.h"
 
 namespace rb::builtins {
 
-void appendRobotBuiltins(std::vector<Builtin>& /*table*/) {}
+namespace {
+
+using K = BuiltinKind;
+
+Colour colourArg(Args& a, int i) {
+  int64_t c = a.integer(i);
+  if (c < 0 || c > 0xFFFFFF)
+    throw RuntimeError(a.describe(i) + " must be a colour: 0..15 or an RGB() value");
+  return static_cast<Colour>(c);
+}
+
+std::string argText(Args& a) {
+  std::string s;
+  for (int i = 0; i < a.size(); ++i) {
+    if (i) s += ',';
+    s += formatValue(a[i]);
+  }
+  return s;
+}
+
+/// Every sensor reads a whole number.
+Value sensor(Machine& m, Args& a, double v) {
+  if (m.observed()) m.emit(RobotEvent::Sensor, a.builtin().name, argText(a), v);
+  return Value::integer(static_cast<int64_t>(v));
+}
+
+Value rLocate(Machine& m, Args& a) {
+  double heading = a.numOr(2, 0);
+  double radius = a.numOr(3, sim::kDefaultRadius);
+  Colour colour = a.has(4) ? colourArg(a, 4) : static_cast<Colour>(sim::kDefaultColour);
+  m.robot().locate(a.num(0), a.num(1), heading, radius, colour);
+  m.emit(RobotEvent::Locate, "rLocate", argText(a));
+  return {};
+}
+
+Value rForward(Machine& m, Args& a) {
+  try {
+    m.robot().forward(a.num(0), [&m] { m.robotStepped(); });
+  } catch (const RuntimeError&) {
+    m.emit(RobotEvent::Crash, "rForward", argText(a));
+    throw;
+  }
+  m.emit(RobotEvent::Move, "rForward", argText(a));
+  return {};
+}
+
+Value rTurn(Machine& m, Args& a) {
+  m.robot().turn(a.num(0), [&m] { m.robotStepped(); });
+  m.emit(RobotEvent::Turn, "rTurn", argText(a));
+  return {};
+}
+
+Value rSpeed(Machine& m, Args& a) {
+  double s = a.num(0);
+  if (s < 0) throw RuntimeError(a.describe(0) + " must not be negative");
+  m.robotSpeed = s;
+  m.emit(RobotEvent::Setting, "rSpeed", argText(a));
+  return {};
+}
+
+Value rPen(Machine& m, Args& a) {
+  m.robot().setPen(a.num(0) != 0);
+  m.emit(RobotEvent::Pen, "rPen", argText(a));
+  return {};
+}
+
+Value rInvisible(Machine& m, Args& a) {
+  std::vector<Colour> list;
+  for (int i = 0; i < a.size(); ++i) list.push_back(colourArg(a, i));
+  m.canvas().setInvisible(std::move(list));
+  m.emit(RobotEvent::Setting, "rInvisible", argText(a));
+  return {};
+}
+
+Value rSlip(Machine& m, Args& a) {
+  double p = a.num(0);
+  if (p < 0 || p > 100) throw RuntimeError(a.describe(0) + " must be a percentage from 0 to 100");
+  m.robot().setSlip(p);
+  m.emit(RobotEvent::Setting, "rSlip", argText(a));
+  return {};
+}
+
+Value rCommPort(Machine& m, Args& a) {
+  int64_t port = a.integer(0);
+  if (port != 0)
+    throw RuntimeError("rCommPort " + std::to_string(port) +
+                       ": this build of rb has no serial driver; use the simulator (rCommPort 0)");
+  m.emit(RobotEvent::Setting, "rCommPort", argText(a));
+  return {};
+}
+
+Value rCommand(Machine& m, Args& a) {
+  (void)a.integer(0);
+  (void)a.integer(1);
+  return sensor(m, a, 0);  // the simulator has no raw commands
+}
+
+Value rBumper(Machine& m, Args& a) { return sensor(m, a, m.robot().bumper()); }
+Value rFeel(Machine& m, Args& a) { return sensor(m, a, m.robot().feel()); }
+Value rSense(Machine& m, Args& a) { return sensor(m, a, m.robot().sense()); }
+Value rRange(Machine& m, Args& a) { return sensor(m, a, m.robot().range(a.numOr(0, 0))); }
+Value rLook(Machine& m, Args& a) { return sensor(m, a, m.robot().look(a.numOr(0, 0))); }
+Value rBeacon(Machine& m, Args& a) { return sensor(m, a, m.robot().beacon(colourArg(a, 0))); }
+Value rCompass(Machine& m, Args& a) { return sensor(m, a, m.robot().compass()); }
+Value rGPSX(Machine& m, Args& a) { return sensor(m, a, m.robot().gpsX()); }
+Value rGPSY(Machine& m, Args& a) { return sensor(m, a, m.robot().gpsY()); }
+Value rChargeLevel(Machine& m, Args& a) { return sensor(m, a, std::floor(m.robot().chargeLevel())); }
+
+}  // namespace
+
+void appendRobotBuiltins(std::vector<Builtin>& t) {
+  t.insert(t.end(), {
+      {"rLocate", K::Command, "robot", "x, y [, heading [, radius [, colour]]]", rLocate, 0,
+       "places the robot's centre at (x, y), heading 0 = up (radius 20, colour Blue by default)"},
+      {"rForward", K::Command, "robot", "distance", rForward, 0,
+       "moves the robot forward (negative: backward), pixel by pixel; a crash stops the program"},
+      {"rTurn", K::Command, "robot", "degrees", rTurn, 0, "turns the robot (positive: clockwise)"},
+      {"rSpeed", K::Command, "robot", "delay", rSpeed, 0,
+       "milliseconds per pixel or degree of motion (bigger is slower)"},
+      {"rPen", K::Command, "robot", "state", rPen, 0,
+       "Down (or non-zero) draws the robot's path, Up (0) stops"},
+      {"rInvisible", K::Command, "robot", "[colour...]", rInvisible, 0,
+       "colours the robot ignores (replaces the list); the pen draws in the first"},
+      {"rSlip", K::Command, "robot", "percent", rSlip, 0,
+       "random error of up to percent in every move and turn (seeded by --seed)"},
+      {"rCommPort", K::Command, "robot", "port", rCommPort, 0,
+       "0: use the simulator; n: drive a real robot on serial port n"},
+      {"rCommand", K::Function, "robot", "code, parameter", rCommand, 0,
+       "sends a raw command to a real robot and returns its 16-bit result (0 in the simulator)"},
+      {"rBumper", K::Function, "robot", "", rBumper, 0,
+       "bumpers touching something: 1 rear, 2 right, 4 front, 8 left"},
+      {"rFeel", K::Function, "robot", "", rFeel, 0,
+       "infrared sensors seeing something within 20 pixels: 1 right, 2 front-right, 4 front, "
+       "8 front-left, 16 left"},
+      {"rSense", K::Function, "robot", "", rSense, 0,
+       "floor line sensors over a drawn line: 4 left, 2 middle, 1 right"},
+      {"rRange", K::Function, "robot", "[angle]", rRange, 0,
+       "pixels from the robot's edge to the first obstacle in the direction heading + angle"},
+      {"rLook", K::Function, "robot", "[angle]", rLook, 0,
+       "colour of the first obstacle in the direction heading + angle (0 at the screen edge)"},
+      {"rBeacon", K::Function, "robot", "colour", rBeacon, 0,
+       "distance to a beacon of that colour straight ahead if nothing hides it, else 0"},
+      {"rCompass", K::Function, "robot", "", rCompass, 0, "the robot's heading, 0..359 degrees"},
+      {"rGPSX", K::Function, "robot", "", rGPSX, 0, "x of the robot's centre"},
+      {"rGPSY", K::Function, "robot", "", rGPSY, 0, "y of the robot's centre"},
+      {"rChargeLevel", K::Function, "robot", "", rChargeLevel, 0,
+       "battery charge in percent: 100 at the start, 1 less per 1000 pixels driven"},
+  });
+}
 
 }  // namespace rb::builtins

@@ -31,6 +31,8 @@ class Host {
   virtual bool poll() { return true; }
   /// Called before each statement when the program was compiled for line tracing.
   virtual void onLine(SourceLoc /*loc*/) {}
+  /// Called after each pixel or degree the robot moves, so a live view can animate it.
+  virtual void animate() {}
 };
 
 }  // namespace rb

@@ -683,6 +683,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       CASE(CallBuiltin) {
         const Instr& in = code[pc];
         const Builtin& b = builtinTable()[in.a];
+        m_.setLocation(prog_.locs[pc]);
         Args args(b, &R(in.b), in.n);
         Value r = b.fn(m_, args);
         if (in.c != kNoOperand) R(in.c) = std::move(r);

@@ -5,23 +5,34 @@
 namespace rb {
 
 void Machine::print(std::string_view text, bool newline) {
-  if (newline) {
-    std::string line(text);
-    line += '\n';
-    host_.output(line);
-  } else {
-    host_.output(text);
-  }
+  std::string line(text);
+  canvas_.print(line, newline);
+  if (newline) line += '\n';
+  host_.output(line);
 }
 
 std::string Machine::input(std::string_view prompt) {
+  if (!prompt.empty()) canvas_.print(std::string(prompt), false);
   std::optional<std::string> line = host_.inputLine(prompt);
   if (!line) throw RuntimeError("input: no more input to read (end of input)");
+  canvas_.print(*line, true);
   return *line;
 }
 
 void Machine::delay(double ms) {
   if (ms > 0) host_.wait(ms);
+}
+
+void Machine::robotStepped() {
+  if (robotSpeed > 0) host_.wait(robotSpeed);
+  host_.animate();
+}
+
+void Machine::emit(RobotEvent::Kind kind, std::string_view command, std::string args,
+                   std::optional<double> value) {
+  if (!observer_) return;
+  RobotEvent e{kind, command, location_, std::move(args), robot_.pose(), robot_.penDown(), value};
+  observer_->robotEvent(e);
 }
 
 }  // namespace rb

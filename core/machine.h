@@ -1,21 +1,41 @@
 #pragma once
 // The state a running program changes besides its variables: the host it talks to, the random
-// generator, and (as the simulator grows) the screen and the robot. Built-in handlers receive
-// the Machine; the interpreter owns none of this.
+// generator, the screen and the robot. Built-in handlers receive the Machine; the interpreter
+// owns none of this.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "canvas.h"
 #include "host.h"
 #include "rng.h"
+#include "robot_sim.h"
 
 namespace rb {
 
+/// Something the robot did, for `rb trace` and live views.
+struct RobotEvent {
+  enum Kind { Locate, Move, Turn, Pen, Crash, Sensor, Setting } kind;
+  std::string_view command;   ///< the built-in's name, e.g. "rForward"
+  SourceLoc loc;              ///< the statement that did it
+  std::string args;           ///< its arguments as text ("120", "GREEN" as a number)
+  Pose pose;                  ///< the robot's pose after the event
+  bool pen = false;
+  std::optional<double> value;  ///< a sensor's reading
+};
+
+class RobotObserver {
+ public:
+  virtual ~RobotObserver() = default;
+  virtual void robotEvent(const RobotEvent& e) = 0;
+};
+
 class Machine {
  public:
-  Machine(Host& host, uint64_t seed) : host_(host), rng_(seed), seed_(seed) {}
+  Machine(Host& host, uint64_t seed)
+      : host_(host), rng_(seed), seed_(seed), robot_(canvas_, rng_) {}
   Machine(const Machine&) = delete;
   Machine& operator=(const Machine&) = delete;
 
@@ -25,21 +45,48 @@ class Machine {
     rngUsed_ = true;
     return rng_;
   }
-  bool rngUsed() const { return rngUsed_; }
+  bool rngUsed() const { return rngUsed_ || robot_.slipPercent() > 0; }
   uint64_t seed() const { return seed_; }
+  Canvas& canvas() { return canvas_; }
+  const Canvas& canvas() const { return canvas_; }
+  SimRobot& robot() { return robot_; }
+  const SimRobot& robot() const { return robot_; }
 
-  /// `print`: writes the text, then a line end unless `newline` is false.
+  /// The statement running now (the interpreter sets it before calling a built-in).
+  SourceLoc location() const { return location_; }
+  void setLocation(SourceLoc loc) { location_ = loc; }
+
+  void setObserver(RobotObserver* o) { observer_ = o; }
+  bool observed() const { return observer_ != nullptr; }
+  /// Reports a robot event to the observer, if any, filling in pose, pen and location.
+  void emit(RobotEvent::Kind kind, std::string_view command, std::string args,
+            std::optional<double> value = std::nullopt);
+
+  /// `print`: writes the text to the host and onto the screen, then a line end unless
+  /// `newline` is false.
   void print(std::string_view text, bool newline);
   /// `input`: shows the prompt and reads a line; a RuntimeError when input is over.
   std::string input(std::string_view prompt);
   /// `delay`: lets time pass on the run's clock.
   void delay(double ms);
+  /// After each pixel or degree of robot motion: paces it at rSpeed and lets a live view draw.
+  void robotStepped();
+
+  double robotSpeed = 0;  ///< rSpeed: milliseconds per pixel or degree
+
+  // flip on/off: while on, a live view shows the screen as it was at the last flip.
+  bool flipMode = false;
+  std::vector<Colour> flipped;  ///< the screen at the last flip
 
  private:
   Host& host_;
   Rng rng_;
   uint64_t seed_;
   bool rngUsed_ = false;
+  Canvas canvas_;
+  SimRobot robot_;
+  SourceLoc location_;
+  RobotObserver* observer_ = nullptr;
 };
 
 }  // namespace rb

@@ -1,0 +1,244 @@
+#!/usr/bin/env bash
+# Benchmarks rb against Lua 5.4, yabasic and brandy (Matrix Brandy BBC BASIC).
+#
+#   bench/run.sh [-n N] [path/to/rb]
+#
+# Every program in bench/programs/ is first run once per implementation and its output checked
+# against the expected answer (the script fails loudly on a wrong answer or a crash); then each
+# program is run N times per implementation (default 7, in rounds that alternate between the
+# implementations so that background load hits them alike) and the median wall time is
+# reported with its ratio to Lua 5.4. A missing peer is shown as n/a. Results are also written
+# to bench/results/ (git-ignored) as text and JSON.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+runs=7
+
+usage() {
+  sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'
+}
+
+while getopts ":n:h" opt; do
+  case "$opt" in
+    n) runs="$OPTARG" ;;
+    h) usage; exit 0 ;;
+    :) echo "run.sh: -$OPTARG needs a value" >&2; exit 64 ;;
+    *) echo "run.sh: unknown option -$OPTARG (try -h)" >&2; exit 64 ;;
+  esac
+done
+shift $((OPTIND - 1))
+if [[ $# -gt 1 ]]; then
+  echo "run.sh: at most one argument, the path to rb (try -h)" >&2
+  exit 64
+fi
+if ! [[ "$runs" =~ ^[1-9][0-9]*$ ]]; then
+  echo "run.sh: -n wants a positive whole number, not '$runs'" >&2
+  exit 64
+fi
+
+rb="${1:-$here/../build/cmd/rb}"
+if [[ ! -x "$rb" ]]; then
+  echo "run.sh: rb not found or not executable at '$rb' (build it: ninja -C build)" >&2
+  exit 66
+fi
+rb="$(cd "$(dirname "$rb")" && pwd)/$(basename "$rb")"
+
+if ! command -v python3 >/dev/null; then
+  echo "run.sh: python3 is needed to time the runs" >&2
+  exit 69
+fi
+
+exec python3 - "$here" "$rb" "$runs" <<'PYTHON'
+import datetime
+import json
+import os
+import platform
+import resource
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+here, rb, runs = sys.argv[1], sys.argv[2], int(sys.argv[3])
+programs = os.path.join(here, "programs")
+
+# name -> expected output (the whole of stdout, without the final newline)
+BENCHMARKS = [
+    ("loop", "25000002500000"),
+    ("calls", "1000000"),
+    ("strings", "6377790"),
+    ("arrays", "148933"),
+]
+
+# Brandy on Debian is an SDL build: the dummy video driver keeps it off any display, and the
+# programs write their answer to /dev/stdout themselves (PRINT goes to the SDL window). Its
+# stdout must be a pipe, not a file: OPENOUT truncates a file.
+BRANDY_ENV = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+
+# (label, executable, extension, argv builder, environment)
+IMPLS = [
+    ("rb", rb, "bas", lambda exe, f: [exe, "run", f], None),
+    ("lua", shutil.which("lua5.4"), "lua", lambda exe, f: [exe, f], None),
+    ("yabasic", shutil.which("yabasic"), "yab", lambda exe, f: [exe, f], None),
+    ("brandy", shutil.which("brandy"), "bbc", lambda exe, f: [exe, "-quit", f], BRANDY_ENV),
+]
+
+
+def first_line(cmd, env=None):
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=30)
+    except (OSError, subprocess.TimeoutExpired):
+        return "?"
+    text = (p.stdout or p.stderr).strip()
+    return text.splitlines()[0] if text else "?"
+
+
+def machine():
+    model, cores = "unknown CPU", os.cpu_count()
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    mem = ""
+    try:
+        with open("/proc/meminfo") as f:
+            kb = int(f.readline().split()[1])
+            mem = f", {kb / 1024 / 1024:.0f} GiB RAM"
+    except (OSError, ValueError, IndexError):
+        pass
+    return f"{model}, {cores} cores{mem}, {platform.system()} {platform.release()}"
+
+
+def version(label, exe):
+    if exe is None:
+        return "not installed"
+    if label == "rb":
+        v = first_line([exe, "--version"])
+        try:
+            rev = subprocess.run(["git", "-C", here, "rev-parse", "--short", "HEAD"],
+                                 capture_output=True, text=True, timeout=10).stdout.strip()
+            if rev:
+                v += f", repository at {rev}"
+        except OSError:
+            pass
+        built = datetime.datetime.fromtimestamp(os.path.getmtime(exe)).astimezone()
+        return f"{v}, binary {exe} built {built:%Y-%m-%d %H:%M}"
+    if label == "lua":
+        return first_line([exe, "-v"])
+    if label == "yabasic":
+        return first_line([exe, "--version"])
+    return first_line([exe, "-version"], BRANDY_ENV)
+
+
+def run_once(argv, env):
+    """Runs argv; returns (wall seconds, CPU seconds user+system, completed process)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    p = subprocess.run(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, env=env)
+    elapsed = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return elapsed, cpu, p
+
+
+stamp = datetime.datetime.now().astimezone()
+header = [
+    f"date:     {stamp:%Y-%m-%d %H:%M %Z}",
+    f"machine:  {machine()}",
+]
+for label, exe, *_ in IMPLS:
+    header.append(f"{label + ':':9} {version(label, exe)}")
+header.append(f"runs:     {runs} per program and implementation; median wall time, "
+              f"ratio to Lua 5.4 in parentheses")
+for line in header:
+    print(line)
+print(flush=True)
+
+# 1. Check every answer (this is also the warm-up run).
+failures = []
+for name, expected in BENCHMARKS:
+    for label, exe, ext, argv_of, env in IMPLS:
+        if exe is None:
+            continue
+        path = os.path.join(programs, f"{name}.{ext}")
+        _, _, p = run_once(argv_of(exe, path), env)
+        got = p.stdout.decode(errors="replace").rstrip("\n")
+        if p.returncode != 0 or got != expected:
+            err = p.stderr.decode(errors="replace").strip()
+            failures.append(f"{name}.{ext} ({label}): exit {p.returncode}, printed {got!r}, "
+                            f"expected {expected!r}" + (f"\n    stderr: {err[-500:]}" if err else ""))
+if failures:
+    print("FAILED: wrong answers, nothing was timed:", file=sys.stderr)
+    for f in failures:
+        print("  " + f, file=sys.stderr)
+    sys.exit(1)
+print("answers: all implementations print the expected results\n", flush=True)
+
+# 2. Time: N rounds, each round runs every implementation once, per benchmark.
+results = {}
+for name, expected in BENCHMARKS:
+    times = {label: [] for label, *_ in IMPLS}
+    cpus = {label: [] for label, *_ in IMPLS}
+    for _ in range(runs):
+        for label, exe, ext, argv_of, env in IMPLS:
+            if exe is None:
+                continue
+            elapsed, cpu, p = run_once(argv_of(exe, os.path.join(programs, f"{name}.{ext}")), env)
+            got = p.stdout.decode(errors="replace").rstrip("\n")
+            if p.returncode != 0 or got != expected:
+                print(f"FAILED: {name}.{ext} ({label}) printed {got!r} (exit {p.returncode}) "
+                      f"while timing, expected {expected!r}", file=sys.stderr)
+                sys.exit(1)
+            times[label].append(elapsed * 1000.0)
+            cpus[label].append(cpu * 1000.0)
+    results[name] = {label: (statistics.median(t) if t else None) for label, t in times.items()}
+    results[name + ":all"] = times
+    results[name + ":cpu"] = cpus
+
+# 3. Table.
+labels = [label for label, *_ in IMPLS]
+
+
+def cell(name, label):
+    ms = results[name][label]
+    if ms is None:
+        return "n/a"
+    lua = results[name]["lua"]
+    if label == "lua" or lua is None:
+        return f"{ms:.0f} ms"
+    return f"{ms:.0f} ms ({ms / lua:.2f}x)"
+
+
+rows = [["benchmark"] + labels]
+for name, _ in BENCHMARKS:
+    rows.append([name] + [cell(name, label) for label in labels])
+widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+table = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
+for line in table:
+    print(line)
+
+# 4. Save.
+outdir = os.path.join(here, "results")
+os.makedirs(outdir, exist_ok=True)
+base = os.path.join(outdir, f"{stamp:%Y%m%d-%H%M%S}")
+with open(base + ".txt", "w") as f:
+    f.write("\n".join(header) + "\n\n" + "\n".join(table) + "\n")
+with open(base + ".json", "w") as f:
+    json.dump({
+        "date": stamp.isoformat(timespec="seconds"),
+        "machine": machine(),
+        "versions": {label: version(label, exe) for label, exe, *_ in IMPLS},
+        "runs": runs,
+        "median_ms": {name: results[name] for name, _ in BENCHMARKS},
+        "all_ms": {name: results[name + ":all"] for name, _ in BENCHMARKS},
+        "all_cpu_ms": {name: results[name + ":cpu"] for name, _ in BENCHMARKS},
+    }, f, indent=2)
+shown = os.path.relpath(base)
+print(f"\nsaved {shown if not shown.startswith('..') else base}.txt and .json")
+PYTHON

@@ -1,0 +1,96 @@
+// libFuzzer target: the input bytes are a RobotBASIC program "fuzz.bas". It is loaded (lexer,
+// parser, #include splicing), compiled twice (without and with line tracing), linted, and every
+// diagnostic is formatted as text and as JSON. The program is never run: the interpreter may
+// legitimately loop forever. Any crash, sanitizer report or hang is a bug in rb_core.
+
+#include <algorithm>
+#include <cctype>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "checker.h"
+#include "compiler.h"
+#include "diagnostic.h"
+#include "loader.h"
+
+namespace {
+
+// A small fixed library, so that seeds including "lib/helpers.bas" (testdata/lang/include)
+// resolve to something with subs and labels in it.
+constexpr const char* kHelpers =
+    "// fixed library served to the fuzzer\n"
+    "Greet:\n"
+    "  print \"hello from the library\"\n"
+    "return\n"
+    "sub Twice(x)\n"
+    "  return x * 2\n"
+    "endsub\n"
+    "dim table[3]\n"
+    "data table; 1, 2, 3\n";
+
+/// Files in memory. Like the real file reader on a case-insensitive file system, a name is
+/// found whatever its case and its canonical form is lower case.
+class FuzzReader : public rb::SourceReader {
+ public:
+  std::map<std::string, std::string> files;  // keyed by lower-case name
+
+  static std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+  }
+  std::optional<std::string> find(const std::string& path) override {
+    std::string key = lower(path);
+    if (files.count(key)) return key;
+    return std::nullopt;
+  }
+  std::optional<std::string> read(const std::string& canonical) override {
+    auto it = files.find(canonical);
+    if (it == files.end()) return std::nullopt;
+    return it->second;
+  }
+};
+
+size_t sink = 0;  // keeps the formatted text observable
+
+void formatAll(const rb::SourceSet& sources, rb::DiagnosticList& diags) {
+  for (const rb::Diagnostic& d : diags.all()) {
+    sink += rb::formatDiagnostic(sources, d).size();
+    sink += rb::formatDiagnosticJson(sources, d).size();
+  }
+  diags.sort();
+  for (const rb::Diagnostic& d : diags.all()) sink += rb::formatDiagnostic(sources, d).size();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  std::string text(reinterpret_cast<const char*>(data), size);
+
+  FuzzReader reader;
+  reader.files["fuzz.bas"] = text;
+  reader.files["inc.bas"] = text;  // `#include "inc.bas"` splices the same bytes in once more
+  reader.files["lib/helpers.bas"] = kHelpers;
+
+  rb::DiagnosticList loadDiags;
+  rb::LoadOptions options;
+  options.libraryDirs.push_back("lib");  // so `#include "helpers.bas"` resolves through a lib dir
+  std::unique_ptr<rb::LoadedProgram> loaded =
+      rb::loadProgram("fuzz.bas", text, reader, options, loadDiags);
+  if (!loaded) __builtin_trap();  // loadProgram promises a usable result
+
+  for (bool lineTracing : {false, true}) {
+    rb::DiagnosticList diags = loadDiags;
+    rb::CompileOptions compileOptions;
+    compileOptions.lineTracing = lineTracing;
+    std::unique_ptr<rb::Program> program = rb::compileProgram(*loaded, compileOptions, diags);
+    // The contract of compileProgram: a program exactly when there are no errors.
+    if ((program != nullptr) == diags.hasErrors()) __builtin_trap();
+    if (!lineTracing) rb::lintProgram(*loaded, diags);
+    formatAll(loaded->sources, diags);
+  }
+  return 0;
+}
