@@ -22,6 +22,10 @@ void HeadlessHost::output(std::string_view text) {
 }
 
 void HeadlessHost::flush() {
+  if (!out_) {
+    buffer_.clear();
+    return;
+  }
   if (!buffer_.empty()) {
     std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
     buffer_.clear();

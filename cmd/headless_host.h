@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <istream>
 
 #include "host.h"
@@ -13,6 +14,7 @@ namespace rb::cli {
 
 class HeadlessHost : public Host {
  public:
+  /// Program output goes to `out` (nullptr: discarded), `input` reads lines from `in`.
   HeadlessHost(std::FILE* out, std::istream& in);
   ~HeadlessHost() override;
 
@@ -21,7 +23,20 @@ class HeadlessHost : public Host {
   double clockMs() override;
   void wait(double ms) override;
   double wallSeconds() override;
+  void onLine(SourceLoc loc) override {
+    if (lineHook) lineHook(loc);
+  }
   void flush();
+
+  std::unique_ptr<RobotLink> openRobot(int64_t port) override {
+    if (robotOpener) return robotOpener(port);
+    return Host::openRobot(port);
+  }
+
+  /// Called before each statement of a program compiled for line tracing.
+  std::function<void(SourceLoc)> lineHook;
+  /// Opens a real robot's port for rCommPort.
+  std::function<std::unique_ptr<RobotLink>(int64_t)> robotOpener;
 
  private:
   std::FILE* out_;

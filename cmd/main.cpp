@@ -5,7 +5,9 @@
 
 #include "check_command.h"
 #include "exit_codes.h"
+#include "render_command.h"
 #include "run_command.h"
+#include "trace_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"rb: run, check, trace and render RobotBASIC programs", "rb"};
@@ -14,6 +16,8 @@ int main(int argc, char** argv) {
   int exitCode = rb::exitcode::kOk;
   rb::cli::addRunCommand(app, exitCode);
   rb::cli::addCheckCommand(app, exitCode);
+  rb::cli::addTraceCommand(app, exitCode);
+  rb::cli::addRenderCommand(app, exitCode);
   app.footer("Run 'rb SUBCOMMAND --help' for the options of a subcommand. Manual: man rb.");
   try {
     app.parse(argc, argv);

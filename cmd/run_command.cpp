@@ -1,14 +1,8 @@
 #include "run_command.h"
 
-#include <cstdio>
-#include <iostream>
-#include <random>
-
 #include "exit_codes.h"
-#include "headless_host.h"
-#include "interpreter.h"
-#include "machine.h"
-#include "program_loader.h"
+#include "headless_run.h"
+#include "tui_run.h"
 
 namespace rb::cli {
 
@@ -22,37 +16,27 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
   app.add_option("--timeout", opts.timeoutSeconds,
                  "Stop the program after SECONDS of real time (0: no limit)")
       ->check(CLI::NonNegativeNumber);
+  app.add_flag("--real", opts.real,
+               "Drive a real robot on --port instead of the simulator (see man rb-run)");
+  app.add_option("--port", opts.port,
+                 "Serial port of the real robot: a number N (see man rb-run) or a device path; "
+                 "also used by the program's rCommPort");
+  app.add_option("--baud", opts.baud, "Serial speed for the real robot (default 9600)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--robot-timeout", opts.robotTimeoutSeconds,
+                 "Seconds to wait for each answer of the real robot (default 2)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--events", opts.eventsFile,
+                 "Feed keys, mouse and dialog answers from a script file (see man rb-run)");
+  app.add_option("--keys", opts.keys, "Feed these keys, one after another, as if typed");
 }
 
 namespace {
 
 int executeRun(const RunOptions& opts) {
-  LoadedFile loaded = loadFile(opts.file, CompileOptions{}, false);
-  if (loaded.exitCode == exitcode::kNoInput) {
-    std::fprintf(stderr, "rb run: cannot read '%s': no such file\n", opts.file.c_str());
-    return exitcode::kNoInput;
-  }
-  printDiagnostics(stderr, loaded.program->sources, loaded.diags, true);
-  if (!loaded.compiled) return exitcode::kRejected;
-
-  uint64_t seed = opts.seed ? *opts.seed : std::random_device{}();
-  HeadlessHost host(stdout, std::cin);
-  Machine machine(host, seed);
-  Interpreter interp(*loaded.compiled, machine);
-  RunLimits limits;
-  limits.maxSteps = opts.maxSteps;
-  limits.timeoutSeconds = opts.timeoutSeconds;
-  RunResult result = interp.run(limits);
-  host.flush();
-  if (!opts.seed && machine.rngUsed())
-    std::fprintf(stderr, "rb run: random seed %llu (repeat this run with --seed %llu)\n",
-                 static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed));
-  if (result.error) {
-    printDiagnostic(stderr, loaded.program->sources, *result.error);
-    return exitcode::kRuntime;
-  }
-  if (result.status == RunStatus::Stopped) return exitcode::kRuntime;
-  return exitcode::kOk;
+  if (opts.tui) return runTui(opts);
+  HeadlessRun run;
+  return runHeadless("rb run", opts, CompileOptions{}, stdout, nullptr, run);
 }
 
 }  // namespace
@@ -63,6 +47,7 @@ void addRunCommand(CLI::App& app, int& exitCode) {
   run->add_option("file", opts->file, "Program file (- reads the program from standard input)")
       ->required();
   addRunLimitOptions(*run, *opts);
+  run->add_flag("--tui", opts->tui, "Show the arena live in the terminal (ncurses)");
   run->footer(
       "Exit status: 0 finished, 64 bad usage, 65 the program has errors (nothing ran), "
       "66 file not found, 70 runtime error or limit reached, 74 I/O error.");

@@ -15,9 +15,20 @@ struct RunOptions {
   std::optional<uint64_t> seed;
   uint64_t maxSteps = 0;
   double timeoutSeconds = 0;
+  // A real robot (drivers/): --real connects before the program starts; --port also names the
+  // port a program's rCommPort opens.
+  bool real = false;
+  std::string port;
+  int baud = 9600;
+  double robotTimeoutSeconds = 2;
+  // Scripted input for headless runs (--events FILE, --keys TEXT).
+  std::string eventsFile;
+  std::string keys;
+  // rb run only: the live terminal view.
+  bool tui = false;
 };
 
-/// Adds --seed, --max-steps and --timeout to a subcommand.
+/// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.
 void addRunLimitOptions(CLI::App& app, RunOptions& opts);
 
 void addRunCommand(CLI::App& app, int& exitCode);

@@ -38,14 +38,16 @@ Value rLocate(Machine& m, Args& a) {
   double heading = a.numOr(2, 0);
   double radius = a.numOr(3, sim::kDefaultRadius);
   Colour colour = a.has(4) ? colourArg(a, 4) : static_cast<Colour>(sim::kDefaultColour);
-  m.robot().locate(a.num(0), a.num(1), heading, radius, colour);
+  if (RealRobot* r = m.realRobot()) r->locate(a.num(0), a.num(1), heading);
+  else m.robot().locate(a.num(0), a.num(1), heading, radius, colour);
   m.emit(RobotEvent::Locate, "rLocate", argText(a));
   return {};
 }
 
 Value rForward(Machine& m, Args& a) {
   try {
-    m.robot().forward(a.num(0), [&m] { m.robotStepped(); });
+    if (RealRobot* r = m.realRobot()) r->forward(a.num(0));
+    else m.robot().forward(a.num(0), [&m] { m.robotStepped(); });
   } catch (const RuntimeError&) {
     m.emit(RobotEvent::Crash, "rForward", argText(a));
     throw;
@@ -55,7 +57,8 @@ Value rForward(Machine& m, Args& a) {
 }
 
 Value rTurn(Machine& m, Args& a) {
-  m.robot().turn(a.num(0), [&m] { m.robotStepped(); });
+  if (RealRobot* r = m.realRobot()) r->turn(a.num(0));
+  else m.robot().turn(a.num(0), [&m] { m.robotStepped(); });
   m.emit(RobotEvent::Turn, "rTurn", argText(a));
   return {};
 }
@@ -64,12 +67,14 @@ Value rSpeed(Machine& m, Args& a) {
   double s = a.num(0);
   if (s < 0) throw RuntimeError(a.describe(0) + " must not be negative");
   m.robotSpeed = s;
+  if (RealRobot* r = m.realRobot()) r->speed(s);
   m.emit(RobotEvent::Setting, "rSpeed", argText(a));
   return {};
 }
 
 Value rPen(Machine& m, Args& a) {
-  m.robot().setPen(a.num(0) != 0);
+  if (RealRobot* r = m.realRobot()) r->pen(a.num(0) != 0);
+  else m.robot().setPen(a.num(0) != 0);
   m.emit(RobotEvent::Pen, "rPen", argText(a));
   return {};
 }
@@ -91,30 +96,39 @@ Value rSlip(Machine& m, Args& a) {
 }
 
 Value rCommPort(Machine& m, Args& a) {
-  int64_t port = a.integer(0);
-  if (port != 0)
-    throw RuntimeError("rCommPort " + std::to_string(port) +
-                       ": this build of rb has no serial driver; use the simulator (rCommPort 0)");
+  m.useCommPort(a.integer(0));
   m.emit(RobotEvent::Setting, "rCommPort", argText(a));
   return {};
 }
 
 Value rCommand(Machine& m, Args& a) {
-  (void)a.integer(0);
-  (void)a.integer(1);
-  return sensor(m, a, 0);  // the simulator has no raw commands
+  int64_t code = a.integer(0), param = a.integer(1);
+  RealRobot* r = m.realRobot();
+  return sensor(m, a, r ? static_cast<double>(r->command(code, param)) : 0);  // 0 in the simulator
 }
 
-Value rBumper(Machine& m, Args& a) { return sensor(m, a, m.robot().bumper()); }
-Value rFeel(Machine& m, Args& a) { return sensor(m, a, m.robot().feel()); }
-Value rSense(Machine& m, Args& a) { return sensor(m, a, m.robot().sense()); }
-Value rRange(Machine& m, Args& a) { return sensor(m, a, m.robot().range(a.numOr(0, 0))); }
-Value rLook(Machine& m, Args& a) { return sensor(m, a, m.robot().look(a.numOr(0, 0))); }
-Value rBeacon(Machine& m, Args& a) { return sensor(m, a, m.robot().beacon(colourArg(a, 0))); }
-Value rCompass(Machine& m, Args& a) { return sensor(m, a, m.robot().compass()); }
-Value rGPSX(Machine& m, Args& a) { return sensor(m, a, m.robot().gpsX()); }
-Value rGPSY(Machine& m, Args& a) { return sensor(m, a, m.robot().gpsY()); }
-Value rChargeLevel(Machine& m, Args& a) { return sensor(m, a, std::floor(m.robot().chargeLevel())); }
+// Each sensor reads the real robot when one is connected, else the simulator.
+#define RB_SENSOR(name, expr)                                      \
+  Value name(Machine& m, Args& a) {                                \
+    RealRobot* real = m.realRobot();                               \
+    auto& robot = m.robot();                                       \
+    return sensor(m, a, real ? (double)real->expr : (double)robot.expr); \
+  }
+RB_SENSOR(rBumper, bumper())
+RB_SENSOR(rFeel, feel())
+RB_SENSOR(rSense, sense())
+RB_SENSOR(rRange, range(a.numOr(0, 0)))
+RB_SENSOR(rLook, look(a.numOr(0, 0)))
+RB_SENSOR(rBeacon, beacon(colourArg(a, 0)))
+RB_SENSOR(rCompass, compass())
+RB_SENSOR(rGPSX, gpsX())
+RB_SENSOR(rGPSY, gpsY())
+#undef RB_SENSOR
+
+Value rChargeLevel(Machine& m, Args& a) {
+  RealRobot* r = m.realRobot();
+  return sensor(m, a, std::floor(r ? r->chargeLevel() : m.robot().chargeLevel()));
+}
 
 }  // namespace
 

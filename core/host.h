@@ -4,10 +4,13 @@
 // a Host for the terminal, for headless runs and for tests; core/ never touches stdin, stdout or
 // the system clock itself.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "robot_link.h"
+#include "runtime_error.h"
 #include "source.h"
 
 namespace rb {
@@ -33,6 +36,12 @@ class Host {
   virtual void onLine(SourceLoc /*loc*/) {}
   /// Called after each pixel or degree the robot moves, so a live view can animate it.
   virtual void animate() {}
+  /// `rCommPort port` with port != 0: opens the link to a real robot. Hosts without a serial
+  /// driver refuse.
+  virtual std::unique_ptr<RobotLink> openRobot(int64_t port) {
+    throw RuntimeError("rCommPort " + std::to_string(port) +
+                       ": no serial driver is available here; use the simulator (rCommPort 0)");
+  }
 };
 
 }  // namespace rb

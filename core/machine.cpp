@@ -28,10 +28,15 @@ void Machine::robotStepped() {
   host_.animate();
 }
 
+void Machine::useCommPort(int64_t port) {
+  real_.reset();  // closes the previous port, if any
+  if (port != 0) real_ = std::make_unique<RealRobot>(host_.openRobot(port));
+}
+
 void Machine::emit(RobotEvent::Kind kind, std::string_view command, std::string args,
                    std::optional<double> value) {
   if (!observer_) return;
-  RobotEvent e{kind, command, location_, std::move(args), robot_.pose(), robot_.penDown(), value};
+  RobotEvent e{kind, command, location_, std::move(args), robotPose(), robotPenDown(), value};
   observer_->robotEvent(e);
 }
 

@@ -10,6 +10,7 @@
 
 #include "canvas.h"
 #include "host.h"
+#include "real_robot.h"
 #include "rng.h"
 #include "robot_sim.h"
 
@@ -52,6 +53,17 @@ class Machine {
   SimRobot& robot() { return robot_; }
   const SimRobot& robot() const { return robot_; }
 
+  /// The real robot robot commands go to, or nullptr when they go to the simulator.
+  RealRobot* realRobot() { return real_.get(); }
+  /// rCommPort n: opens port n through the host (n = 0: back to the simulator, closing it).
+  void useCommPort(int64_t port);
+  /// Connects to a real robot over an already opened link (rb run --real).
+  void useRealRobot(std::unique_ptr<RobotLink> link) { real_ = std::make_unique<RealRobot>(std::move(link)); }
+  /// The pose and pen a trace or a live view should show: the real robot's dead-reckoned one
+  /// when connected, else the simulator's.
+  const Pose& robotPose() const { return real_ ? real_->pose() : robot_.pose(); }
+  bool robotPenDown() const { return real_ ? real_->penDown() : robot_.penDown(); }
+
   /// The statement running now (the interpreter sets it before calling a built-in).
   SourceLoc location() const { return location_; }
   void setLocation(SourceLoc loc) { location_ = loc; }
@@ -85,6 +97,7 @@ class Machine {
   bool rngUsed_ = false;
   Canvas canvas_;
   SimRobot robot_;
+  std::unique_ptr<RealRobot> real_;
   SourceLoc location_;
   RobotObserver* observer_ = nullptr;
 };

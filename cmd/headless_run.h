@@ -1,0 +1,34 @@
+#pragma once
+// Loading, compiling and running a program headless, shared by `rb run`, `rb trace` and
+// `rb render`: they differ only in where program output goes and what they observe.
+
+#include <cstdio>
+#include <functional>
+#include <memory>
+
+#include "headless_host.h"
+#include "interpreter.h"
+#include "machine.h"
+#include "program_loader.h"
+#include "run_command.h"
+
+namespace rb::cli {
+
+struct HeadlessRun {
+  LoadedFile loaded;
+  std::unique_ptr<HeadlessHost> host;
+  std::unique_ptr<Machine> machine;
+  RunResult result;
+  uint64_t seed = 0;
+  bool ran = false;  ///< false when the program could not be loaded
+};
+
+/// Runs FILE headless. Program output goes to `programOutput` (nullptr: discarded). Load
+/// errors and the runtime error are printed on stderr prefixed by `command` ("rb render").
+/// Returns the exit code rb should end with.
+/// `onLine`, when set, is called before each statement (compile with lineTracing for it).
+int runHeadless(const char* command, const RunOptions& opts, const CompileOptions& compile,
+                std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
+                std::function<void(SourceLoc)> onLine = nullptr);
+
+}  // namespace rb::cli

@@ -1,0 +1,11 @@
+#pragma once
+// `rb run --tui`: the program runs live in an ncurses view of the arena.
+
+#include "run_command.h"
+
+namespace rb::cli {
+
+/// Runs opts.file in the terminal view; returns rb's exit code.
+int runTui(const RunOptions& opts);
+
+}  // namespace rb::cli
