@@ -1,0 +1,53 @@
+#pragma once
+// The arena as a grid of terminal characters: a pure function from the screen's pixels and the
+// robot to cells, used by `rb render --ascii` and by the live terminal view (rb run --tui), and
+// golden-tested without a terminal.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "canvas.h"
+
+namespace rb::render {
+
+enum class CellMode {
+  Ascii,      ///< one character per cell, chosen by how much of the cell is drawn on
+  HalfBlock,  ///< two pixels-rows per cell with the half-block characters (UTF-8)
+  Braille,    ///< 2 x 4 dots per cell with the braille characters (UTF-8)
+};
+
+struct Cell {
+  std::string glyph = " ";   ///< one character, UTF-8
+  uint32_t fg = 0x000000;    ///< 0xRRGGBB
+  uint32_t bg = 0xFFFFFF;    ///< 0xRRGGBB
+};
+
+struct ArenaFrame {
+  int cols = 0, rows = 0;
+  std::vector<Cell> cells;   ///< row-major, rows * cols
+  Cell& at(int col, int row) { return cells[static_cast<size_t>(row) * cols + col]; }
+  const Cell& at(int col, int row) const { return cells[static_cast<size_t>(row) * cols + col]; }
+};
+
+/// The robot as the view draws it (never part of the screen's pixels).
+struct RobotView {
+  bool visible = false;
+  double x = 0, y = 0, heading = 0, radius = 20;
+  Colour colour = 1;
+};
+
+struct ArenaOptions {
+  int cols = 100, rows = 37;
+  CellMode mode = CellMode::Ascii;
+};
+
+/// Scales the 800 x 600 screen (`pixels`, row-major colour numbers) into cols x rows cells and
+/// draws the robot on top as a glyph showing its heading.
+ArenaFrame renderArena(const std::vector<Colour>& pixels, Colour background, const RobotView& robot,
+                       const ArenaOptions& options);
+
+/// The frame's characters as text: one line per row, each ending in "\n".
+std::string frameText(const ArenaFrame& frame);
+
+}  // namespace rb::render
