@@ -1,6 +1,7 @@
 // Robot built-ins: rLocate, rForward, rTurn, the sensors. They act on the simulated robot
 // (SimRobot) and report what they did to the Machine's observer for `rb trace`.
 #include <cmath>
+#include <functional>
 
 #include "builtins_impl.h"
 #include "runtime_error.h"
@@ -44,10 +45,17 @@ Value rLocate(Machine& m, Args& a) {
   return {};
 }
 
+/// The per-step callback of a move: only when rSpeed paces it (a live view then animates each
+/// step); at rSpeed 0 a move is instantaneous.
+std::function<void()> stepper(Machine& m) {
+  if (m.robotSpeed <= 0) return nullptr;
+  return [&m] { m.robotStepped(); };
+}
+
 Value rForward(Machine& m, Args& a) {
   try {
     if (RealRobot* r = m.realRobot()) r->forward(a.num(0));
-    else m.robot().forward(a.num(0), [&m] { m.robotStepped(); });
+    else m.robot().forward(a.num(0), stepper(m));
   } catch (const RuntimeError&) {
     m.emit(RobotEvent::Crash, "rForward", argText(a));
     throw;
@@ -58,7 +66,7 @@ Value rForward(Machine& m, Args& a) {
 
 Value rTurn(Machine& m, Args& a) {
   if (RealRobot* r = m.realRobot()) r->turn(a.num(0));
-  else m.robot().turn(a.num(0), [&m] { m.robotStepped(); });
+  else m.robot().turn(a.num(0), stepper(m));
   m.emit(RobotEvent::Turn, "rTurn", argText(a));
   return {};
 }

@@ -207,6 +207,89 @@ bool Interpreter::checkpoint(uint32_t /*pc*/) {
   return true;
 }
 
+// Handlers that need locals with destructors live outside the dispatch loop: the threaded
+// loop jumps from handler to handler with computed gotos, which skip destructors (GCC) or are
+// refused (Clang) when such a local is alive. The loop itself keeps only trivial locals.
+#define RM(x) (bases_[(x) >> kBaseShift][(x) & kIndexMask])
+
+uint32_t Interpreter::doReturn(const Instr& in, uint32_t pc) {
+  if (frames_.empty()) throw RuntimeError("return without gosub or call");
+  Frame f = frames_.back();
+  if (f.sub < 0) {
+    if (in.c) throw RuntimeError("return with a value from a gosub (only subs return values)");
+    frames_.pop_back();
+    base_ = f.base;
+    bases_[1] = stack_.data() + base_;
+    return f.returnPc;
+  }
+  Value result;
+  if (in.c) result = RM(in.b);
+  frames_.pop_back();
+  base_ = f.base;
+  sub_ = f.callerSub;
+  bases_[1] = stack_.data() + base_;
+  if (f.dest != kNoOperand) {
+    if (!in.c) {
+      (void)pc;
+      throw ReturnAtCall{f.returnPc - 1, "sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
+                                             "' returned no value (use return with a value)"};
+    }
+    RM(f.dest) = std::move(result);
+  }
+  return f.returnPc;
+}
+
+void Interpreter::doCallBuiltin(const Instr& in, uint32_t pc) {
+  const Builtin& b = builtinTable()[in.a];
+  m_.setLocation(prog_.locs[pc]);
+  Args args(b, &RM(in.b), in.n);
+  Value r = b.fn(m_, args);
+  if (in.c != kNoOperand) RM(in.c) = std::move(r);
+}
+
+void Interpreter::doDim(const Instr& in) {
+  std::vector<int64_t> dims;
+  uint64_t total = 1;
+  for (uint32_t k = 0; k < in.n; ++k) {
+    const Value& e = RM(in.c + k);
+    if (!e.isNumeric()) {
+      if (e.isUndef()) undefined(in.c + k);
+      throw RuntimeError("array size must be a number, not " + typeName(e));
+    }
+    int64_t n = toInteger(e);
+    if (n < 1) throw RuntimeError("array size must be at least 1, not " + std::to_string(n));
+    total *= static_cast<uint64_t>(n);
+    if (total > kMaxArrayElements)
+      throw RuntimeError("array '" + slotName(in.a) + "' is too large (more than " +
+                         std::to_string(kMaxArrayElements) + " elements)");
+    dims.push_back(n);
+  }
+  RM(in.a) = Value::array(std::move(dims));
+}
+
+void Interpreter::doPrint(const Instr& in) {
+  bool newline;
+  std::string text = formatItems(&RM(in.b), in.n, prog_.separatorLists[in.c], newline);
+  m_.print(text, newline);
+}
+
+void Interpreter::doFormat(const Instr& in) {
+  bool newline;
+  std::string text = formatItems(&RM(in.b), in.n, prog_.separatorLists[in.c], newline);
+  RM(in.a) = Value::string(std::move(text));
+}
+
+void Interpreter::doInput(const Instr& in) {
+  std::string prompt;
+  if (in.c) prompt = formatValue(RM(in.b));
+  std::string line = m_.input(prompt);
+  Value v;
+  if (!parseNumber(line, v)) v = Value::string(line);
+  RM(in.a) = std::move(v);
+}
+
+#undef RM
+
 // The dispatch loop. Operands address one of three bases (globals, the current frame,
 // constants); R(x) is the value an operand names. The program counter, the bases and the step
 // budget live in locals so that they stay in registers; they are written back to members
@@ -632,33 +715,8 @@ void Interpreter::execute(uint32_t& pcOut) {
       CASE(Return) {
         const Instr& in = code[pc];
         COUNT_STEPS(in);
-        if (frames_.empty()) throw RuntimeError("return without gosub or call");
-        Frame f = frames_.back();
-        if (f.sub < 0) {
-          if (in.c) throw RuntimeError("return with a value from a gosub (only subs return values)");
-          frames_.pop_back();
-          base_ = f.base;
-          bases_[1] = stack_.data() + base_;
-          SYNC_FRAME();
-          pc = f.returnPc;
-          NEXT;
-        }
-        Value result;
-        if (in.c) result = R(in.b);
-        frames_.pop_back();
-        base_ = f.base;
-        sub_ = f.callerSub;
-        bases_[1] = stack_.data() + base_;
+        pc = doReturn(in, pc);
         SYNC_FRAME();
-        if (f.dest != kNoOperand) {
-          if (!in.c) {
-            pc = f.returnPc - 1;  // report at the call
-            throw RuntimeError("sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
-                               "' returned no value (use return with a value)");
-          }
-          R(f.dest) = std::move(result);
-        }
-        pc = f.returnPc;
         NEXT;
       }
       CASE(CallSub) {
@@ -681,12 +739,7 @@ void Interpreter::execute(uint32_t& pcOut) {
         NEXT;
       }
       CASE(CallBuiltin) {
-        const Instr& in = code[pc];
-        const Builtin& b = builtinTable()[in.a];
-        m_.setLocation(prog_.locs[pc]);
-        Args args(b, &R(in.b), in.n);
-        Value r = b.fn(m_, args);
-        if (in.c != kNoOperand) R(in.c) = std::move(r);
+        doCallBuiltin(code[pc], pc);
         ++pc;
         NEXT;
       }
@@ -722,24 +775,7 @@ void Interpreter::execute(uint32_t& pcOut) {
         NEXT;
       }
       CASE(Dim) {
-        const Instr& in = code[pc];
-        std::vector<int64_t> dims;
-        uint64_t total = 1;
-        for (uint32_t k = 0; k < in.n; ++k) {
-          const Value& e = R(in.c + k);
-          if (!e.isNumeric()) {
-            if (e.isUndef()) undefined(in.c + k);
-            throw RuntimeError("array size must be a number, not " + typeName(e));
-          }
-          int64_t n = toInteger(e);
-          if (n < 1) throw RuntimeError("array size must be at least 1, not " + std::to_string(n));
-          total *= static_cast<uint64_t>(n);
-          if (total > kMaxArrayElements)
-            throw RuntimeError("array '" + slotName(in.a) + "' is too large (more than " +
-                               std::to_string(kMaxArrayElements) + " elements)");
-          dims.push_back(n);
-        }
-        R(in.a) = Value::array(std::move(dims));
+        doDim(code[pc]);
         ++pc;
         NEXT;
       }
@@ -760,29 +796,17 @@ void Interpreter::execute(uint32_t& pcOut) {
         NEXT;
       }
       CASE(Print) {
-        const Instr& in = code[pc];
-        bool newline;
-        std::string text = formatItems(&R(in.b), in.n, prog_.separatorLists[in.c], newline);
-        m_.print(text, newline);
+        doPrint(code[pc]);
         ++pc;
         NEXT;
       }
       CASE(Format) {
-        const Instr& in = code[pc];
-        bool newline;
-        std::string text = formatItems(&R(in.b), in.n, prog_.separatorLists[in.c], newline);
-        R(in.a) = Value::string(std::move(text));
+        doFormat(code[pc]);
         ++pc;
         NEXT;
       }
       CASE(Input) {
-        const Instr& in = code[pc];
-        std::string prompt;
-        if (in.c) prompt = formatValue(R(in.b));
-        std::string line = m_.input(prompt);
-        Value v;
-        if (!parseNumber(line, v)) v = Value::string(line);
-        R(in.a) = std::move(v);
+        doInput(code[pc]);
         ++pc;
         NEXT;
       }
@@ -808,6 +832,11 @@ void Interpreter::execute(uint32_t& pcOut) {
     }
   }
 #endif
+  } catch (const ReturnAtCall& r) {
+    // A sub used as a function returned no value: the error belongs to the call.
+    pcOut = r.pc;
+    stepsLeft_ = stepsLeft;
+    throw RuntimeError(r.message);
   } catch (...) {
     pcOut = pc;
     stepsLeft_ = stepsLeft;

@@ -51,7 +51,19 @@ class Interpreter {
     int32_t callerSub;   ///< the sub the caller ran (-1: main code)
   };
 
+  /// A runtime error to report at another instruction than the current one.
+  struct ReturnAtCall {
+    uint32_t pc;
+    std::string message;
+  };
+
   void execute(uint32_t& pc);
+  uint32_t doReturn(const Instr& in, uint32_t pc);
+  void doCallBuiltin(const Instr& in, uint32_t pc);
+  void doDim(const Instr& in);
+  void doPrint(const Instr& in);
+  void doFormat(const Instr& in);
+  void doInput(const Instr& in);
   bool checkpoint(uint32_t pc);
   void ensureStack(size_t size);
   [[noreturn]] void undefined(uint32_t op) const;

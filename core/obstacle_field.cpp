@@ -54,11 +54,14 @@ void transform1d(const float* f, int n, float* out, int* v, float* z) {
 void ObstacleField::rebuild() {
   const float inf = std::numeric_limits<float>::infinity();
   dist_.assign(static_cast<size_t>(kW) * kH, inf);
+  mask_.assign(static_cast<size_t>(kW) * kH, 0);
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
       bool wall = x == 0 || y == 0 || x == kW - 1 || y == kH - 1;
-      if (wall || canvas_.isObstacleColour(canvas_.at(x - 1, y - 1)))
+      if (wall || canvas_.isObstacleColour(canvas_.at(x - 1, y - 1))) {
         dist_[static_cast<size_t>(y) * kW + static_cast<size_t>(x)] = 0;
+        mask_[static_cast<size_t>(y) * kW + static_cast<size_t>(x)] = 1;
+      }
     }
   }
   int n = kW > kH ? kW : kH;

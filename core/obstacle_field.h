@@ -23,6 +23,14 @@ class ObstacleField {
     return dist_[static_cast<size_t>(y + 1) * kW + static_cast<size_t>(x + 1)];
   }
 
+  /// Whether pixel (x, y) is an obstacle (outside the screen: the wall). The same answer as
+  /// Canvas::isObstacle, from a mask built with the field.
+  bool obstacle(int x, int y) {
+    refresh();
+    if (x < -1 || y < -1 || x > Canvas::kWidth || y > Canvas::kHeight) return true;
+    return mask_[static_cast<size_t>(y + 1) * kW + static_cast<size_t>(x + 1)] != 0;
+  }
+
  private:
   static constexpr int kW = Canvas::kWidth + 2;   // with a one-pixel wall all around
   static constexpr int kH = Canvas::kHeight + 2;
@@ -34,6 +42,7 @@ class ObstacleField {
   const Canvas& canvas_;
   uint64_t builtFor_ = 0;
   std::vector<float> dist_;
+  std::vector<uint8_t> mask_;  ///< 1 where a pixel is an obstacle, with the wall around
 };
 
 }  // namespace rb

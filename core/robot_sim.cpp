@@ -14,6 +14,13 @@ namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// The largest distance between a point and the centre of the pixel it rounds to.
 constexpr double kRounding = 0.7072;
+/// Nearest pixel of a coordinate.
+int pixelOf(double v) { return static_cast<int>(std::floor(v + 0.5)); }
+/// First offset at least `d` from the centre in a distance-sorted list.
+template <typename It>
+It fromDistance(It begin, It end, double d) {
+  return std::lower_bound(begin, end, d - 1e-4, [](const auto& o, double v) { return o.dist < v; });
+}
 }  // namespace
 
 double normalizeDegrees(double d) {
@@ -35,21 +42,42 @@ void SimRobot::requireLocated() const {
 }
 
 Eigen::Vector2i SimRobot::centrePixel() const {
-  return {static_cast<int>(std::lround(pose_.pos.x())), static_cast<int>(std::lround(pose_.pos.y()))};
+  return {pixelOf(pose_.pos.x()), pixelOf(pose_.pos.y())};
+}
+
+void SimRobot::prepareOffsets() {
+  if (offsetsRadius_ == radius_) return;
+  offsetsRadius_ = radius_;
+  offsetsReach_ = radius_ + std::max({sim::kFeelReach, sim::kBumperReach, kRounding});
+  byDistance_.clear();
+  for (auto& b : byBearing_) b.clear();
+  int r = static_cast<int>(std::ceil(offsetsReach_)) + 1;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      double d = std::hypot(dx, dy);
+      if (d > offsetsReach_ || d == 0) continue;
+      double bearing = normalizeDegrees(std::atan2(dx, -dy) / kDegToRad);
+      byDistance_.push_back({dx, dy, static_cast<float>(d), static_cast<float>(bearing)});
+    }
+  auto nearer = [](const Offset& a, const Offset& b) { return a.dist < b.dist; };
+  std::stable_sort(byDistance_.begin(), byDistance_.end(), nearer);
+  for (const Offset& o : byDistance_) byBearing_[static_cast<int>(o.bearing) % 360].push_back(o);
 }
 
 bool SimRobot::collides(const Eigen::Vector2d& pos) {
-  int cx = static_cast<int>(std::lround(pos.x())), cy = static_cast<int>(std::lround(pos.y()));
-  // Far from everything: one lookup in the distance field decides.
-  if (Canvas::inside(cx, cy) && field_.distance(cx, cy) - kRounding > radius_) return false;
+  prepareOffsets();
+  int cx = pixelOf(pos.x()), cy = pixelOf(pos.y());
+  // Every obstacle pixel is at least `clear` from the centre pixel; far from everything, one
+  // lookup in the distance field decides.
+  double clear = Canvas::inside(cx, cy) ? field_.distance(cx, cy) : 0;
+  if (clear - kRounding > radius_) return false;
+  if (field_.obstacle(cx, cy)) return true;
   double r2 = radius_ * radius_;
-  int r = static_cast<int>(std::ceil(radius_)) + 1;
-  for (int y = cy - r; y <= cy + r; ++y) {
-    double dy = y - pos.y();
-    for (int x = cx - r; x <= cx + r; ++x) {
-      double dx = x - pos.x();
-      if (dx * dx + dy * dy <= r2 && canvas_.isObstacle(x, y)) return true;
-    }
+  for (auto it = fromDistance(byDistance_.begin(), byDistance_.end(), clear);
+       it != byDistance_.end() && it->dist <= radius_ + kRounding; ++it) {
+    int x = cx + it->dx, y = cy + it->dy;
+    double dx = x - pos.x(), dy = y - pos.y();
+    if (dx * dx + dy * dy <= r2 && field_.obstacle(x, y)) return true;
   }
   return false;
 }
@@ -83,8 +111,7 @@ double SimRobot::applySlip(double amount) {
 void SimRobot::extendTrail() {
   // The pen draws in the first invisible colour (so the robot does not see its own trail), or
   // in the current drawing colour when no colour is invisible.
-  const auto& inv = canvas_.invisible();
-  Colour c = inv.empty() ? canvas_.foreground : inv.front();
+  Colour c = trailColour();
   const auto& ops = canvas_.displayList();
   bool open = !ops.empty() && ops.back().kind == DrawOp::Trail && ops.back().colour == c &&
               ops.back().width == canvas_.lineWidth;
@@ -102,6 +129,11 @@ void SimRobot::setPen(bool down) {
   if (down && located_) extendTrail();
 }
 
+Colour SimRobot::trailColour() const {
+  const auto& inv = canvas_.invisible();
+  return inv.empty() ? canvas_.foreground : inv.front();
+}
+
 double SimRobot::forward(double distance, const std::function<void()>& onStep) {
   requireLocated();
   distance = applySlip(distance);
@@ -110,14 +142,27 @@ double SimRobot::forward(double distance, const std::function<void()>& onStep) {
   int steps = static_cast<int>(std::ceil(length / sim::kMaxStep));
   if (steps == 0) return distance;
   Eigen::Vector2d step = headingVector(pose_.heading) * (distance / steps);
+  // The pen draws as the robot goes when someone watches, or when its trail is an obstacle the
+  // robot itself must run into; otherwise the whole segment is drawn once at the end.
+  bool trailEachStep = penDown_ && (onStep || canvas_.isObstacleColour(trailColour()));
+  prepareOffsets();
+  int cx = pixelOf(pose_.pos.x()), cy = pixelOf(pose_.pos.y());
+  // When the nearest obstacle is farther than the whole move plus the radius, no step can
+  // touch it.
+  double clear = Canvas::inside(cx, cy) ? field_.distance(cx, cy) : 0;
+  bool freeRun = !trailEachStep && clear - 2 * kRounding - radius_ > length;
   for (int i = 0; i < steps; ++i) {
     Eigen::Vector2d next = pose_.pos + step;
-    if (collides(next)) throw RuntimeError("robot crashed into an obstacle");
+    if (!freeRun && collides(next)) {
+      if (penDown_ && !trailEachStep) extendTrail();
+      throw RuntimeError("robot crashed into an obstacle");
+    }
     pose_.pos = next;
-    travelled_ += step.norm();
-    if (penDown_) extendTrail();
+    if (trailEachStep) extendTrail();
     if (onStep) onStep();
   }
+  travelled_ += length;
+  if (penDown_ && !trailEachStep) extendTrail();
   return distance;
 }
 
@@ -125,43 +170,34 @@ double SimRobot::turn(double degrees, const std::function<void()>& onStep) {
   requireLocated();
   degrees = applySlip(degrees);
   if (!std::isfinite(degrees)) throw RuntimeError("rTurn: the angle is not a number");
+  turned_ += std::abs(degrees);
+  if (!onStep) {
+    pose_.heading = normalizeDegrees(pose_.heading + degrees);
+    return degrees;
+  }
   int steps = static_cast<int>(std::ceil(std::abs(degrees)));
   if (steps == 0) return degrees;
   double each = degrees / steps;
   double start = pose_.heading;
   for (int i = 1; i <= steps; ++i) {
     pose_.heading = normalizeDegrees(start + each * i);
-    if (onStep) onStep();
+    onStep();
   }
-  turned_ += std::abs(degrees);
   return degrees;
-}
-
-const std::vector<SimRobot::Offset>& SimRobot::offsetsWithin(double reach) {
-  if (reach == cachedReach_) return offsets_;
-  offsets_.clear();
-  int r = static_cast<int>(std::ceil(reach)) + 1;
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      double d = std::hypot(dx, dy);
-      if (d > reach || d == 0) continue;
-      double bearing = normalizeDegrees(std::atan2(dx, -dy) / kDegToRad);
-      offsets_.push_back({dx, dy, static_cast<float>(d), static_cast<float>(bearing)});
-    }
-  std::sort(offsets_.begin(), offsets_.end(), [](const Offset& a, const Offset& b) { return a.bearing < b.bearing; });
-  cachedReach_ = reach;
-  return offsets_;
 }
 
 int SimRobot::bumper() {
   requireLocated();
+  prepareOffsets();
   double reach = radius_ + sim::kBumperReach;
   Eigen::Vector2i c = centrePixel();
-  if (Canvas::inside(c.x(), c.y()) && field_.distance(c.x(), c.y()) - kRounding > reach) return 0;
+  double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
+  if (clear > reach) return 0;
   int bits = 0;
-  for (const Offset& o : offsetsWithin(reach)) {
-    if (!canvas_.isObstacle(c.x() + o.dx, c.y() + o.dy)) continue;
-    double rel = normalizeDegrees(o.bearing - pose_.heading);
+  for (auto it = fromDistance(byDistance_.begin(), byDistance_.end(), clear);
+       it != byDistance_.end() && it->dist <= reach; ++it) {
+    if (!field_.obstacle(c.x() + it->dx, c.y() + it->dy)) continue;
+    double rel = normalizeDegrees(it->bearing - pose_.heading);
     if (rel > 180) rel -= 360;  // (-180, 180]
     if (rel >= -45 && rel <= 45) bits |= sim::kBumperFront;
     else if (rel > 45 && rel < 135) bits |= sim::kBumperRight;
@@ -174,25 +210,31 @@ int SimRobot::bumper() {
 
 int SimRobot::feel() {
   requireLocated();
+  prepareOffsets();
   double reach = radius_ + sim::kFeelReach;
   Eigen::Vector2i c = centrePixel();
-  if (Canvas::inside(c.x(), c.y()) && field_.distance(c.x(), c.y()) - kRounding > reach) return 0;
-  const std::vector<Offset>& offs = offsetsWithin(reach);
+  double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
+  if (clear > reach) return 0;
   int bits = 0;
   for (int k = 0; k < 5; ++k) {
-    double centre = normalizeDegrees(pose_.heading + sim::kFeelAngles[k]);
-    double lo = centre - sim::kFeelHalfAngle, hi = centre + sim::kFeelHalfAngle;
-    // The cone may wrap past 0/360: scan it as one or two bearing ranges.
-    auto scan = [&](double from, double to) {
-      auto it = std::lower_bound(offs.begin(), offs.end(), from,
-                                 [](const Offset& o, double b) { return o.bearing < b; });
-      for (; it != offs.end() && it->bearing <= to; ++it)
-        if (canvas_.isObstacle(c.x() + it->dx, c.y() + it->dy)) return true;
-      return false;
-    };
-    bool hit = lo < 0 ? scan(lo + 360, 360) || scan(0, hi)
-               : hi >= 360 ? scan(lo, 360) || scan(0, hi - 360)
-                           : scan(lo, hi);
+    double lo = normalizeDegrees(pose_.heading + sim::kFeelAngles[k] - sim::kFeelHalfAngle);
+    double width = 2 * sim::kFeelHalfAngle;
+    // The cone covers whole-degree buckets from lo's to lo + width's; edge buckets hold pixels
+    // outside it, so each pixel's bearing is checked too.
+    int first = static_cast<int>(lo);
+    int count = static_cast<int>(std::floor(lo + width)) - first + 1;
+    bool hit = false;
+    for (int b = 0; b < count && !hit; ++b) {
+      const std::vector<Offset>& bucket = byBearing_[(first + b) % 360];
+      for (auto it = fromDistance(bucket.begin(), bucket.end(), clear);
+           it != bucket.end() && it->dist <= reach; ++it) {
+        if (normalizeDegrees(it->bearing - lo) > width) continue;
+        if (field_.obstacle(c.x() + it->dx, c.y() + it->dy)) {
+          hit = true;
+          break;
+        }
+      }
+    }
     if (hit) bits |= sim::kFeelBits[k];
   }
   return bits;

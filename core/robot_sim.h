@@ -32,11 +32,13 @@ class SimRobot {
 
   /// rLocate. Throws RuntimeError when the robot would overlap an obstacle.
   void locate(double x, double y, double heading, double radius, Colour colour);
-  /// rForward: moves in steps of at most one pixel, calling `onStep` after each. On a crash the
+  /// rForward: moves in steps of at most one pixel, checking for a crash at each. On a crash the
   /// robot stays where it last was free and RuntimeError("robot crashed into an obstacle") is
-  /// thrown. Returns the distance actually asked for after slip.
+  /// thrown. `onStep`, when given, is called after each step (a live view animates the move;
+  /// without it the pen draws the whole segment at once). Returns the distance after slip.
   double forward(double distance, const std::function<void()>& onStep);
-  /// rTurn: turns in steps of at most one degree (a disc cannot crash by turning).
+  /// rTurn: with `onStep` it turns in steps of one degree, calling it after each; a disc cannot
+  /// crash by turning.
   double turn(double degrees, const std::function<void()>& onStep);
   void setPen(bool down);
   void setSlip(double percent) { slip_ = percent; }
@@ -57,6 +59,7 @@ class SimRobot {
   bool collides(const Eigen::Vector2d& pos);
 
  private:
+  /// A pixel near the robot, relative to its centre pixel.
   struct Offset {
     int dx, dy;
     float dist;     ///< from the centre pixel
@@ -70,11 +73,12 @@ class SimRobot {
 
   void requireLocated() const;
   Eigen::Vector2i centrePixel() const;
-  /// Pixels around the centre out to `reach`, sorted by bearing (cached per reach).
-  const std::vector<Offset>& offsetsWithin(double reach);
+  /// Rebuilds the offset tables when the radius changed.
+  void prepareOffsets();
   RayHit castRay(double absoluteAngle);
   double applySlip(double amount);
   void extendTrail();
+  Colour trailColour() const;
 
   Canvas& canvas_;
   Rng& rng_;
@@ -87,8 +91,13 @@ class SimRobot {
   double slip_ = 0;
   double travelled_ = 0;
   double turned_ = 0;
-  double cachedReach_ = -1;
-  std::vector<Offset> offsets_;
+  // Every pixel within the farthest sensor's reach, sorted by distance, and the same pixels
+  // bucketed by whole degrees of bearing (each bucket sorted by distance). With the distance
+  // to the nearest obstacle known, a sensor visits only pixels at least that far away.
+  double offsetsRadius_ = -1;
+  double offsetsReach_ = 0;
+  std::vector<Offset> byDistance_;
+  std::vector<Offset> byBearing_[360];
 };
 
 /// Degrees normalised to [0, 360).

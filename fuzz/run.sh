@@ -15,8 +15,9 @@ fi
 
 "$root/scripts/build.sh" --fuzz
 
-# A fresh corpus from the test programs and examples (outside the source tree; the fuzzer adds
-# the inputs it finds interesting to it, so it is thrown away afterwards).
+# A fresh corpus from the test programs, the examples and the saved reproducers (outside the
+# source tree; the fuzzer adds the inputs it finds interesting to it, so it is thrown away
+# afterwards).
 corpus="$(mktemp -d "${TMPDIR:-/tmp}/rb-fuzz-corpus.XXXXXX")"
 trap 'rm -rf "$corpus"' EXIT
 n=0
@@ -25,7 +26,7 @@ while IFS= read -r -d '' f; do
   rel="${f#"$root"/}"
   cp "$f" "$corpus/${rel//\//_}"
   n=$((n + 1))
-done < <(find "$root/testdata" "$root/examples" -name '*.bas' -type f -print0)
+done < <(find "$root/testdata" "$root/examples" "$root/fuzz/repro" -name '*.bas' -type f -print0 2>/dev/null)
 echo "run.sh: $n seed programs in $corpus"
 
 artifacts="$root/build-fuzz/fuzz/artifacts"
