@@ -84,6 +84,8 @@ struct Stmt {
   std::vector<Param> params;
   std::vector<Stmt*> body;    ///< IfLine: then, else
   bool paren = false;         ///< Call/Command written with parentheses around the arguments
+  bool broken = false;        ///< a block opener whose line had a syntax error (already
+                              ///< reported): it only keeps its closer paired
 };
 
 /// Owns every node of a program; pointers stay valid for its lifetime.

@@ -118,7 +118,7 @@ class Compiler {
           diags_.error(s->loc, "duplicate label '" + std::string(s->name) + "'");
           diags_.note(it->second.loc, "'" + std::string(s->name) + "' was first defined here");
         }
-      } else if (s->kind == StmtKind::Sub) {
+      } else if (s->kind == StmtKind::Sub && !s->broken) {
         if (subIndex_.count(s->name)) {
           diags_.error(s->nameLoc, "duplicate sub '" + std::string(s->name) + "'");
           diags_.note(p_.subs[subIndex_[s->name]].loc,
@@ -348,6 +348,10 @@ class Compiler {
   }
 
   void statementBody(const Stmt& s) {
+    if (s.broken) {
+      brokenOpener(s);
+      return;
+    }
     switch (s.kind) {
       case StmtKind::Assign: assign(s); break;
       case StmtKind::Print: print(s); break;
@@ -408,6 +412,7 @@ class Compiler {
       }
       case StmtKind::Wend: {
         Block b = closeLoop(s, Block::While, "wend", "while");
+        if (b.stmt->broken) break;
         Target test = placeTarget();
         patch(b.entryJump, test);
         patchAll(b.continuePatches, test);
@@ -486,6 +491,23 @@ class Compiler {
     }
   }
 
+  /// A block statement with a syntax error: the program will not run, so only the pairing
+  /// matters (no second error for the same mistake).
+  void brokenOpener(const Stmt& s) {
+    switch (s.kind) {
+      case StmtKind::If: blocks_.emplace_back(Block::If, &s); break;
+      case StmtKind::For: {
+        Block b(Block::For, &s);
+        blocks_.push_back(std::move(b));
+        break;
+      }
+      case StmtKind::While: blocks_.emplace_back(Block::While, &s); break;
+      case StmtKind::Repeat: blocks_.emplace_back(Block::Repeat, &s); break;
+      case StmtKind::Until: closeLoop(s, Block::Repeat, "until", "repeat"); break;
+      default: break;
+    }
+  }
+
   Block& openIf(const Stmt& s, const char* word) {
     if (blocks_.empty() || blocks_.back().kind != Block::If) {
       if (!blocks_.empty())
@@ -537,6 +559,7 @@ class Compiler {
     Target end = placeTarget();
     for (auto it = blocks_.rbegin(); it != blocks_.rend(); ++it) {
       const Block& b = *it;
+      if (b.stmt->broken) continue;  // its line already has an error
       const char* place = where.valid() ? "before the next sub" : "before the end of the file";
       if (b.kind == Block::If) {
         diags_.warning(b.stmt->loc, std::string("if without endif ") + place +
@@ -577,6 +600,7 @@ class Compiler {
 
   void nextStmt(const Stmt& s) {
     Block b = closeLoop(s, Block::For, "next", "for");
+    if (b.stmt->broken) return;
     if (!s.name.empty() && s.name != b.stmt->target->text) {
       blocks_.push_back(std::move(b));  // keep the loop open so later statements make sense
       fail(s.nameLoc, "next " + std::string(s.name) + " does not match the for " +

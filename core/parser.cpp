@@ -58,9 +58,11 @@ class Parser {
         ++pos_;
         continue;
       }
+      size_t start = pos_;
       try {
         line(out);
       } catch (const SyntaxError&) {
+        keepBlockOpener(start, out);
         while (cur().kind != Tok::Newline && cur().kind != Tok::Eof) ++pos_;
       }
     }
@@ -68,6 +70,36 @@ class Parser {
   }
 
  private:
+  /// After a syntax error in a line that opens a block (for, while, repeat, a block if, sub) or
+  /// closes one with a condition (until), keeps a placeholder so that the blocks still pair
+  /// and no second, misleading error is reported.
+  void keepBlockOpener(size_t start, std::vector<Stmt*>& out) {
+    size_t i = start;
+    if (toks_[i].kind == Tok::Ident && toks_[i + 1].kind == Tok::Colon) i += 2;  // a label
+    StmtKind kind;
+    switch (toks_[i].kind) {
+      case Tok::KwFor: kind = StmtKind::For; break;
+      case Tok::KwWhile: kind = StmtKind::While; break;
+      case Tok::KwRepeat: kind = StmtKind::Repeat; break;
+      case Tok::KwSub: kind = StmtKind::Sub; break;
+      case Tok::KwUntil: kind = StmtKind::Until; break;
+      case Tok::KwIf: {
+        // A block if has nothing after "then" (or no "then"); a single-line if closes itself.
+        size_t j = i + 1;
+        while (toks_[j].kind != Tok::Newline && toks_[j].kind != Tok::Eof && toks_[j].kind != Tok::KwThen) ++j;
+        if (toks_[j].kind == Tok::KwThen && toks_[j + 1].kind != Tok::Newline && toks_[j + 1].kind != Tok::Eof)
+          return;
+        kind = StmtKind::If;
+        break;
+      }
+      default: return;
+    }
+    if (!out.empty() && out.back()->loc == toks_[i].loc) return;  // already added
+    Stmt* s = newStmt(kind, toks_[i].loc);
+    s->broken = true;
+    out.push_back(s);
+  }
+
   const Token& cur() const { return toks_[pos_]; }
   const Token& peek(size_t n = 1) const {
     size_t i = pos_ + n;

@@ -16,3 +16,10 @@ data d 1, 2 // expect-error: expected ';' after the array name, found a number
 sub (a) // expect-error: expected a sub name, found '('
 a[1 2] = 3 // expect-error: expected ']' to close the index, found a number
 x = foo(1 // expect-error: expected ')' to close the argument list, found end of line
+for step = 1 to 3 // expect-error: expected the loop variable after for, found 'step'
+  print 1
+next
+while (1 // expect-error: expected ')', found end of line
+wend
+repeat
+until // expect-error: expected an expression, found end of line
