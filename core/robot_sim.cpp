@@ -16,10 +16,25 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kRounding = 0.7072;
 /// Nearest pixel of a coordinate.
 int pixelOf(double v) { return static_cast<int>(std::floor(v + 0.5)); }
-/// First offset at least `d` from the centre in a distance-sorted list.
-template <typename It>
-It fromDistance(It begin, It end, double d) {
-  return std::lower_bound(begin, end, d - 1e-4, [](const auto& o, double v) { return o.dist < v; });
+/// For a distance-sorted list: where each whole distance 0, 1, 2, ... starts.
+template <typename Index, typename List>
+std::vector<Index> startsOf(const List& list, double reach) {
+  std::vector<Index> starts;
+  size_t i = 0;
+  for (int k = 0; k <= static_cast<int>(std::ceil(reach)) + 1; ++k) {
+    while (i < list.size() && list[i].dist < k) ++i;
+    starts.push_back(static_cast<Index>(i));
+  }
+  return starts;
+}
+/// First offset at least `d` from the centre, using the whole-distance starts to skip ahead.
+template <typename List, typename Index>
+size_t fromDistance(const List& list, const std::vector<Index>& starts, double d) {
+  if (d <= 0) return 0;
+  size_t k = std::min(static_cast<size_t>(d), starts.size() - 1);
+  size_t i = starts[k];
+  while (i < list.size() && list[i].dist < d - 1e-4) ++i;
+  return i;
 }
 }  // namespace
 
@@ -62,6 +77,8 @@ void SimRobot::prepareOffsets() {
   auto nearer = [](const Offset& a, const Offset& b) { return a.dist < b.dist; };
   std::stable_sort(byDistance_.begin(), byDistance_.end(), nearer);
   for (const Offset& o : byDistance_) byBearing_[static_cast<int>(o.bearing) % 360].push_back(o);
+  distanceStart_ = startsOf<uint32_t>(byDistance_, offsetsReach_);
+  for (int b = 0; b < 360; ++b) bearingStart_[b] = startsOf<uint16_t>(byBearing_[b], offsetsReach_);
 }
 
 bool SimRobot::collides(const Eigen::Vector2d& pos) {
@@ -73,7 +90,7 @@ bool SimRobot::collides(const Eigen::Vector2d& pos) {
   if (clear - kRounding > radius_) return false;
   if (field_.obstacle(cx, cy)) return true;
   double r2 = radius_ * radius_;
-  for (auto it = fromDistance(byDistance_.begin(), byDistance_.end(), clear);
+  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, clear));
        it != byDistance_.end() && it->dist <= radius_ + kRounding; ++it) {
     int x = cx + it->dx, y = cy + it->dy;
     double dx = x - pos.x(), dy = y - pos.y();
@@ -194,7 +211,7 @@ int SimRobot::bumper() {
   double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
   if (clear > reach) return 0;
   int bits = 0;
-  for (auto it = fromDistance(byDistance_.begin(), byDistance_.end(), clear);
+  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, clear));
        it != byDistance_.end() && it->dist <= reach; ++it) {
     if (!field_.obstacle(c.x() + it->dx, c.y() + it->dy)) continue;
     double rel = normalizeDegrees(it->bearing - pose_.heading);
@@ -225,10 +242,16 @@ int SimRobot::feel() {
     int count = static_cast<int>(std::floor(lo + width)) - first + 1;
     bool hit = false;
     for (int b = 0; b < count && !hit; ++b) {
-      const std::vector<Offset>& bucket = byBearing_[(first + b) % 360];
-      for (auto it = fromDistance(bucket.begin(), bucket.end(), clear);
+      int index = (first + b) % 360;
+      const std::vector<Offset>& bucket = byBearing_[index];
+      bool edge = b == 0 || b == count - 1;
+      for (auto it = bucket.begin() + static_cast<long>(fromDistance(bucket, bearingStart_[index], clear));
            it != bucket.end() && it->dist <= reach; ++it) {
-        if (normalizeDegrees(it->bearing - lo) > width) continue;
+        if (edge) {
+          double rel = it->bearing - lo;  // in (-360, 360): one wrap is enough
+          if (rel < 0) rel += 360;
+          if (rel > width) continue;
+        }
         if (field_.obstacle(c.x() + it->dx, c.y() + it->dy)) {
           hit = true;
           break;

@@ -98,6 +98,10 @@ class SimRobot {
   double offsetsReach_ = 0;
   std::vector<Offset> byDistance_;
   std::vector<Offset> byBearing_[360];
+  /// distanceStart_[k]: the first index in byDistance_ at distance >= k; bearingStart_[b][k] the
+  /// same in bucket b. They replace binary searches in the sensors' inner loops.
+  std::vector<uint32_t> distanceStart_;
+  std::vector<uint16_t> bearingStart_[360];
 };
 
 /// Degrees normalised to [0, 360).
