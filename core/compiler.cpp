@@ -476,6 +476,8 @@ class Compiler {
       case StmtKind::Call: callStmt(s); break;
       case StmtKind::Dim: dim(s); break;
       case StmtKind::Data: {
+        if (findAnyBuiltin(s.name))
+          fail(s.nameLoc, "cannot store into '" + std::string(s.name) + "': it is a built-in name");
         uint32_t arr = variable(s.name);
         for (const Expr* e : s.exprs) {
           uint32_t v = expr(e);

@@ -751,6 +751,8 @@ void Interpreter::execute(uint32_t& pcOut) {
         const Value& i0 = R(in.c);
         if (in.n == 1 && i0.isInt() && a.dims.size() == 1 && i0.i() >= 0 && i0.i() < a.dims[0])
           off = static_cast<size_t>(i0.i());
+        else if (in.n == 1 && i0.isUndef())
+          undefined(in.c);
         else
           off = elementOffset(a, in.b, &i0, in.n);
         R(in.a) = a.items[off];
@@ -768,6 +770,8 @@ void Interpreter::execute(uint32_t& pcOut) {
         const Value& i0 = R(in.c);
         if (in.n == 1 && i0.isInt() && a.dims.size() == 1 && i0.i() >= 0 && i0.i() < a.dims[0])
           off = static_cast<size_t>(i0.i());
+        else if (in.n == 1 && i0.isUndef())
+          undefined(in.c);
         else
           off = elementOffset(a, in.a, &i0, in.n);
         a.items[off] = v;

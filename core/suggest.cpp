@@ -35,8 +35,9 @@ int editDistance(std::string_view a, std::string_view b, bool ignoreCase) {
 
 std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates,
                          bool ignoreCase) {
-  // Close by edit distance: roughly one edit per three characters, at least one, at most four.
-  int limit = std::clamp(static_cast<int>(word.size()) / 3, 1, 4);
+  // Close by edit distance: roughly one edit per three characters, at least one, at most four;
+  // names of one or two characters are too short to be misspellings of each other.
+  int limit = word.size() <= 2 ? 0 : std::clamp(static_cast<int>(word.size()) / 3, 1, 4);
   int best = limit + 1;
   std::string_view bestWord;
   // Or sharing a long beginning (InitializeRobot -> InitializeSimulator): at least 4

@@ -1,0 +1,9 @@
+// Output arguments must be variables that can receive a value.
+x = 1
+call Get(x)
+dim r[2]
+data Red; 1 // expect-error: cannot store into 'Red': it is a built-in name
+end
+sub Get(&v)
+  v = 2
+return

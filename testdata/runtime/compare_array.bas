@@ -1,0 +1,2 @@
+dim a[2]
+if a = 1 then print 1 // expect-runtime-error: cannot compare an array
