@@ -1,0 +1,178 @@
+#include "png_writer.h"
+
+#include <png.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include "robot_sim.h"
+
+namespace rb::render {
+
+namespace {
+
+constexpr int kScreenW = Canvas::kWidth;
+constexpr int kScreenH = Canvas::kHeight;
+
+/// Half the thickness of the robot's outline and heading line, in screen pixels: one screen
+/// pixel thick at every scale, like the drawing under it.
+constexpr double kRobotHalfStroke = 0.5;
+
+/// Squared distance from p to the segment a-b.
+double segmentDistance2(double px, double py, double ax, double ay, double bx, double by) {
+  double dx = bx - ax, dy = by - ay;
+  double len2 = dx * dx + dy * dy;
+  double t = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+  double ex = px - (ax + t * dx), ey = py - (ay + t * dy);
+  return ex * ex + ey * ey;
+}
+
+}  // namespace
+
+RgbImage screenImage(const std::vector<Colour>& pixels, int scale) {
+  scale = std::clamp(scale, 1, kMaxScale);
+  RgbImage image;
+  image.width = kScreenW * scale;
+  image.height = kScreenH * scale;
+  image.rgb.assign(static_cast<size_t>(image.width) * static_cast<size_t>(image.height) * 3, 0);
+  if (pixels.size() < static_cast<size_t>(kScreenW) * kScreenH) return image;
+  const size_t rowBytes = static_cast<size_t>(image.width) * 3;
+  for (int y = 0; y < kScreenH; ++y) {
+    const Colour* src = pixels.data() + static_cast<size_t>(y) * kScreenW;
+    uint8_t* dst = image.rgb.data() + static_cast<size_t>(y) * static_cast<size_t>(scale) * rowBytes;
+    // Screens are long runs of one colour: convert a colour number only when it changes.
+    Colour last = src[0];
+    uint32_t rgb = colourToRgb(last);
+    uint8_t* p = dst;
+    for (int x = 0; x < kScreenW; ++x) {
+      if (src[x] != last) {
+        last = src[x];
+        rgb = colourToRgb(last);
+      }
+      for (int k = 0; k < scale; ++k) {
+        *p++ = static_cast<uint8_t>(rgb >> 16);
+        *p++ = static_cast<uint8_t>(rgb >> 8);
+        *p++ = static_cast<uint8_t>(rgb);
+      }
+    }
+    // The other rows of the scaled row are copies of the first.
+    for (int k = 1; k < scale; ++k) std::memcpy(dst + static_cast<size_t>(k) * rowBytes, dst, rowBytes);
+  }
+  return image;
+}
+
+void drawRobot(RgbImage& image, const RobotView& robot, int scale) {
+  if (!robot.visible) return;
+  scale = std::clamp(scale, 1, kMaxScale);
+  const double cx = robot.x, cy = robot.y, r = robot.radius;
+  if (!std::isfinite(cx) || !std::isfinite(cy) || !std::isfinite(r) || r < 0) return;
+  const double heading = std::isfinite(robot.heading) ? robot.heading : 0.0;
+  const Eigen::Vector2d dir = headingVector(heading);
+  const double ex = cx + dir.x() * r, ey = cy + dir.y() * r;
+  const uint32_t colour = colourToRgb(robot.colour);
+  const double reach = r + 1;
+  // Work in screen coordinates: image pixel p covers screen pixel p / scale, whose centre is
+  // the screen pixel's integer coordinate (the canvas and the robot share that convention).
+  auto toImage = [scale](double v) { return static_cast<long>(std::floor((v + 0.5) * scale)); };
+  long x0 = std::max(0L, toImage(cx - reach)), x1 = std::min<long>(image.width - 1, toImage(cx + reach));
+  long y0 = std::max(0L, toImage(cy - reach)), y1 = std::min<long>(image.height - 1, toImage(cy + reach));
+  const double h2 = kRobotHalfStroke * kRobotHalfStroke;
+  for (long py = y0; py <= y1; ++py) {
+    double v = (static_cast<double>(py) + 0.5) / scale - 0.5;
+    for (long px = x0; px <= x1; ++px) {
+      double u = (static_cast<double>(px) + 0.5) / scale - 0.5;
+      double d = std::hypot(u - cx, v - cy);
+      bool ring = std::abs(d - r) <= kRobotHalfStroke;
+      if (ring || segmentDistance2(u, v, cx, cy, ex, ey) <= h2)
+        image.set(static_cast<int>(px), static_cast<int>(py), colour);
+    }
+  }
+}
+
+RgbImage composeImage(const std::vector<Colour>& pixels, const RobotView& robot, int scale) {
+  RgbImage image = screenImage(pixels, scale);
+  drawRobot(image, robot, scale);
+  return image;
+}
+
+std::vector<uint8_t> encodePng(const RgbImage& image) {
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  png.width = static_cast<png_uint_32>(image.width);
+  png.height = static_cast<png_uint_32>(image.height);
+  png.format = PNG_FORMAT_RGB;
+  // Screens compress well: start with a buffer an eighth of the raw size and grow it to the
+  // size libpng asks for only when that is too small, instead of compressing twice.
+  std::vector<uint8_t> out(image.rgb.size() / 8 + 4096);
+  png_alloc_size_t size = out.size();
+  if (!png_image_write_to_memory(&png, out.data(), &size, 0, image.rgb.data(), 0, nullptr)) {
+    if (size <= out.size()) throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
+    out.resize(size);
+    std::memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(image.width);
+    png.height = static_cast<png_uint_32>(image.height);
+    png.format = PNG_FORMAT_RGB;
+    if (!png_image_write_to_memory(&png, out.data(), &size, 0, image.rgb.data(), 0, nullptr))
+      throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
+  }
+  out.resize(size);
+  return out;
+}
+
+bool writeFileBytes(const std::string& path, const void* bytes, size_t size, std::string& error) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) {
+    error = "cannot write '" + path + "': " + std::strerror(errno);
+    return false;
+  }
+  bool ok = std::fwrite(bytes, 1, size, f) == size;
+  int writeErrno = errno;
+  // Close even after a failed write; a failing close (full disk, NFS) is a failed write too.
+  if (std::fclose(f) != 0 && ok) {
+    ok = false;
+    writeErrno = errno;
+  }
+  if (!ok) error = "cannot write '" + path + "': " + std::strerror(writeErrno);
+  return ok;
+}
+
+bool writePngFile(const std::string& path, const RgbImage& image, std::string& error) {
+  std::vector<uint8_t> bytes;
+  try {
+    bytes = encodePng(image);
+  } catch (const std::exception& e) {
+    error = "cannot write '" + path + "': " + e.what();
+    return false;
+  }
+  return writeFileBytes(path, bytes.data(), bytes.size(), error);
+}
+
+std::optional<RgbImage> readPngFile(const std::string& path, std::string& error) {
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+    error = "cannot read '" + path + "': " + png.message;
+    png_image_free(&png);
+    return std::nullopt;
+  }
+  png.format = PNG_FORMAT_RGB;
+  RgbImage image;
+  image.width = static_cast<int>(png.width);
+  image.height = static_cast<int>(png.height);
+  image.rgb.assign(PNG_IMAGE_SIZE(png), 0);
+  if (!png_image_finish_read(&png, nullptr, image.rgb.data(), 0, nullptr)) {
+    error = "cannot read '" + path + "': " + png.message;
+    png_image_free(&png);
+    return std::nullopt;
+  }
+  return image;
+}
+
+}  // namespace rb::render

@@ -1,0 +1,66 @@
+#pragma once
+// The screen as an RGB image: scaled by a whole factor (nearest neighbour) with the robot drawn
+// on top, encoded as PNG with libpng. The robot is never part of the screen's pixels, so it is
+// drawn here as a circle outline of its radius with a line from the centre toward its heading.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arena_view.h"
+#include "canvas.h"
+
+namespace rb::render {
+
+/// An 8-bit RGB image, row-major, three bytes per pixel.
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;  ///< width * height * 3 bytes
+
+  /// 0xRRGGBB of pixel (x, y); the caller keeps (x, y) inside the image.
+  uint32_t pixel(int x, int y) const {
+    const uint8_t* p = rgb.data() + (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 3;
+    return static_cast<uint32_t>(p[0]) << 16 | static_cast<uint32_t>(p[1]) << 8 | p[2];
+  }
+  /// Sets pixel (x, y) to 0xRRGGBB; the caller keeps (x, y) inside the image.
+  void set(int x, int y, uint32_t colour) {
+    uint8_t* p = rgb.data() + (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 3;
+    p[0] = static_cast<uint8_t>(colour >> 16);
+    p[1] = static_cast<uint8_t>(colour >> 8);
+    p[2] = static_cast<uint8_t>(colour);
+  }
+};
+
+/// The largest --scale: 6400 x 4800 pixels, about 90 MB of RGB.
+constexpr int kMaxScale = 8;
+
+/// The 800 x 600 screen (`pixels`: row-major colour numbers) scaled by `scale` (1..kMaxScale,
+/// clamped), nearest neighbour, without the robot.
+RgbImage screenImage(const std::vector<Colour>& pixels, int scale);
+
+/// Draws the robot onto an image of the screen made with `scale`: a one-screen-pixel circle
+/// outline of its radius and a line from its centre to the edge in the heading direction, both
+/// in the robot's colour. Nothing is drawn when the robot is not visible.
+void drawRobot(RgbImage& image, const RobotView& robot, int scale);
+
+/// screenImage() with drawRobot() on top: the picture `rb render` writes.
+RgbImage composeImage(const std::vector<Colour>& pixels, const RobotView& robot, int scale);
+
+/// The image as the bytes of a PNG file (8-bit RGB, no time stamp, so the same image always
+/// gives the same bytes). Throws std::runtime_error when libpng fails (out of memory).
+std::vector<uint8_t> encodePng(const RgbImage& image);
+
+/// Encodes the image and writes it to `path`. On failure returns false with a message naming
+/// the file in `error`.
+bool writePngFile(const std::string& path, const RgbImage& image, std::string& error);
+
+/// Decodes a PNG file into 8-bit RGB (any PNG libpng reads; alpha is composed onto black).
+/// Used by the tests to check the pixels rb render wrote. nullopt with `error` set on failure.
+std::optional<RgbImage> readPngFile(const std::string& path, std::string& error);
+
+/// Writes `bytes` to `path`, replacing it. On failure returns false with a message naming the
+/// file and the reason in `error`.
+bool writeFileBytes(const std::string& path, const void* bytes, size_t size, std::string& error);
+
+}  // namespace rb::render

@@ -1,0 +1,188 @@
+// The PNG picture: the seed's Figure 1.7 decoded back from a written file, the robot on top,
+// scaling, determinism and write errors.
+
+#include <catch2/catch.hpp>
+
+#include "png_writer.h"
+#include "render_test_support.h"
+
+namespace rb::render {
+namespace {
+
+constexpr uint32_t kGreenRgb = 0x00AA00;  // colour 2, the pen of Figure 1.7
+constexpr uint32_t kBlueRgb = 0x0000AA;   // colour 1, the robot's default colour
+constexpr uint32_t kWhiteRgb = 0xFFFFFF;
+
+std::unique_ptr<test::PictureRun> runFigure17() {
+  std::string text = test::readText(test::sourceRoot() / "examples" / "fig_1_7.bas");
+  REQUIRE_FALSE(text.empty());
+  auto run = test::runForPicture(text);
+  INFO(run->diagnostics);
+  REQUIRE(run->loaded);
+  REQUIRE(run->result.status == RunStatus::Finished);
+  return run;
+}
+
+/// Checks the square of Figure 1.7 in an image of the screen at scale 1. `robotOnTop`: the
+/// robot sits on the corner (400, 300), so that corner is checked beside the robot's lines.
+void checkSquare(const RgbImage& img, bool robotOnTop) {
+  REQUIRE(img.width == 800);
+  REQUIRE(img.height == 600);
+  // The four corners.
+  if (!robotOnTop) CHECK(img.pixel(400, 300) == kGreenRgb);
+  CHECK(img.pixel(399, 301) == kGreenRgb);  // the same corner's round brush, off the robot's lines
+  CHECK(img.pixel(400, 180) == kGreenRgb);
+  CHECK(img.pixel(520, 180) == kGreenRgb);
+  CHECK(img.pixel(520, 300) == kGreenRgb);
+  // Along the sides (the robot's outline crosses the sides 20 pixels from its centre).
+  for (int t = 190; t <= 270; t += 10) {
+    INFO("t = " << t);
+    CHECK(img.pixel(400, t) == kGreenRgb);        // left side
+    CHECK(img.pixel(520, t) == kGreenRgb);        // right side
+    CHECK(img.pixel(t + 220, 180) == kGreenRgb);  // top side
+    CHECK(img.pixel(t + 240, 300) == kGreenRgb);  // bottom side
+  }
+  // The lines are 4 pixels wide: the brush covers x - 2 .. x + 1.
+  for (int x = 398; x <= 401; ++x) CHECK(img.pixel(x, 240) == kGreenRgb);
+  CHECK(img.pixel(397, 240) == kWhiteRgb);
+  CHECK(img.pixel(402, 240) == kWhiteRgb);
+  for (int x = 518; x <= 521; ++x) CHECK(img.pixel(x, 240) == kGreenRgb);
+  CHECK(img.pixel(517, 240) == kWhiteRgb);
+  CHECK(img.pixel(522, 240) == kWhiteRgb);
+  for (int y = 178; y <= 181; ++y) CHECK(img.pixel(460, y) == kGreenRgb);
+  CHECK(img.pixel(460, 177) == kWhiteRgb);
+  CHECK(img.pixel(460, 182) == kWhiteRgb);
+  // Inside and outside the square: the background.
+  CHECK(img.pixel(460, 240) == kWhiteRgb);
+  CHECK(img.pixel(100, 100) == kWhiteRgb);
+  CHECK(img.pixel(600, 400) == kWhiteRgb);
+}
+
+TEST_CASE("png: Figure 1.7 draws a green square with 4-pixel sides", "[render][png]") {
+  auto run = runFigure17();
+  SECTION("the screen's pixels, through a file") {
+    RgbImage screen = screenImage(run->canvas().pixels(), 1);
+    checkSquare(screen, false);
+    test::TempFile file("fig_1_7_screen.png");
+    std::string error;
+    REQUIRE(writePngFile(file.str(), screen, error));
+    std::optional<RgbImage> decoded = readPngFile(file.str(), error);
+    INFO(error);
+    REQUIRE(decoded);
+    checkSquare(*decoded, false);
+  }
+  SECTION("the written file, decoded, with the robot on top") {
+    RgbImage composed = composeImage(run->canvas().pixels(), run->robot(), 1);
+    test::TempFile file("fig_1_7.png");
+    std::string error;
+    REQUIRE(writePngFile(file.str(), composed, error));
+    std::optional<RgbImage> decoded = readPngFile(file.str(), error);
+    INFO(error);
+    REQUIRE(decoded);
+    CHECK(decoded->rgb == composed.rgb);
+    checkSquare(*decoded, true);
+    // The robot ends where it started, at (400, 300) heading up, radius 20, blue: its heading
+    // line runs up from the centre, its outline crosses the axes 20 pixels away.
+    CHECK(decoded->pixel(400, 300) == kBlueRgb);
+    CHECK(decoded->pixel(400, 290) == kBlueRgb);
+    CHECK(decoded->pixel(400, 281) == kBlueRgb);
+    CHECK(decoded->pixel(380, 300) == kBlueRgb);
+    CHECK(decoded->pixel(400, 320) == kBlueRgb);
+    CHECK(decoded->pixel(420, 300) == kBlueRgb);
+    CHECK(decoded->pixel(390, 300) == kWhiteRgb);  // inside the outline, off the heading line
+    CHECK(decoded->pixel(410, 310) == kWhiteRgb);
+  }
+}
+
+TEST_CASE("png: the robot's heading line follows headingVector (0 up, clockwise)", "[render][png]") {
+  std::vector<Colour> screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
+  RobotView robot;
+  robot.visible = true;
+  robot.x = 200;
+  robot.y = 200;
+  robot.radius = 30;
+  robot.colour = colours::kRed;
+  robot.heading = 90;  // right
+  RgbImage img = composeImage(screen, robot, 1);
+  CHECK(img.pixel(215, 200) == 0xAA0000);
+  CHECK(img.pixel(200, 185) == kWhiteRgb);
+  robot.heading = 225;  // down-left
+  img = composeImage(screen, robot, 1);
+  CHECK(img.pixel(190, 210) == 0xAA0000);
+  CHECK(img.pixel(215, 200) == kWhiteRgb);
+  robot.visible = false;
+  img = composeImage(screen, robot, 1);
+  CHECK(img.pixel(190, 210) == kWhiteRgb);
+  CHECK(img.pixel(170, 200) == kWhiteRgb);
+}
+
+TEST_CASE("png: --scale 2 doubles the picture, nearest neighbour", "[render][png]") {
+  auto run = runFigure17();
+  const std::vector<Colour>& pixels = run->canvas().pixels();
+  RgbImage one = screenImage(pixels, 1);
+  RgbImage two = screenImage(pixels, 2);
+  REQUIRE(two.width == 1600);
+  REQUIRE(two.height == 1200);
+  size_t mismatches = 0;
+  for (int y = 0; y < two.height; ++y)
+    for (int x = 0; x < two.width; ++x) mismatches += two.pixel(x, y) != one.pixel(x / 2, y / 2);
+  CHECK(mismatches == 0);
+
+  RgbImage composed = composeImage(pixels, run->robot(), 2);
+  test::TempFile file("scale2.png");
+  std::string error;
+  REQUIRE(writePngFile(file.str(), composed, error));
+  auto decoded = readPngFile(file.str(), error);
+  REQUIRE(decoded);
+  CHECK(decoded->width == 1600);
+  CHECK(decoded->height == 1200);
+  // The 4-pixel side is 8 pixels wide now; the robot's outline is still one screen pixel
+  // (two image pixels) thick.
+  for (int x = 796; x <= 803; ++x) CHECK(decoded->pixel(x, 480) == kGreenRgb);
+  CHECK(decoded->pixel(795, 480) == kWhiteRgb);
+  CHECK(decoded->pixel(804, 480) == kWhiteRgb);
+  CHECK(decoded->pixel(760, 600) == kBlueRgb);
+  CHECK(decoded->pixel(761, 601) == kBlueRgb);
+}
+
+TEST_CASE("png: the same screen always encodes to the same bytes", "[render][png]") {
+  auto run = runFigure17();
+  RgbImage img = composeImage(run->canvas().pixels(), run->robot(), 1);
+  std::vector<uint8_t> a = encodePng(img), b = encodePng(img);
+  REQUIRE(a.size() > 8);
+  CHECK(a == b);
+  const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  CHECK(std::equal(signature, signature + 8, a.begin()));
+  // A screen full of different colours needs more than the first guess of the buffer size.
+  std::vector<Colour> noise(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight);
+  uint32_t state = 12345;
+  for (Colour& c : noise) {
+    state = state * 1664525u + 1013904223u;
+    c = state >> 8;
+  }
+  RgbImage noisy = screenImage(noise, 1);
+  test::TempFile file("noise.png");
+  std::string error;
+  REQUIRE(writePngFile(file.str(), noisy, error));
+  auto decoded = readPngFile(file.str(), error);
+  REQUIRE(decoded);
+  CHECK(decoded->rgb == noisy.rgb);
+}
+
+TEST_CASE("png: write and read errors name the file", "[render][png]") {
+  RgbImage img = screenImage(std::vector<Colour>(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, 0), 1);
+  std::string error;
+  CHECK_FALSE(writePngFile("/nonexistent-rb-dir/out.png", img, error));
+  CHECK_THAT(error, Catch::Contains("/nonexistent-rb-dir/out.png"));
+  error.clear();
+  CHECK_FALSE(readPngFile("/nonexistent-rb-dir/in.png", error));
+  CHECK_THAT(error, Catch::Contains("/nonexistent-rb-dir/in.png"));
+  test::TempFile notPng("not_png.png");
+  REQUIRE(writeFileBytes(notPng.str(), "hello", 5, error));
+  error.clear();
+  CHECK_FALSE(readPngFile(notPng.str(), error));
+  CHECK_FALSE(error.empty());
+}
+
+}  // namespace
+}  // namespace rb::render

@@ -1,0 +1,204 @@
+// The SVG picture: vector elements from the display list, Figure 1.7's trail as one polyline,
+// the raster fallback after floodFill, scaling and determinism.
+
+#include <catch2/catch.hpp>
+
+#include <regex>
+
+#include "png_writer.h"
+#include "render_test_support.h"
+#include "svg_writer.h"
+
+namespace rb::render {
+namespace {
+
+std::string svgOf(const std::string& program, int scale = 1) {
+  auto run = test::runForPicture(program);
+  INFO(run->diagnostics);
+  REQUIRE(run->loaded);
+  REQUIRE(run->result.status == RunStatus::Finished);
+  return renderSvg(run->canvas(), run->robot(), scale);
+}
+
+/// The elements named `tag` in the document, as their whole text.
+std::vector<std::string> elements(const std::string& svg, const std::string& tag) {
+  std::vector<std::string> found;
+  std::regex re("<" + tag + "\\b[^>]*>");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
+    found.push_back(it->str());
+  return found;
+}
+
+std::string attribute(const std::string& element, const std::string& name) {
+  std::smatch m;
+  if (std::regex_search(element, m, std::regex("\\s" + name + "=\"([^\"]*)\""))) return m[1];
+  return {};
+}
+
+std::vector<uint8_t> base64Decode(const std::string& text) {
+  auto value = [](char c) -> int {
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+') return 62;
+    if (c == '/') return 63;
+    return -1;
+  };
+  std::vector<uint8_t> out;
+  uint32_t acc = 0;
+  int bits = 0;
+  for (char c : text) {
+    int v = value(c);
+    if (v < 0) continue;
+    acc = acc << 6 | static_cast<uint32_t>(v);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out.push_back(static_cast<uint8_t>(acc >> bits));
+    }
+  }
+  return out;
+}
+
+TEST_CASE("svg: Figure 1.7's trail is one green polyline through the square's corners", "[render][svg]") {
+  std::string program = test::readText(test::sourceRoot() / "examples" / "fig_1_7.bas");
+  REQUIRE_FALSE(program.empty());
+  std::string svg = svgOf(program);
+  CHECK(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg ", 0) == 0);
+  CHECK_THAT(svg, Catch::Contains("version=\"1.1\" width=\"800\" height=\"600\" viewBox=\"0 0 800 600\""));
+  CHECK_THAT(svg, Catch::EndsWith("</svg>\n"));
+  std::vector<std::string> lines = elements(svg, "polyline");
+  REQUIRE(lines.size() == 1);
+  const std::string& trail = lines[0];
+  // Even widths centre the brush on the pixel's corner, so the corners are whole numbers.
+  CHECK(attribute(trail, "points") == "400,300 400,180 520,180 520,300 400,300");
+  CHECK(attribute(trail, "stroke") == "#00aa00");
+  CHECK(attribute(trail, "stroke-width") == "4");
+  CHECK(attribute(trail, "fill") == "none");
+  // The white background first, the robot last: a circle and its heading line, in blue.
+  std::vector<std::string> rects = elements(svg, "rect");
+  REQUIRE_FALSE(rects.empty());
+  CHECK(rects[0] == "<rect x=\"0\" y=\"0\" width=\"800\" height=\"600\" fill=\"#ffffff\"/>");
+  std::vector<std::string> circles = elements(svg, "circle");
+  REQUIRE(circles.size() == 1);
+  CHECK(circles[0] ==
+        "<circle cx=\"400.5\" cy=\"300.5\" r=\"20\" fill=\"none\" stroke=\"#0000aa\" stroke-width=\"1\"/>");
+  CHECK(svg.find("<circle") > svg.find("<polyline"));
+  CHECK_THAT(svg, Catch::Contains("<line x1=\"400.5\" y1=\"300.5\" x2=\"400.5\" y2=\"280.5\" stroke=\"#0000aa\""));
+  CHECK(svg.find("<image") == std::string::npos);
+}
+
+TEST_CASE("svg: the same program and seed give byte-identical SVG", "[render][svg]") {
+  std::string program = test::readText(test::sourceRoot() / "examples" / "fig_1_7.bas") +
+                        "circle 10, 10, 90, 50, RED, YELLOW\nxyText 100, 500, \"same\", \"Arial\", 20\n"
+                        "rLocate 600, 100, 30\nrForward 37\nrTurn 45\nrForward 21\n";
+  CHECK(svgOf(program) == svgOf(program));
+}
+
+TEST_CASE("svg: shapes keep the canvas's pixel geometry", "[render][svg]") {
+  SECTION("a rectangle's outline lies inside its box") {
+    std::string svg = svgOf("rectangle 10, 10, 50, 30\nlineWidth 4\nrectangle 100, 100, 199, 149, RED, YELLOW\n");
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"10.5\" y=\"10.5\" width=\"40\" height=\"20\" fill=\"none\" "
+                                    "stroke=\"#000000\" stroke-width=\"1\"/>"));
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"102\" y=\"102\" width=\"96\" height=\"46\" fill=\"#ffff55\" "
+                                    "stroke=\"#aa0000\" stroke-width=\"4\"/>"));
+  }
+  SECTION("a filled rectangle, and one whose outline is as wide as the box") {
+    std::string svg = svgOf("rectangle 5, 6, 14, 25, GREEN, GREEN\nlineWidth 6\nrectangle 25, 6, 34, 25\n");
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"5.5\" y=\"6.5\" width=\"9\" height=\"19\" fill=\"#00aa00\" "
+                                    "stroke=\"#00aa00\" stroke-width=\"1\"/>"));
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"25\" y=\"6\" width=\"10\" height=\"20\" fill=\"#000000\"/>"));
+  }
+  SECTION("an ellipse, a line, a pixel") {
+    std::string svg = svgOf("circle 100, 100, 200, 150, BLUE\nline 0, 0, 10, 20, 3, RED\nsetPixel 7, 8, CYAN\n");
+    CHECK_THAT(svg, Catch::Contains("<ellipse cx=\"150.5\" cy=\"125.5\" rx=\"50\" ry=\"25\" fill=\"none\" "
+                                    "stroke=\"#0000aa\" stroke-width=\"1\"/>"));
+    CHECK_THAT(svg, Catch::Contains("<line x1=\"0.5\" y1=\"0.5\" x2=\"10.5\" y2=\"20.5\" stroke=\"#aa0000\" "
+                                    "stroke-width=\"3\""));
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"7\" y=\"8\" width=\"1\" height=\"1\" fill=\"#00aaaa\"/>"));
+  }
+  SECTION("text: monospace, escaped, Latin-1 as Unicode, with its background") {
+    std::string svg = svgOf("xyText 10, 20, \"a<b & \" + char(233), \"Courier\", 12, \"u\", RED, YELLOW\n");
+    std::vector<std::string> texts = elements(svg, "text");
+    REQUIRE(texts.size() == 1);
+    CHECK(attribute(texts[0], "font-family") == "monospace");
+    CHECK(attribute(texts[0], "fill") == "#aa0000");
+    CHECK(attribute(texts[0], "text-decoration") == "underline");
+    CHECK_THAT(svg, Catch::Contains(">a&lt;b &amp; &#233;</text>"));
+    // The yellow box behind the text comes first.
+    CHECK(svg.find("fill=\"#ffff55\"") < svg.find("<text"));
+  }
+  SECTION("RGB colours") {
+    std::string svg = svgOf("line 1, 1, 100, 1, 1, RGB(18, 52, 86)\n");
+    CHECK_THAT(svg, Catch::Contains("stroke=\"#123456\""));
+  }
+  SECTION("clearScr starts the picture over in its colour") {
+    std::string svg = svgOf("line 1, 1, 100, 1\nclearScr GRAY\nline 5, 5, 9, 9, 1, RED\n");
+    std::vector<std::string> rects = elements(svg, "rect");
+    REQUIRE(rects.size() == 1);
+    CHECK(attribute(rects[0], "fill") == "#aaaaaa");
+    REQUIRE(elements(svg, "line").size() == 1);
+  }
+}
+
+TEST_CASE("svg: after floodFill the picture is the embedded raster", "[render][svg]") {
+  auto run = test::runForPicture("rectangle 100, 100, 300, 200\nfloodFill 150, 150, RED\nrLocate 600, 400\n");
+  REQUIRE(run->loaded);
+  std::string svg = renderSvg(run->canvas(), run->robot(), 1);
+  CHECK_THAT(svg, Catch::Contains("<!-- The screen was changed in a way that has no vector form"));
+  std::vector<std::string> images = elements(svg, "image");
+  REQUIRE(images.size() == 1);
+  CHECK(attribute(images[0], "width") == "800");
+  CHECK(attribute(images[0], "height") == "600");
+  // No vector shapes: the rectangle is in the image.
+  CHECK(elements(svg, "rect").empty());
+  // The robot stays a vector, above the image.
+  REQUIRE(elements(svg, "circle").size() == 1);
+  CHECK(svg.find("<circle") > svg.find("<image"));
+
+  // The embedded PNG is the screen: decode it and look.
+  std::string href = attribute(images[0], "xlink:href");
+  const std::string prefix = "data:image/png;base64,";
+  REQUIRE(href.rfind(prefix, 0) == 0);
+  std::vector<uint8_t> png = base64Decode(href.substr(prefix.size()));
+  test::TempFile file("embedded.png");
+  std::string error;
+  REQUIRE(writeFileBytes(file.str(), png.data(), png.size(), error));
+  auto decoded = readPngFile(file.str(), error);
+  INFO(error);
+  REQUIRE(decoded);
+  CHECK(decoded->width == 800);
+  CHECK(decoded->pixel(150, 150) == 0xAA0000);
+  CHECK(decoded->pixel(100, 150) == 0x000000);
+  CHECK(decoded->pixel(50, 50) == 0xFFFFFF);
+  // The robot is not in the raster.
+  CHECK(decoded->pixel(600, 380) == 0xFFFFFF);
+}
+
+TEST_CASE("svg: scrolling print text also falls back to the raster", "[render][svg]") {
+  auto run = test::runForPicture("for i = 1 to 50\n  print i\nnext\n");
+  REQUIRE(run->loaded);
+  CHECK(needsRaster(run->canvas().displayList()));
+  CHECK(elements(renderSvg(run->canvas(), run->robot(), 1), "image").size() == 1);
+  auto few = test::runForPicture("print 1\nprint 2\n");
+  CHECK_FALSE(needsRaster(few->canvas().displayList()));
+}
+
+TEST_CASE("svg: --scale multiplies width and height, not the coordinates", "[render][svg]") {
+  std::string svg = svgOf("line 0, 0, 10, 10\n", 2);
+  CHECK_THAT(svg, Catch::Contains("width=\"1600\" height=\"1200\" viewBox=\"0 0 800 600\""));
+  CHECK_THAT(svg, Catch::Contains("x2=\"10.5\""));
+}
+
+TEST_CASE("svg: base64", "[render][svg]") {
+  auto b64 = [](const std::string& s) { return base64Encode(std::vector<uint8_t>(s.begin(), s.end())); };
+  CHECK(b64("") == "");
+  CHECK(b64("f") == "Zg==");
+  CHECK(b64("fo") == "Zm8=");
+  CHECK(b64("foo") == "Zm9v");
+  CHECK(b64("foobar") == "Zm9vYmFy");
+  CHECK(base64Decode(b64("any bytes \x01\xff")) == std::vector<uint8_t>{'a', 'n', 'y', ' ', 'b', 'y', 't', 'e', 's', ' ', 1, 0xff});
+}
+
+}  // namespace
+}  // namespace rb::render
