@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "builtins.h"
+#include "checker.h"
 #include "exit_codes.h"
 #include "program_loader.h"
 
@@ -17,6 +18,7 @@ struct CheckOptions {
   std::string format = "text";
   bool werror = false;
   bool listBuiltins = false;
+  std::string target;  ///< "rb9": also warn about what the RB-9 robot cannot do
 };
 
 const char* kindName(BuiltinKind k) {
@@ -67,6 +69,10 @@ int executeCheck(const CheckOptions& opts) {
   if (json) std::printf("[");
   for (const std::string& file : opts.files) {
     LoadedFile loaded = loadFile(file, CompileOptions{}, true);
+    if (opts.target == "rb9" && loaded.program) {
+      checkRb9Target(*loaded.program, loaded.diags);
+      loaded.diags.sort();
+    }
     if (loaded.exitCode == exitcode::kNoInput) {
       missing = true;
       ++errors;
@@ -107,6 +113,10 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   check->add_option("--format", opts->format, "Output format: text (file:line:col: ...) or json")
       ->check(CLI::IsMember({"text", "json"}));
   check->add_flag("--werror", opts->werror, "Treat warnings as errors (exit 65 when there are any)");
+  check->add_option("--target", opts->target,
+                    "Also warn about what this robot cannot do: rb9 (forward moves above 250, "
+                    "rLook, rGPSX/rGPSY, rChargeLevel)")
+      ->check(CLI::IsMember({"rb9"}));
   check->add_flag("--list-builtins", opts->listBuiltins,
                   "List every built-in command, function and constant, then exit");
   check->footer(

@@ -6,6 +6,7 @@
 #include "check_command.h"
 #include "exit_codes.h"
 #include "render_command.h"
+#include "robot_command.h"
 #include "run_command.h"
 #include "trace_command.h"
 
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   rb::cli::addCheckCommand(app, exitCode);
   rb::cli::addTraceCommand(app, exitCode);
   rb::cli::addRenderCommand(app, exitCode);
+  rb::cli::addRobotCommand(app, exitCode);
   app.footer("Run 'rb SUBCOMMAND --help' for the options of a subcommand. Manual: man rb.");
   try {
     app.parse(argc, argv);

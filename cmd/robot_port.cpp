@@ -1,11 +1,24 @@
 #include "robot_port.h"
 
+#include "port_names.h"
 #include "runtime_error.h"
+#include "serial_link.h"
 
 namespace rb::cli {
 
-std::unique_ptr<RobotLink> openRobotPort(int64_t port, const RunOptions&) {
-  throw RuntimeError("rCommPort " + std::to_string(port) + ": real robots are not supported in this build yet");
+std::unique_ptr<RobotLink> openRobotPort(int64_t port, const RunOptions& opts) {
+  std::string path;
+  if (!opts.port.empty()) {
+    path = drivers::resolvePortOption(opts.port);
+  } else if (port < 0) {
+    throw RuntimeError("--real needs --port: the robot's serial port, a number (5 = COM5) or a device path");
+  } else {
+    path = drivers::devicePathForPort(port);
+  }
+  drivers::SerialLinkOptions link;
+  link.baud = opts.baud;
+  link.timeoutSeconds = opts.robotTimeoutSeconds;
+  return std::make_unique<drivers::SerialLink>(path, link);
 }
 
 }  // namespace rb::cli

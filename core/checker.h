@@ -11,4 +11,10 @@ namespace rb {
 /// program or a sub). Such a read is a runtime error, and usually a case slip: `real` vs `Real`.
 void lintProgram(const LoadedProgram& program, DiagnosticList& diags);
 
+/// `rb check --target rb9`: warns where a program asks the RB-9 robot for what it cannot do:
+/// a single rForward with a constant distance above 250 (the seed document's limit), and the
+/// functions with no RB-9 hardware behind them (rLook: no camera; rGPSX/rGPSY: no GPS;
+/// rChargeLevel: no battery command in the protocol). docs/real-robot.md lists the choices.
+void checkRb9Target(const LoadedProgram& program, DiagnosticList& diags);
+
 }  // namespace rb

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "protocol.h"
 #include "runtime_error.h"
+#include "value.h"
 
 namespace rb {
 
@@ -20,19 +20,41 @@ RobotReply RealRobot::send(uint8_t code, uint8_t param) {
 }
 
 namespace {
-/// Splits |amount| into commands of at most 255; returns the parameters.
-std::vector<uint8_t> chunks(double amount) {
-  long total = std::lround(std::abs(amount));
-  std::vector<uint8_t> out;
-  while (total > 0) {
-    long part = std::min<long>(total, protocol::kMaxParameter);
-    out.push_back(static_cast<uint8_t>(part));
-    total -= part;
-  }
-  return out;
+
+/// An angle as a byte parameter and a direction: the relative angle is first brought into
+/// -180..180, so rRange(270) looks 90 degrees to the left as on the simulator.
+struct SidedAngle {
+  bool left;
+  uint8_t degrees;
+};
+SidedAngle sidedAngle(double a) {
+  if (!std::isfinite(a)) throw RuntimeError("the angle is not a number");
+  double r = std::remainder(a, 360.0);  // -180..180
+  long d = std::lround(std::abs(r));
+  return {r < 0 && d > 0, static_cast<uint8_t>(std::min(d, 180L))};
 }
-uint8_t angleByte(double a) { return static_cast<uint8_t>(std::min(std::lround(std::abs(a)), 255L)); }
+
 }  // namespace
+
+template <typename Apply>
+void RealRobot::sendSplit(const char* what, double amount, uint8_t positiveCode,
+                          uint8_t negativeCode, Apply apply) {
+  if (!std::isfinite(amount)) throw RuntimeError(std::string(what) + ": the amount is not a number");
+  if (std::abs(amount) > protocol::kMaxAmount)
+    throw RuntimeError(std::string(what) + " " + formatNumber(amount) +
+                       ": too far for a real robot in one statement (at most " +
+                       formatNumber(protocol::kMaxAmount) + ")");
+  uint8_t code = amount >= 0 ? positiveCode : negativeCode;
+  int sign = amount >= 0 ? 1 : -1;
+  long total = std::lround(std::abs(amount));
+  // A move of 0 is still one command: programs send it to refresh the sensors.
+  do {
+    long part = std::min<long>(total, protocol::kMaxParameter);
+    send(code, static_cast<uint8_t>(part));
+    apply(static_cast<double>(sign * part));
+    total -= part;
+  } while (total > 0);
+}
 
 void RealRobot::locate(double x, double y, double heading) {
   send(kCodes.locate, 0);
@@ -41,19 +63,13 @@ void RealRobot::locate(double x, double y, double heading) {
 }
 
 void RealRobot::forward(double distance) {
-  uint8_t code = distance >= 0 ? kCodes.forward : kCodes.backward;
-  for (uint8_t part : chunks(distance)) {
-    send(code, part);
-    pose_.pos += headingVector(pose_.heading) * (distance >= 0 ? part : -part);
-  }
+  sendSplit("rForward", distance, kCodes.forward, kCodes.backward,
+            [this](double d) { pose_.pos += headingVector(pose_.heading) * d; });
 }
 
 void RealRobot::turn(double degrees) {
-  uint8_t code = degrees >= 0 ? kCodes.turnRight : kCodes.turnLeft;
-  for (uint8_t part : chunks(degrees)) {
-    send(code, part);
-    pose_.heading = normalizeDegrees(pose_.heading + (degrees >= 0 ? part : -part));
-  }
+  sendSplit("rTurn", degrees, kCodes.turnRight, kCodes.turnLeft,
+            [this](double d) { pose_.heading = normalizeDegrees(pose_.heading + d); });
 }
 
 void RealRobot::speed(double delay) {
@@ -81,11 +97,13 @@ int RealRobot::sense() {
 }
 
 double RealRobot::range(double a) {
-  return send(a >= 0 ? kCodes.rangeRight : kCodes.rangeLeft, angleByte(a)).result;
+  SidedAngle s = sidedAngle(a);
+  return send(s.left ? kCodes.rangeLeft : kCodes.rangeRight, s.degrees).result;
 }
 
 Colour RealRobot::look(double a) {
-  return send(a >= 0 ? kCodes.lookRight : kCodes.lookLeft, angleByte(a)).result;
+  SidedAngle s = sidedAngle(a);
+  return send(s.left ? kCodes.lookLeft : kCodes.lookRight, s.degrees).result;
 }
 
 double RealRobot::beacon(Colour colour) {
@@ -97,12 +115,15 @@ int RealRobot::gpsX() { return send(kCodes.gps, 0).result; }
 int RealRobot::gpsY() { return send(kCodes.gps, 1).result; }
 
 double RealRobot::chargeLevel() {
-  throw RuntimeError("rChargeLevel(): the real robot's protocol has no battery command");
+  throw RuntimeError(
+      "rChargeLevel(): the real robot's protocol has no battery command (read it with rCommand "
+      "if your robot defines one)");
 }
 
 int64_t RealRobot::command(int64_t code, int64_t param) {
   if (code < 0 || code > 255 || param < 0 || param > 255)
-    throw RuntimeError("rCommand: the code and the parameter must each be 0..255");
+    throw RuntimeError("rCommand(" + std::to_string(code) + ", " + std::to_string(param) +
+                       "): the code and the parameter must each be 0..255");
   return send(static_cast<uint8_t>(code), static_cast<uint8_t>(param)).result;
 }
 

@@ -7,7 +7,7 @@
 
 namespace rb {
 
-/// The robot's answer to every command (layout: drivers' protocol table, decisions.md).
+/// The robot's answer to every command, decoded (byte layout: protocol.h, decisions.md).
 struct RobotReply {
   uint8_t feel = 0;     ///< rFeel() bits
   uint8_t bumper = 0;   ///< rBumper() bits
@@ -15,6 +15,7 @@ struct RobotReply {
   uint16_t result = 0;  ///< the command's 16-bit result
 };
 
+/// One connection to a robot; destroying it closes the port.
 class RobotLink {
  public:
   virtual ~RobotLink() = default;

@@ -1,0 +1,11 @@
+#pragma once
+// `rb robot --pty`: a robot emulator on a pseudo-terminal, for tests and for users without a
+// robot. The emulation itself lives in drivers/.
+
+#include <CLI/CLI.hpp>
+
+namespace rb::cli {
+
+void addRobotCommand(CLI::App& app, int& exitCode);
+
+}  // namespace rb::cli
