@@ -16,11 +16,13 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
   app.add_option("--timeout", opts.timeoutSeconds,
                  "Stop the program after SECONDS of real time (0: no limit)")
       ->check(CLI::NonNegativeNumber);
+  CLI::Option* port = app.add_option(
+      "--port", opts.port,
+      "Serial port of the real robot: a number N (see man rb-run) or a device path; also used "
+      "by the program's rCommPort");
   app.add_flag("--real", opts.real,
-               "Drive a real robot on --port instead of the simulator (see man rb-run)");
-  app.add_option("--port", opts.port,
-                 "Serial port of the real robot: a number N (see man rb-run) or a device path; "
-                 "also used by the program's rCommPort");
+               "Drive a real robot on --port instead of the simulator (see man rb-run)")
+      ->needs(port);
   app.add_option("--baud", opts.baud, "Serial speed for the real robot (default 9600)")
       ->check(CLI::PositiveNumber);
   app.add_option("--robot-timeout", opts.robotTimeoutSeconds,
