@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <new>
 
 #include "builtins.h"
 #include "runtime_error.h"
@@ -14,6 +15,16 @@ namespace {
 constexpr int64_t kCheckInterval = 1 << 16;
 /// The largest array rb creates.
 constexpr uint64_t kMaxArrayElements = 64u << 20;
+/// The longest string `+` builds.
+constexpr size_t kMaxStringLength = 64u << 20;
+
+/// `+` with a string: the printed forms joined.
+void concatenate(Value& d, const Value& a, const Value& b) {
+  std::string left = formatValue(a), right = formatValue(b);
+  if (left.size() + right.size() > kMaxStringLength)
+    throw RuntimeError("string too long (more than " + std::to_string(kMaxStringLength) + " characters)");
+  d = Value::string(left + right);
+}
 
 std::string typeName(const Value& v) {
   switch (v.type()) {
@@ -175,6 +186,10 @@ RunResult Interpreter::run(const RunLimits& limits) {
     result.status = RunStatus::RuntimeError;
     SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
     result.error = Diagnostic{Severity::Error, loc, e.what()};
+  } catch (const std::bad_alloc&) {
+    result.status = RunStatus::RuntimeError;
+    SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
+    result.error = Diagnostic{Severity::Error, loc, "out of memory"};
   }
   result.steps = stepsDone_ + static_cast<uint64_t>(chunk_ - stepsLeft_);
   return result;
@@ -368,7 +383,7 @@ void Interpreter::execute(uint32_t& pcOut) {
         } else if (a.isNumeric() && b.isNumeric()) {
           d.setNum(a.asDouble() + b.asDouble());
         } else if ((a.isStr() || a.isNumeric()) && (b.isStr() || b.isNumeric())) {
-          d = Value::string(formatValue(a) + formatValue(b));
+          concatenate(d, a, b);
         } else {
           if (a.isUndef()) undefined(in.b);
           if (b.isUndef()) undefined(in.c);
