@@ -229,6 +229,7 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
   int cw = font.width() * scale, ch = font.height() * scale;
   int penX = x;
   for (unsigned char chr : s) {
+    if (penX >= kWidth) break;  // the rest of the text is off the screen
     if (style.background)
       for (int yy = 0; yy < ch; ++yy) span(y + yy, penX, penX + cw - 1, *style.background);
     for (int gy = 0; gy < font.height(); ++gy) {

@@ -200,8 +200,8 @@ def case_port_missing_program(tmp):
 
 def case_real_without_port(tmp):
     code, _, err, _ = rb("run", "--real", "square.bas")
-    expect(code in (64, 74), f"exit {code}", err)
-    expect("--real needs --port" in err, "message", err)
+    expect(code == 64, f"exit {code}", err)
+    expect("--real requires --port" in err, "message", err)
 
 
 def case_busy_then_released(tmp):
