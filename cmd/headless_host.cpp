@@ -11,8 +11,11 @@ constexpr double kClockReadMs = 1.0;
 constexpr size_t kFlushAt = 1 << 16;
 }  // namespace
 
-HeadlessHost::HeadlessHost(std::FILE* out, std::istream& in)
-    : out_(out), in_(in), start_(std::chrono::steady_clock::now()) {}
+HeadlessHost::HeadlessHost(std::FILE* out, std::istream& in, InputScript script)
+    : out_(out),
+      in_(in),
+      script_(std::move(script), virtualMs_),
+      start_(std::chrono::steady_clock::now()) {}
 
 HeadlessHost::~HeadlessHost() { flush(); }
 
@@ -35,6 +38,7 @@ void HeadlessHost::flush() {
 
 std::optional<std::string> HeadlessHost::inputLine(std::string_view prompt) {
   output(prompt);
+  if (script_.given()) return script_.inputLine("input");
   flush();
   std::string line;
   if (!std::getline(in_, line)) return std::nullopt;

@@ -1,7 +1,8 @@
 #pragma once
 // The Host of a headless run: program output to a stream, `input` lines from a stream, and a
-// virtual clock that only moves when the program waits (delay, robot motion at rSpeed) or
-// reads timer(), so runs are fast and repeatable.
+// virtual clock that only moves when the program waits (delay, robot motion at rSpeed), reads
+// timer() or reads input, so runs are fast and repeatable. Keys, the mouse and dialog answers
+// come from scripted input (--events, --keys: core/input_script.h).
 
 #include <chrono>
 #include <cstdio>
@@ -9,13 +10,15 @@
 #include <istream>
 
 #include "host.h"
+#include "input_script.h"
 
 namespace rb::cli {
 
 class HeadlessHost : public Host {
  public:
   /// Program output goes to `out` (nullptr: discarded), `input` reads lines from `in`.
-  HeadlessHost(std::FILE* out, std::istream& in);
+  /// With a script given, `input` reads its lines from the script instead of `in`.
+  HeadlessHost(std::FILE* out, std::istream& in, InputScript script = {});
   ~HeadlessHost() override;
 
   void output(std::string_view text) override;
@@ -23,6 +26,14 @@ class HeadlessHost : public Host {
   double clockMs() override;
   void wait(double ms) override;
   double wallSeconds() override;
+  int64_t heldKey(std::string_view who) override { return script_.heldKey(who); }
+  int64_t waitKey(std::string_view who) override { return script_.waitKey(who); }
+  MouseState mouse(std::string_view who) override { return script_.mouse(who); }
+  MouseState waitClick(std::string_view who) override { return script_.waitClick(who); }
+  void updateControls(Controls& controls, std::string_view who) override {
+    script_.updateControls(controls, who);
+  }
+  void messageBox(std::string_view, std::string_view) override { script_.messageBox("MsgBox"); }
   void onLine(SourceLoc loc) override {
     if (lineHook) lineHook(loc);
   }
@@ -43,6 +54,7 @@ class HeadlessHost : public Host {
   std::istream& in_;
   std::string buffer_;
   double virtualMs_ = 0;
+  ScriptedInput script_;  ///< plays on virtualMs_
   std::chrono::steady_clock::time_point start_;
 };
 

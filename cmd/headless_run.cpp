@@ -4,9 +4,43 @@
 #include <random>
 
 #include "exit_codes.h"
+#include "files.h"
 #include "robot_port.h"
 
 namespace rb::cli {
+
+int loadInputScript(const char* command, const RunOptions& opts, InputScript& script) {
+  script = InputScript{};
+  bool events = !opts.eventsFile.empty(), keys = !opts.keys.empty();
+  if (!events && !keys) return exitcode::kOk;
+  script.given = true;
+  script.origin = events && keys ? "the --events script and --keys text"
+                  : events      ? "the --events script"
+                                : "the --keys text";
+  if (events) {
+    std::optional<std::string> text = readFile(opts.eventsFile);
+    if (!text) {
+      std::fprintf(stderr, "%s: cannot read events file '%s'\n", command, opts.eventsFile.c_str());
+      return exitcode::kNoInput;
+    }
+    script.eventsFile = opts.eventsFile;
+    try {
+      script.steps = parseEventScript(*text);
+    } catch (const ScriptError& e) {
+      std::fprintf(stderr, "%s: %s:%d: %s\n", command, opts.eventsFile.c_str(), e.line, e.what());
+      return exitcode::kUsage;
+    }
+  }
+  if (keys) {
+    try {
+      for (ScriptStep& s : parseKeyText(opts.keys)) script.steps.push_back(std::move(s));
+    } catch (const ScriptError& e) {
+      std::fprintf(stderr, "%s: --keys: %s\n", command, e.what());
+      return exitcode::kUsage;
+    }
+  }
+  return exitcode::kOk;
+}
 
 int runHeadless(const char* command, const RunOptions& opts, const CompileOptions& compile,
                 std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
@@ -19,8 +53,11 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   printDiagnostics(stderr, run.loaded.program->sources, run.loaded.diags, true);
   if (!run.loaded.compiled) return exitcode::kRejected;
 
+  InputScript script;
+  if (int code = loadInputScript(command, opts, script)) return code;
+
   run.seed = opts.seed ? *opts.seed : std::random_device{}();
-  run.host = std::make_unique<HeadlessHost>(programOutput, std::cin);
+  run.host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
   run.host->lineHook = std::move(onLine);
   run.host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
   run.machine = std::make_unique<Machine>(*run.host, run.seed);

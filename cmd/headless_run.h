@@ -23,6 +23,11 @@ struct HeadlessRun {
   bool ran = false;  ///< false when the program could not be loaded
 };
 
+/// Builds the scripted input that --events and --keys give (script.given is false when neither
+/// is). On a bad script, prints the problem prefixed by `command` and returns rb's exit code
+/// (66 for a missing file, 64 for a malformed script); returns 0 otherwise.
+int loadInputScript(const char* command, const RunOptions& opts, InputScript& script);
+
 /// Runs FILE headless. Program output goes to `programOutput` (nullptr: discarded). Load
 /// errors and the runtime error are printed on stderr prefixed by `command` ("rb render").
 /// Returns the exit code rb should end with.

@@ -50,6 +50,10 @@ void addRunCommand(CLI::App& app, int& exitCode) {
       ->required();
   addRunLimitOptions(*run, *opts);
   run->add_flag("--tui", opts->tui, "Show the arena live in the terminal (ncurses)");
+  run->add_option("--cells", opts->cells,
+                  "Cell mode of --tui: ascii, half (half blocks) or braille (default: the finest "
+                  "the terminal can show; F6 switches)")
+      ->check(CLI::IsMember({"ascii", "half", "braille"}));
   run->footer(
       "Exit status: 0 finished, 64 bad usage, 65 the program has errors (nothing ran), "
       "66 file not found, 70 runtime error or limit reached, 74 I/O error.");

@@ -24,8 +24,10 @@ struct RunOptions {
   // Scripted input for headless runs (--events FILE, --keys TEXT).
   std::string eventsFile;
   std::string keys;
-  // rb run only: the live terminal view.
+  // rb run only: the live terminal view and its cell mode (ascii, half or braille; empty: the
+  // best the terminal can show).
   bool tui = false;
+  std::string cells;
 };
 
 /// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.

@@ -5,6 +5,7 @@
 namespace rb {
 
 void Machine::print(std::string_view text, bool newline) {
+  ++prints_;
   std::string line(text);
   canvas_.print(line, newline);
   if (newline) line += '\n';
@@ -12,6 +13,7 @@ void Machine::print(std::string_view text, bool newline) {
 }
 
 std::string Machine::input(std::string_view prompt) {
+  ++prints_;  // the prompt and the typed line are printed too
   if (!prompt.empty()) canvas_.print(std::string(prompt), false);
   std::optional<std::string> line = host_.inputLine(prompt);
   if (!line) throw RuntimeError("input: no more input to read (end of input)");
@@ -26,6 +28,13 @@ void Machine::delay(double ms) {
 void Machine::robotStepped() {
   if (robotSpeed > 0) host_.wait(robotSpeed);
   host_.animate();
+}
+
+void Machine::printPrompt(std::string_view prompt) {
+  if (prompt.empty() || (prompt == lastPrompt_ && prints_ == promptPrintedAt_)) return;
+  print(prompt, false);
+  lastPrompt_ = prompt;
+  promptPrintedAt_ = prints_;
 }
 
 void Machine::useCommPort(int64_t port) {

@@ -10,6 +10,7 @@
 
 #include "canvas.h"
 #include "host.h"
+#include "input.h"
 #include "real_robot.h"
 #include "rng.h"
 #include "robot_sim.h"
@@ -83,12 +84,19 @@ class Machine {
   void delay(double ms);
   /// After each pixel or degree of robot motion: paces it at rSpeed and lets a live view draw.
   void robotStepped();
+  /// waitKey's prompt: printed like `print` without a line end, except when the same prompt is
+  /// still the last thing printed (a loop that waits for a held key would fill the screen).
+  void printPrompt(std::string_view prompt);
 
   double robotSpeed = 0;  ///< rSpeed: milliseconds per pixel or degree
 
   // flip on/off: while on, a live view shows the screen as it was at the last flip.
   bool flipMode = false;
   std::vector<Colour> flipped;  ///< the screen at the last flip
+
+  /// AddButton, AddEdit: the program's dialog controls. Live views draw them; they are never
+  /// drawn into the canvas, so the robot does not sense them.
+  Controls controls;
 
  private:
   Host& host_;
@@ -100,6 +108,9 @@ class Machine {
   std::unique_ptr<RealRobot> real_;
   SourceLoc location_;
   RobotObserver* observer_ = nullptr;
+  uint64_t prints_ = 0;           ///< print calls so far
+  uint64_t promptPrintedAt_ = 0;  ///< prints_ right after printPrompt last printed
+  std::string lastPrompt_;
 };
 
 }  // namespace rb

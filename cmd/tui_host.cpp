@@ -1,0 +1,634 @@
+#include "tui_host.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "robot_view.h"
+
+namespace rb::cli {
+
+namespace {
+
+using render::TermEvent;
+using render::TermStyle;
+
+constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // at most ~30 frames a second
+constexpr auto kTickInterval = std::chrono::milliseconds(8);    // how often hot hooks read keys
+/// Terminals report key presses, never releases: a key counts as held this long after its last
+/// press (auto-repeat presses keep a held key down), and always until a read has seen it.
+constexpr auto kKeyHold = std::chrono::milliseconds(150);
+/// Waits that start within this many run-clock milliseconds of the previous one's end continue
+/// its schedule, so the time between waits does not slow the animation down.
+constexpr double kPaceSlackMs = 50;
+constexpr size_t kMaxOutputLines = 1000;
+constexpr size_t kMaxTypedAhead = 8;
+constexpr double kMinFactor = 1.0 / 64, kMaxFactor = 64;
+
+// Control characters of the keys rb keeps (raw mode delivers them as keys).
+constexpr int64_t kCtrlB = 2, kCtrlC = 3, kCtrlD = 4, kCtrlF = 6, kCtrlP = 16, kCtrlQ = 17,
+                  kCtrlS = 19, kCtrlV = 22;
+
+bool printable(int64_t key) { return key >= 32 && key < 127; }
+
+const char* modeName(render::CellMode m) {
+  switch (m) {
+    case render::CellMode::Ascii: return "ascii";
+    case render::CellMode::HalfBlock: return "half";
+    case render::CellMode::Braille: return "braille";
+  }
+  return "?";
+}
+
+bool sameRobot(const render::RobotView& a, const render::RobotView& b) {
+  return a.visible == b.visible && a.x == b.x && a.y == b.y && a.heading == b.heading &&
+         a.radius == b.radius && a.colour == b.colour;
+}
+
+/// Resets a pointer-to-state when a blocking read ends, also by an exception (the user quit).
+class Waiting {
+ public:
+  Waiting(const char*& slot, const char* what) : slot_(slot) { slot_ = what; }
+  ~Waiting() { slot_ = nullptr; }
+  Waiting(const Waiting&) = delete;
+  Waiting& operator=(const Waiting&) = delete;
+
+ private:
+  const char*& slot_;
+};
+
+}  // namespace
+
+// ---- the run clock
+
+double TuiHost::RunClock::now() const {
+  if (!running_) return base_;
+  return base_ +
+         std::chrono::duration<double, std::milli>(Clock::now() - anchor_).count() * factor_;
+}
+
+void TuiHost::RunClock::setRunning(bool running) {
+  if (running == running_) return;
+  base_ = now();
+  anchor_ = Clock::now();
+  running_ = running;
+}
+
+void TuiHost::RunClock::setFactor(double factor) {
+  base_ = now();
+  anchor_ = Clock::now();
+  factor_ = factor;
+}
+
+// ---- Host
+
+TuiHost::TuiHost(render::CursesScreen& screen, std::string fileName, render::CellMode mode)
+    : screen_(screen), file_(std::move(fileName)), mode_(mode) {}
+
+void TuiHost::output(std::string_view text) { appendOutput(text); }
+
+void TuiHost::appendOutput(std::string_view text) {
+  for (char c : text) {
+    if (c == '\n') {
+      lines_.push_back(std::move(partial_));
+      partial_.clear();
+      if (lines_.size() > kMaxOutputLines) lines_.pop_front();
+    } else {
+      partial_ += c;
+    }
+  }
+}
+
+double TuiHost::clockMs() { return clock_.now(); }
+
+double TuiHost::wallSeconds() {
+  return std::chrono::duration<double>(Clock::now() - start_).count();
+}
+
+void TuiHost::wait(double ms) {
+  double now = clock_.now();
+  double target = now - paceTarget_ <= kPaceSlackMs ? paceTarget_ + ms : now + ms;
+  paceTarget_ = target;
+  for (;;) {
+    double left = target - clock_.now();
+    if (left <= 0) break;
+    if (paused_) {
+      pump(50);
+      continue;
+    }
+    // Reading the terminal with a timeout is the sleep, so keys work during long delays.
+    pump(static_cast<int>(std::min(left / clock_.factor(), 20.0)));
+  }
+}
+
+bool TuiHost::poll() {
+  try {
+    pump(0);
+  } catch (const TuiQuit&) {
+    return false;
+  }
+  return true;
+}
+
+void TuiHost::onLine(SourceLoc loc) {
+  loc_ = loc;
+  if (stepArmed_ || paused_) {
+    holdWhilePaused();
+    return;
+  }
+  if ((++lineCount_ & 255) == 0) tick();
+}
+
+void TuiHost::animate() {
+  if (stepArmed_ || paused_) {
+    holdWhilePaused();
+    return;
+  }
+  tick();
+}
+
+void TuiHost::holdWhilePaused() {
+  if (stepArmed_) {
+    stepArmed_ = false;
+    setPaused(true);
+  }
+  if (!paused_) return;
+  draw();
+  while (paused_) pump(50);
+}
+
+void TuiHost::tick() {
+  if (Clock::now() - lastTick_ >= kTickInterval) pump(0);
+}
+
+void TuiHost::pump(int waitMs) {
+  TermEvent e = screen_.read(waitMs);
+  // A bound per call, so that a flood of mouse reports cannot starve the program.
+  for (int budget = 64; e.kind != TermEvent::None && budget > 0; --budget) {
+    handle(e);
+    e = screen_.read(0);
+  }
+  if (e.kind != TermEvent::None) handle(e);
+  lastTick_ = Clock::now();
+  if (lastTick_ - lastFrame_ >= kFrameInterval) draw();
+  if (quit_) throw TuiQuit{};
+}
+
+int64_t TuiHost::currentKey() {
+  if (key_ == 0) return 0;
+  if (!keySeen_ || Clock::now() - keyAt_ < kKeyHold) {
+    keySeen_ = true;
+    return key_;
+  }
+  key_ = 0;
+  return 0;
+}
+
+void TuiHost::blockUntil(const char* state, const std::function<bool()>& done) {
+  if (!paused_ && done()) {
+    tick();
+    return;
+  }
+  Waiting waiting(waitingFor_, state);
+  draw();
+  // Paused, the program takes nothing: what arrives waits until the view resumes.
+  while (paused_ || !done()) pump(20);
+}
+
+int64_t TuiHost::heldKey(std::string_view) {
+  programKeys_ = true;
+  tick();
+  // A program that polls sees presses here: a later waitKey must not get them again.
+  typed_.clear();
+  return currentKey();
+}
+
+int64_t TuiHost::waitKey(std::string_view) {
+  programKeys_ = true;
+  // Each press (or auto-repeat of a held key) answers one waitKey, in the order typed.
+  blockUntil("waiting for a key", [this] { return !typed_.empty(); });
+  int64_t key = typed_.front();
+  typed_.pop_front();
+  return key;
+}
+
+MouseState TuiHost::mouse(std::string_view) {
+  tick();
+  MouseState s = mouse_;
+  s.buttons |= latched_;
+  latched_ = 0;
+  clicks_.clear();  // seen here: a later waitClick must not get them again
+  return s;
+}
+
+MouseState TuiHost::waitClick(std::string_view) {
+  blockUntil("waiting for a click", [this] { return !clicks_.empty(); });
+  MouseState click = clicks_.front();
+  clicks_.pop_front();
+  latched_ = 0;
+  return click;
+}
+
+void TuiHost::updateControls(Controls& controls, std::string_view) {
+  tick();
+  if (!pendingButton_.empty()) {
+    controls.pressed = std::move(pendingButton_);
+    pendingButton_.clear();
+  }
+}
+
+void TuiHost::messageBox(std::string_view text, std::string_view title) {
+  box_ = Box{std::string(title), std::string(text)};
+  boxAnswered_ = false;
+  try {
+    blockUntil("message box", [this] { return boxAnswered_; });
+  } catch (...) {
+    box_.reset();
+    throw;
+  }
+  box_.reset();
+}
+
+std::optional<std::string> TuiHost::inputLine(std::string_view prompt) {
+  programKeys_ = true;
+  inputActive_ = true;
+  inputDone_ = inputEof_ = false;
+  inputPrompt_ = prompt;
+  inputText_.clear();
+  try {
+    blockUntil("input", [this] { return inputDone_; });
+  } catch (...) {
+    inputActive_ = false;
+    throw;
+  }
+  inputActive_ = false;
+  appendOutput(inputPrompt_ + inputText_ + "\n");
+  if (inputEof_) return std::nullopt;
+  return inputText_;
+}
+
+void TuiHost::robotEvent(const RobotEvent& e) {
+  if (e.kind == RobotEvent::Sensor && e.command == "rRange" && e.value) lastRange_ = *e.value;
+}
+
+void TuiHost::showEnd(const RunResult& result, const std::string& error) {
+  if (result.status == RunStatus::Stopped) return;
+  ended_ = true;
+  paused_ = stepArmed_ = false;
+  clock_.setRunning(false);
+  box_.reset();
+  inputActive_ = false;
+  error_ = error;
+  switch (result.status) {
+    case RunStatus::Finished: endState_ = "finished"; break;
+    case RunStatus::RuntimeError: endState_ = "error"; break;
+    default: endState_ = "stopped (limit)"; break;
+  }
+  try {
+    blockUntil("", [this] { return endKey_; });
+  } catch (const TuiQuit&) {
+    // quitting ends the final screen too
+  }
+}
+
+// ---- keys and the mouse
+
+void TuiHost::handle(const TermEvent& e) {
+  switch (e.kind) {
+    case TermEvent::Resize:
+      needLayout_ = true;
+      lastFrame_ = {};  // draw at once
+      break;
+    case TermEvent::Key: handleKey(e.key); break;
+    case TermEvent::Mouse: handleMouse(e); break;
+    case TermEvent::None: break;
+  }
+}
+
+bool TuiHost::viewKey(int64_t key) {
+  if (key == keys::kF1 + 1 || key == kCtrlP) setPaused(!paused_);
+  else if (key == keys::kF1 + 2 || key == kCtrlS) step();
+  else if (key == keys::kF1 + 3 || key == kCtrlB) changeSpeed(0.5);
+  else if (key == keys::kF1 + 4 || key == kCtrlF) changeSpeed(2);
+  else if (key == keys::kF1 + 5 || key == kCtrlV) cycleMode();
+  else if (key == keys::kF1 + 9 || key == kCtrlQ || key == kCtrlC) quit_ = true;
+  else return false;
+  lastFrame_ = {};  // show the change at once
+  return true;
+}
+
+void TuiHost::handleKey(int64_t key) {
+  if (viewKey(key)) return;
+  if (ended_) {
+    endKey_ = true;
+    return;
+  }
+  if (box_) {
+    if (key == keys::kEnter || key == keys::kEsc || key == keys::kSpace) boxAnswered_ = true;
+    return;
+  }
+  if (inputActive_) {
+    if (key == keys::kEnter) inputDone_ = true;
+    else if (key == keys::kBackspace && !inputText_.empty()) inputText_.pop_back();
+    else if (key == kCtrlD && inputText_.empty()) inputDone_ = inputEof_ = true;
+    else if (printable(key)) inputText_ += static_cast<char>(key);
+    lastFrame_ = {};
+    return;
+  }
+  if (!focusedEdit_.empty() && machine_) {
+    if (EditBox* e = machine_->controls.edit(focusedEdit_)) {
+      if (key == keys::kEnter || key == keys::kTab || key == keys::kEsc) focusedEdit_.clear();
+      else if (key == keys::kBackspace && !e->text.empty()) e->text.pop_back();
+      else if (printable(key)) e->text += static_cast<char>(key);
+      lastFrame_ = {};
+      return;
+    }
+    focusedEdit_.clear();
+  }
+  if (!programKeys_) {
+    // Until the program reads the keyboard, single keys control the view too.
+    switch (key) {
+      case 'p':
+      case ' ':
+        setPaused(!paused_);
+        lastFrame_ = {};
+        return;
+      case 's': step(); return;
+      case '-': changeSpeed(0.5); return;
+      case '+':
+      case '=': changeSpeed(2); return;
+      case 'v': cycleMode(); return;
+      case 'q': quit_ = true; return;
+      default: break;
+    }
+  }
+  key_ = key;
+  keyAt_ = Clock::now();
+  keySeen_ = false;
+  typed_.push_back(key);
+  // Bounded, so that the auto-repeat of a key held while the program is busy does not run on
+  // long after the key is let go.
+  if (typed_.size() > kMaxTypedAhead) typed_.pop_front();
+}
+
+void TuiHost::handleMouse(const TermEvent& e) {
+  if (layout_.tooSmall || layout_.arena.width == 0) return;
+  bool inArena = layout_.arena.contains(e.col, e.row);
+  auto [x, y] = cellToPixel(layout_.arena, e.col, e.row);
+  if (box_) {
+    if (e.pressed & mouse::kLeft) boxAnswered_ = true;
+    return;
+  }
+  if (e.pressed && inArena && machine_) {
+    // Controls are hit where they are drawn: on their cells (the last added is on top).
+    const Controls& c = machine_->controls;
+    for (auto b = c.buttons.rbegin(); b != c.buttons.rend(); ++b) {
+      if (buttonCells(*b).contains(e.col, e.row)) {
+        pendingButton_ = b->name;
+        return;
+      }
+    }
+    for (auto ed = c.edits.rbegin(); ed != c.edits.rend(); ++ed) {
+      if (editCells(*ed).contains(e.col, e.row)) {
+        focusedEdit_ = ed->name;
+        return;
+      }
+    }
+    focusedEdit_.clear();
+  }
+  // Outside the arena the pointer stays at the nearest edge while a drag goes on.
+  if (inArena || mouse_.buttons) {
+    mouse_.x = x;
+    mouse_.y = y;
+  }
+  if (inArena && e.pressed) {
+    mouse_.buttons |= e.pressed;
+    latched_ |= e.pressed;
+    clicks_.push_back(mouse_);
+    if (clicks_.size() > kMaxTypedAhead) clicks_.pop_front();
+  }
+  mouse_.buttons &= ~e.released;
+}
+
+Rect TuiHost::buttonCells(const Button& b) const {
+  auto [col, row] = pixelToCell(layout_.arena, b.x, b.y);
+  return {col, row, static_cast<int>(b.name.size()) + 2, 1};
+}
+
+Rect TuiHost::editCells(const EditBox& e) const {
+  auto [col, row] = pixelToCell(layout_.arena, e.x, e.y);
+  return {col, row, std::max(4, e.width * layout_.arena.width / Canvas::kWidth), 1};
+}
+
+void TuiHost::setPaused(bool paused) {
+  if (ended_) return;
+  paused_ = paused;
+  if (!paused) stepArmed_ = false;
+  clock_.setRunning(!paused);
+}
+
+void TuiHost::step() {
+  if (ended_) return;
+  // Paused: run one statement or one robot step. Running: stop at the next one.
+  paused_ = false;
+  clock_.setRunning(true);
+  stepArmed_ = true;
+}
+
+void TuiHost::changeSpeed(double by) {
+  clock_.setFactor(std::clamp(clock_.factor() * by, kMinFactor, kMaxFactor));
+}
+
+void TuiHost::cycleMode() {
+  using render::CellMode;
+  CellMode order[] = {CellMode::Ascii, CellMode::HalfBlock, CellMode::Braille};
+  int at = 0;
+  for (int i = 0; i < 3; ++i)
+    if (order[i] == mode_) at = i;
+  for (int k = 1; k <= 3; ++k) {
+    CellMode m = order[(at + k) % 3];
+    bool ok =
+        m == CellMode::Ascii || (screen_.unicode() && (m == CellMode::Braille || screen_.colour()));
+    if (ok) {
+      mode_ = m;
+      return;
+    }
+  }
+}
+
+// ---- drawing
+
+std::string TuiHost::stateText() const {
+  if (ended_) return endState_;
+  if (waitingFor_ && *waitingFor_) return waitingFor_;
+  if (paused_) return "paused";
+  return "running";
+}
+
+void TuiHost::draw() {
+  lastFrame_ = Clock::now();
+  if (needLayout_) {
+    layout_ = layoutTui(screen_.cols(), screen_.rows());
+    needLayout_ = false;
+  }
+  screen_.beginFrame();
+  if (layout_.tooSmall) {
+    screen_.drawText(0, 0, "rb: the terminal is too small");
+    screen_.drawText(
+        0, 1, "(at least " + std::to_string(kMinCols) + " x " + std::to_string(kMinRows) + ")");
+    screen_.drawText(0, 2, "F10 quits");
+    screen_.present();
+    return;
+  }
+  TermStyle bar;
+  bar.reverse = true;
+  std::string title = " rb run " + file_ + "   " + stateText();
+  if (ended_) title += "   (press any key to exit)";
+  title.resize(static_cast<size_t>(layout_.title.width), ' ');
+  screen_.drawText(0, 0, title, bar);
+  screen_.drawBox(layout_.arenaBox.col, layout_.arenaBox.row, layout_.arenaBox.width,
+                  layout_.arenaBox.height, "arena 800x600");
+  if (machine_) {
+    drawArena();
+    drawOverlays();
+    drawStatus();
+  }
+  drawOutput();
+  screen_.present();
+}
+
+void TuiHost::drawArena() {
+  Machine& m = *machine_;
+  bool flipped = m.flipMode && !m.flipped.empty();
+  render::RobotView robot = render::robotView(m);
+  const Rect& a = layout_.arena;
+  bool stale = frame_.cols != a.width || frame_.rows != a.height || frameMode_ != mode_ ||
+               frameCanvasVersion_ != m.canvas().version() || flipped ||
+               !sameRobot(robot, frameRobot_);
+  if (stale) {
+    frame_ = render::renderArena(flipped ? m.flipped : m.canvas().pixels(), m.canvas().background(),
+                                 robot, {a.width, a.height, mode_});
+    frameCanvasVersion_ = m.canvas().version();
+    frameRobot_ = robot;
+    frameMode_ = mode_;
+  }
+  screen_.drawArena(frame_, a.col, a.row);
+}
+
+void TuiHost::drawOverlays() {
+  const Rect& a = layout_.arena;
+  // Text inside the arena, cut at its edges.
+  auto put = [&](int col, int row, std::string s, const TermStyle& style) {
+    if (row < a.row || row >= a.row + a.height) return;
+    if (col < a.col) {
+      if (static_cast<int>(s.size()) <= a.col - col) return;
+      s.erase(0, static_cast<size_t>(a.col - col));
+      col = a.col;
+    }
+    int room = a.col + a.width - col;
+    if (room <= 0) return;
+    if (static_cast<int>(s.size()) > room) s.resize(static_cast<size_t>(room));
+    screen_.drawText(col, row, s, style);
+  };
+  const Controls& controls = machine_->controls;
+  for (const Button& b : controls.buttons) {
+    Rect cells = buttonCells(b);
+    TermStyle s;
+    s.reverse = true;
+    s.bold = b.name == pendingButton_;
+    put(cells.col, cells.row, "[" + b.name + "]", s);
+  }
+  for (const EditBox& e : controls.edits) {
+    Rect cells = editCells(e);
+    int col = cells.col, row = cells.row, width = cells.width;
+    std::string field = e.text;
+    if (static_cast<int>(field.size()) > width - 2)
+      field = field.substr(field.size() - static_cast<size_t>(width - 2));
+    field.resize(static_cast<size_t>(width - 2), '_');
+    TermStyle s;
+    s.reverse = e.name == focusedEdit_;
+    put(col, row, "[" + field + "]", s);
+  }
+  TermStyle banner;
+  banner.reverse = true;
+  banner.bold = true;
+  if (paused_ && !ended_) put(a.col + 1, a.row, " PAUSED  F2 resume  F3 step ", banner);
+  if (box_) {
+    int width = std::min(
+        a.width - 2,
+        std::max<int>(24, static_cast<int>(std::max(box_->text.size(), box_->title.size())) + 6));
+    int inner = std::max(width - 4, 1);
+    std::vector<std::string> lines;
+    for (size_t i = 0; i < box_->text.size() || lines.empty(); i += static_cast<size_t>(inner))
+      lines.push_back(box_->text.substr(i, static_cast<size_t>(inner)));
+    if (static_cast<int>(lines.size()) > a.height - 6)
+      lines.resize(static_cast<size_t>(std::max(1, a.height - 6)));
+    int height = static_cast<int>(lines.size()) + 4;
+    int col = a.col + (a.width - width) / 2, row = a.row + (a.height - height) / 2;
+    TermStyle plain;
+    for (int r = 0; r < height; ++r)
+      put(col, row + r, std::string(static_cast<size_t>(width), ' '), plain);
+    screen_.drawBox(col, row, width, height, box_->title);
+    for (size_t i = 0; i < lines.size(); ++i)
+      put(col + 2, row + 1 + static_cast<int>(i), lines[i], plain);
+    put(col + (width - 6) / 2, row + height - 2, "[ OK ]", banner);
+  }
+}
+
+void TuiHost::drawStatus() {
+  Machine& m = *machine_;
+  TuiStatus s;
+  s.file = file_;
+  s.line = static_cast<int>(loc_.line);
+  s.state = stateText();
+  s.speedFactor = clock_.factor();
+  s.rSpeed = m.robotSpeed;
+  s.located = m.robot().located() || m.realRobot();
+  const Pose& pose = m.robotPose();
+  s.x = pose.pos.x();
+  s.y = pose.pos.y();
+  s.heading = pose.heading;
+  s.pen = m.robotPenDown();
+  // Read straight from the simulator: no trace event, no random number, no robot command.
+  if (m.robot().located() && !m.realRobot()) {
+    s.bumper = m.robot().bumper();
+    s.feel = m.robot().feel();
+  }
+  s.range = lastRange_;
+  s.mode = modeName(mode_);
+  s.programKeys = programKeys_;
+  const Rect& r = layout_.status;
+  std::vector<std::string> lines =
+      r.height >= 8 ? statusLines(s, r.width - 1) : compactStatusLines(s, r.width);
+  for (int i = 0; i < r.height && i < static_cast<int>(lines.size()); ++i)
+    screen_.drawText(r.col, r.row + i, lines[static_cast<size_t>(i)]);
+}
+
+void TuiHost::drawOutput() {
+  const Rect& r = layout_.output;
+  if (r.height < 1) return;
+  std::string header = "-- output ";
+  header.resize(static_cast<size_t>(r.width), '-');
+  TermStyle dim;
+  dim.dim = true;
+  screen_.drawText(r.col, r.row, header, dim);
+  std::vector<std::string> shown;
+  for (const std::string& l : lines_) shown.push_back(l);
+  if (inputActive_) shown.push_back(partial_ + inputPrompt_ + inputText_ + "_");
+  else if (!partial_.empty()) shown.push_back(partial_);
+  int room = r.height - 1;
+  TermStyle errorStyle;
+  if (!error_.empty()) {
+    --room;
+    errorStyle.bold = true;
+    errorStyle.colour = screen_.colour();
+    errorStyle.fg = 0xFF5555;
+    errorStyle.bg = 0x000000;
+    errorStyle.reverse = !screen_.colour();
+    screen_.drawText(r.col, r.row + r.height - 1, error_, errorStyle);
+  }
+  int first = std::max(0, static_cast<int>(shown.size()) - room);
+  for (int i = 0; i < room && first + i < static_cast<int>(shown.size()); ++i)
+    screen_.drawText(r.col, r.row + 1 + i, shown[static_cast<size_t>(first + i)]);
+}
+
+}  // namespace rb::cli

@@ -1,0 +1,170 @@
+#include "tui_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <string_view>
+
+#include "canvas.h"
+
+namespace rb::cli {
+
+namespace {
+
+/// A terminal cell is about twice as tall as it is wide, so the 4:3 screen needs 8/3 as many
+/// columns as rows (in every cell mode: half blocks and braille split cells into square dots).
+constexpr double kColsPerRow = 8.0 / 3.0;
+constexpr int kPanelWidth = 28;
+constexpr int kMinArenaCols = 40;
+constexpr int kOutputMinLines = 3;
+
+std::string fixed1(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", v);
+  std::string s = buf;
+  return s == "-0.0" ? "0.0" : s;
+}
+
+/// A whole number plainly, anything else with one decimal.
+std::string number(double v) {
+  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+  return fixed1(v);
+}
+
+/// Joins pieces by appending: GCC 12 warns falsely (-Wrestrict) about some `"a" + string` sums.
+std::string join(std::initializer_list<std::string_view> parts) {
+  std::string s;
+  for (std::string_view p : parts) s.append(p);
+  return s;
+}
+
+std::string bitsText(int bits, const int* values, const char* const* names, int n) {
+  std::string s = std::to_string(bits);
+  bool first = true;
+  for (int i = 0; i < n; ++i) {
+    if (!(bits & values[i])) continue;
+    s.push_back(first ? ' ' : '+');
+    s.append(names[i]);
+    first = false;
+  }
+  return s;
+}
+
+}  // namespace
+
+TuiLayout layoutTui(int cols, int rows) {
+  TuiLayout l;
+  if (cols < kMinCols || rows < kMinRows) {
+    l.tooSmall = true;
+    return l;
+  }
+  l.title = {0, 0, cols, 1};
+  bool side = cols - kPanelWidth - 2 >= kMinArenaCols;
+  int statusBelow = side ? 0 : 4;
+  int innerW = cols - 2 - (side ? kPanelWidth : 0);
+  int innerHMax = rows - 1 - 2 - (1 + kOutputMinLines) - statusBelow;
+  int arenaRows = std::min(innerHMax, static_cast<int>(innerW / kColsPerRow));
+  arenaRows = std::max(arenaRows, 3);
+  int arenaCols = std::min(innerW, static_cast<int>(std::lround(arenaRows * kColsPerRow)));
+  l.arenaBox = {0, 1, arenaCols + 2, arenaRows + 2};
+  l.arena = {1, 2, arenaCols, arenaRows};
+  int below = l.arenaBox.row + l.arenaBox.height;
+  if (side) {
+    int panelCol = l.arenaBox.width + 1;
+    l.status = {panelCol, 1, cols - panelCol, l.arenaBox.height};
+  } else {
+    l.status = {0, below, cols, statusBelow};
+    below += statusBelow;
+  }
+  l.output = {0, below, cols, rows - below};
+  return l;
+}
+
+std::pair<int, int> cellToPixel(const Rect& arena, int col, int row) {
+  double x = (col - arena.col + 0.5) * Canvas::kWidth / arena.width;
+  double y = (row - arena.row + 0.5) * Canvas::kHeight / arena.height;
+  int px = std::clamp(static_cast<int>(std::floor(x)), 0, Canvas::kWidth - 1);
+  int py = std::clamp(static_cast<int>(std::floor(y)), 0, Canvas::kHeight - 1);
+  return {px, py};
+}
+
+std::pair<int, int> pixelToCell(const Rect& arena, int x, int y) {
+  int c = static_cast<int>(std::floor(static_cast<double>(x) * arena.width / Canvas::kWidth));
+  int r = static_cast<int>(std::floor(static_cast<double>(y) * arena.height / Canvas::kHeight));
+  return {arena.col + c, arena.row + r};
+}
+
+std::string bumperText(int bits) {
+  static const int kValues[] = {1, 2, 4, 8};
+  static const char* const kNames[] = {"rear", "right", "front", "left"};
+  return bitsText(bits, kValues, kNames, 4);
+}
+
+std::string feelText(int bits) {
+  static const int kValues[] = {1, 2, 4, 8, 16};
+  static const char* const kNames[] = {"R", "FR", "F", "FL", "L"};
+  return bitsText(bits, kValues, kNames, 5);
+}
+
+std::string speedText(double factor) {
+  if (factor >= 1) return join({"x", std::to_string(std::lround(factor))});
+  return join({"x1/", std::to_string(std::lround(1 / factor))});
+}
+
+std::vector<std::string> statusLines(const TuiStatus& s, int width) {
+  std::vector<std::string> out;
+  auto row = [&](const std::string& label, const std::string& value) {
+    std::string line = label;
+    line.resize(8, ' ');
+    line += value;
+    out.push_back(line);
+  };
+  row("file", s.file);
+  row("line", s.line > 0 ? std::to_string(s.line) : "-");
+  row("state", s.state);
+  std::string speed = speedText(s.speedFactor);
+  if (s.rSpeed > 0) speed += join({"  rSpeed ", number(s.rSpeed)});
+  row("speed", speed);
+  out.emplace_back();
+  if (s.located) {
+    row("x", fixed1(s.x));
+    row("y", fixed1(s.y));
+    row("heading", fixed1(s.heading));
+    row("pen", s.pen ? "down" : "up");
+    row("bumper", bumperText(s.bumper));
+    row("feel", feelText(s.feel));
+    row("range", s.range ? number(*s.range) : "-");
+  } else {
+    row("robot", "not placed");
+  }
+  out.emplace_back();
+  row("view", s.mode);
+  out.push_back("F2 pause  F3 step");
+  out.push_back("F4/F5 slower/faster");
+  out.push_back("F6 view   F10 quit");
+  if (!s.programKeys) out.push_back("(or p, s, -, +, v, q)");
+  for (std::string& line : out)
+    if (static_cast<int>(line.size()) > width) line.resize(static_cast<size_t>(std::max(width, 0)));
+  return out;
+}
+
+std::vector<std::string> compactStatusLines(const TuiStatus& s, int width) {
+  std::vector<std::string> out;
+  out.push_back(join({"line ", s.line > 0 ? std::to_string(s.line) : "-", "  ", s.state, "  ",
+                      speedText(s.speedFactor), "  view ", s.mode}));
+  if (s.located) {
+    out.push_back(join({"x ", fixed1(s.x), "  y ", fixed1(s.y), "  heading ", fixed1(s.heading),
+                        "  pen ", s.pen ? "down" : "up"}));
+    out.push_back(join({"bumper ", bumperText(s.bumper), "  feel ", feelText(s.feel), "  range ",
+                        s.range ? number(*s.range) : "-"}));
+  } else {
+    out.push_back("robot not placed");
+  }
+  out.push_back("F2 pause F3 step F4/F5 speed F6 view F10 quit");
+  for (std::string& line : out)
+    if (static_cast<int>(line.size()) > width) line.resize(static_cast<size_t>(std::max(width, 0)));
+  return out;
+}
+
+}  // namespace rb::cli

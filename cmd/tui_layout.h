@@ -1,0 +1,67 @@
+#pragma once
+// Where the parts of `rb run --tui` go on a terminal of a given size, how arena cells map to
+// screen pixels and back, and the text of the status panel. Pure functions, tested without a
+// terminal; cmd/tui_host.cpp draws with them.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rb::cli {
+
+struct Rect {
+  int col = 0, row = 0, width = 0, height = 0;
+  bool contains(int c, int r) const {
+    return c >= col && r >= row && c < col + width && r < row + height;
+  }
+};
+
+struct TuiLayout {
+  bool tooSmall = false;  ///< below kMinCols x kMinRows: only a message fits
+  Rect title;             ///< the top line
+  Rect arenaBox;          ///< the arena with its border
+  Rect arena;             ///< the arena's cells: 800 x 600 pixels scaled to fit, about 4:3
+  Rect status;            ///< the status panel: beside the arena, or under it when narrow
+  Rect output;            ///< what the program prints (its header line included)
+};
+
+constexpr int kMinCols = 40;
+constexpr int kMinRows = 12;
+
+/// Lays out a terminal of cols x rows cells.
+TuiLayout layoutTui(int cols, int rows);
+
+/// The screen pixel shown at the centre of an arena cell (terminal coordinates), clamped to the
+/// 800 x 600 screen when the cell is outside the arena.
+std::pair<int, int> cellToPixel(const Rect& arena, int col, int row);
+/// The terminal cell that shows a screen pixel.
+std::pair<int, int> pixelToCell(const Rect& arena, int x, int y);
+
+/// What the status panel shows.
+struct TuiStatus {
+  std::string file;
+  int line = 0;            ///< 0: not started
+  std::string state;       ///< "running", "paused", "waiting for a key", ...
+  double speedFactor = 1;  ///< the view's speed-up (F4/F5)
+  double rSpeed = 0;       ///< the program's rSpeed
+  bool located = false;
+  double x = 0, y = 0, heading = 0;
+  bool pen = false;
+  int bumper = 0, feel = 0;
+  std::optional<double> range;  ///< the last rRange reading
+  std::string mode;             ///< "ascii", "half", "braille"
+  bool programKeys = false;     ///< the program reads the keyboard: single-letter shortcuts are off
+};
+
+/// The status panel's lines, each at most `width` characters.
+std::vector<std::string> statusLines(const TuiStatus& s, int width);
+/// The same in three lines, for a terminal too narrow for the panel beside the arena.
+std::vector<std::string> compactStatusLines(const TuiStatus& s, int width);
+/// The bits of rBumper() or rFeel() in words: "4 front", "0", "6 right+front".
+std::string bumperText(int bits);
+std::string feelText(int bits);
+/// "x1", "x4", "x1/2".
+std::string speedText(double factor);
+
+}  // namespace rb::cli

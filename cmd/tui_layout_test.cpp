@@ -1,0 +1,102 @@
+#include "tui_layout.h"
+
+#include <catch2/catch.hpp>
+
+using namespace rb::cli;
+
+TEST_CASE("tui layout: the arena beside the status panel", "[tui]") {
+  TuiLayout l = layoutTui(100, 30);
+  REQUIRE_FALSE(l.tooSmall);
+  CHECK(l.title.row == 0);
+  CHECK(l.arena.col == 1);
+  CHECK(l.arena.row == 2);
+  // About 4:3 on cells twice as tall as wide.
+  CHECK(l.arena.width == 61);
+  CHECK(l.arena.height == 23);
+  CHECK(l.status.col == l.arenaBox.width + 1);
+  CHECK(l.status.col + l.status.width == 100);
+  CHECK(l.output.row == l.arenaBox.row + l.arenaBox.height);
+  CHECK(l.output.row + l.output.height == 30);
+  CHECK(l.output.height >= 4);
+}
+
+TEST_CASE("tui layout: wide terminals are limited by their height", "[tui]") {
+  TuiLayout l = layoutTui(240, 50);
+  CHECK(l.arena.height == 50 - 1 - 2 - 4);
+  CHECK(l.arena.width == 115);
+}
+
+TEST_CASE("tui layout: narrow terminals put the status under the arena", "[tui]") {
+  TuiLayout l = layoutTui(60, 30);
+  REQUIRE_FALSE(l.tooSmall);
+  CHECK(l.status.col == 0);
+  CHECK(l.status.row == l.arenaBox.row + l.arenaBox.height);
+  CHECK(l.status.height == 4);
+  CHECK(l.arena.width <= 58);
+  CHECK(l.output.row == l.status.row + l.status.height);
+  CHECK(layoutTui(39, 30).tooSmall);
+  CHECK(layoutTui(80, 11).tooSmall);
+}
+
+TEST_CASE("tui layout: cells and pixels", "[tui]") {
+  Rect arena{1, 2, 80, 30};
+  CHECK(cellToPixel(arena, 1, 2) == std::pair{5, 10});
+  CHECK(cellToPixel(arena, 80, 31) == std::pair{795, 590});
+  // Outside the arena: clamped to the screen.
+  CHECK(cellToPixel(arena, 0, 0) == std::pair{0, 0});
+  CHECK(cellToPixel(arena, 200, 100) == std::pair{799, 599});
+  CHECK(pixelToCell(arena, 0, 0) == std::pair{1, 2});
+  CHECK(pixelToCell(arena, 799, 599) == std::pair{80, 31});
+  for (int c = 1; c <= 80; c += 7)
+    for (int r = 2; r <= 31; r += 5) {
+      auto [x, y] = cellToPixel(arena, c, r);
+      CHECK(pixelToCell(arena, x, y) == std::pair{c, r});
+    }
+}
+
+TEST_CASE("tui status panel", "[tui]") {
+  TuiStatus s;
+  s.file = "square.bas";
+  s.line = 7;
+  s.state = "paused";
+  s.speedFactor = 0.25;
+  s.rSpeed = 5;
+  s.located = true;
+  s.x = 400;
+  s.y = 180.25;
+  s.heading = -0.01;
+  s.pen = true;
+  s.bumper = 6;
+  s.feel = 12;
+  s.range = 37;
+  s.mode = "half";
+  auto lines = statusLines(s, 26);
+  auto has = [&](const std::string& text) {
+    for (const auto& l : lines)
+      if (l == text) return true;
+    return false;
+  };
+  CHECK(has("file    square.bas"));
+  CHECK(has("line    7"));
+  CHECK(has("state   paused"));
+  CHECK(has("speed   x1/4  rSpeed 5"));
+  CHECK(has("y       180.2"));
+  CHECK(has("heading 0.0"));
+  CHECK(has("pen     down"));
+  CHECK(has("bumper  6 right+front"));
+  CHECK(has("feel    12 F+FL"));
+  CHECK(has("range   37"));
+  CHECK(has("view    half"));
+  CHECK(has("(or p, s, -, +, v, q)"));
+  for (const auto& l : lines) CHECK(l.size() <= 26);
+  s.programKeys = true;
+  s.located = false;
+  lines = statusLines(s, 26);
+  CHECK(has("robot   not placed"));
+  CHECK_FALSE(has("(or p, s, -, +, v, q)"));
+  auto compact = compactStatusLines(s, 200);
+  CHECK(compact[0] == "line 7  paused  x1/4  view half");
+  CHECK(compact[1] == "robot not placed");
+  CHECK(speedText(8) == "x8");
+  CHECK(bumperText(0) == "0");
+}

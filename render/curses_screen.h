@@ -1,0 +1,79 @@
+#pragma once
+// The terminal, through ncurses: the one place rb talks to curses (this header does not include
+// it). It opens and restores the terminal, turns key and mouse reports into events with rb's key
+// codes (core/input.h), and draws text and arena frames in the best colours the terminal has.
+// The live view's logic (cmd/tui_*) uses only this interface.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "arena_view.h"
+
+namespace rb::render {
+
+/// Something the terminal reported.
+struct TermEvent {
+  enum Kind { None, Key, Mouse, Resize } kind = None;
+  /// Key: rb's key code (core/input.h); Ctrl+letter reads as its control character (1..26).
+  int64_t key = 0;
+  // Mouse: the cell under the pointer and what changed.
+  int col = 0, row = 0;
+  int pressed = 0;   ///< buttons that went down (1 left, 2 right, 4 middle)
+  int released = 0;  ///< buttons that went up
+};
+
+/// How text is drawn: the terminal's default colours unless `colour` is set.
+struct TermStyle {
+  bool colour = false;
+  uint32_t fg = 0xFFFFFF, bg = 0x000000;
+  bool bold = false, reverse = false, underline = false, dim = false;
+};
+
+class CursesScreen {
+ public:
+  /// Opens the terminal for the live view; nullptr with `error` set when there is none.
+  static std::unique_ptr<CursesScreen> open(std::string& error);
+  /// Restores the terminal.
+  ~CursesScreen();
+  CursesScreen(const CursesScreen&) = delete;
+  CursesScreen& operator=(const CursesScreen&) = delete;
+
+  int cols() const;
+  int rows() const;
+  /// The terminal shows colours.
+  bool colour() const { return colours_ > 0; }
+  /// Characters beyond ASCII (half blocks, braille) show as one cell each: a UTF-8 locale and an
+  /// ncurses built for wide characters.
+  bool unicode() const { return unicode_; }
+
+  /// The next event, waiting up to `timeoutMs` (0: do not wait).
+  TermEvent read(int timeoutMs);
+
+  /// Starts a new picture (nothing shows until present()).
+  void beginFrame();
+  /// Text at a cell, cut at the right edge of the terminal.
+  void drawText(int col, int row, std::string_view s, const TermStyle& style = {});
+  /// A frame's cells with their top-left corner at (col, row).
+  void drawArena(const ArenaFrame& frame, int col, int row);
+  /// A box outline with an optional title in its top edge.
+  void drawBox(int col, int row, int width, int height, std::string_view title = {});
+  /// Shows the picture.
+  void present();
+
+ private:
+  CursesScreen() = default;
+  /// The colour pair for a foreground and background, allocated on first use.
+  int pair(uint32_t fg, uint32_t bg);
+  int terminalColour(uint32_t rgb) const;
+
+  void* screen_ = nullptr;  ///< the curses SCREEN
+  int colours_ = 0;         ///< 0 (none), 8, 16 or 256
+  int maxPairs_ = 0;
+  bool unicode_ = false;
+  struct PairCache;
+  std::unique_ptr<PairCache> pairs_;
+};
+
+}  // namespace rb::render

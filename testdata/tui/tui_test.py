@@ -1,0 +1,290 @@
+#!/usr/bin/env python3
+"""End-to-end tests of `rb run --tui` in tmux: start the live view in a detached tmux session,
+type keys and click with send-keys, read the screen with capture-pane.
+
+Usage: tui_test.py --rb PATH/TO/rb TEST      (TEST: one of the names in TESTS below)
+Exit status 0 on success, 1 on failure, 77 (CTest's skip code) when tmux is missing.
+
+Each test polls the screen with a timeout instead of sleeping for fixed times, and runs its own
+tmux server (on a socket in its own temporary folder), so tests can run in parallel.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+COLS, ROWS = 100, 30
+
+
+class Failure(Exception):
+    pass
+
+
+class Session:
+    """One `rb run --tui` in its own tmux server."""
+
+    def __init__(self, rb, program, env=None, cols=COLS, rows=ROWS):
+        self.dir = tempfile.mkdtemp(prefix="rbtui-")
+        self.socket = os.path.join(self.dir, "tmux")  # removed with the folder
+        self.code_file = os.path.join(self.dir, "code")
+        self.err_file = os.path.join(self.dir, "stderr")
+        settings = {"TERM": "xterm-256color", "LC_ALL": "C"}  # C locale: the ASCII cell mode
+        settings.update(env or {})
+        envs = " ".join(f"{k}={v}" for k, v in settings.items())
+        command = (f"cd {HERE} && env {envs} {rb} run --tui {program} 2>{self.err_file}; "
+                   f"echo $? >{self.code_file}.tmp; mv {self.code_file}.tmp {self.code_file}")
+        self.tmux("new-session", "-d", "-s", "main", "-x", str(cols), "-y", str(rows), command)
+
+    def tmux(self, *args):
+        return subprocess.run(["tmux", "-S", self.socket, "-f", "/dev/null", *args],
+                              capture_output=True, text=True, check=False)
+
+    def screen(self):
+        return self.tmux("capture-pane", "-p", "-t", "main").stdout
+
+    def keys(self, *keys):
+        self.tmux("send-keys", "-t", "main", *keys)
+
+    def raw(self, text):
+        """Bytes as the terminal would send them (mouse reports)."""
+        self.tmux("send-keys", "-t", "main", "-l", text)
+
+    def click(self, col, row, button=0):
+        """An SGR mouse press and release at a 0-based cell (button 0 left, 2 right)."""
+        self.raw(f"\x1b[<{button};{col + 1};{row + 1}M")
+        self.raw(f"\x1b[<{button};{col + 1};{row + 1}m")
+
+    def wait_for(self, what, predicate, timeout=8.0):
+        deadline = time.monotonic() + timeout
+        text = ""
+        while time.monotonic() < deadline:
+            text = self.screen()
+            if predicate(text):
+                return text
+            if os.path.exists(self.code_file):
+                break
+            time.sleep(0.05)
+        raise Failure(f"timed out waiting for {what}; the screen was:\n{text}\nstderr:\n{self.stderr()}")
+
+    def wait_text(self, text, timeout=8.0):
+        return self.wait_for(repr(text), lambda s: text in s, timeout)
+
+    def exit_code(self, timeout=8.0):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if os.path.exists(self.code_file):
+                with open(self.code_file) as f:
+                    return int(f.read().strip())
+            time.sleep(0.05)
+        raise Failure(f"rb did not exit; the screen was:\n{self.screen()}")
+
+    def stderr(self):
+        try:
+            with open(self.err_file, encoding="latin-1") as f:
+                return f.read()
+        except OSError:
+            return ""
+
+    def close(self):
+        self.tmux("kill-server")
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+
+def status(screen, label):
+    """A value of the status panel ("x", "state", ...)."""
+    m = re.search(r"\| " + re.escape(label) + r" +(\S[^|]*?)\s*$", screen, re.M)
+    return m.group(1) if m else None
+
+
+def arena_lines(screen):
+    """The arena's rows: the lines between the box's top and bottom edges, inside the box."""
+    lines = screen.split("\n")
+    top = next(i for i, l in enumerate(lines) if l.startswith("+ arena"))
+    width = lines[top].index("+", 1)
+    out = []
+    for l in lines[top + 1:]:
+        if l.startswith("+"):
+            break
+        out.append(l[1:width])
+    return out
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+# ---- the tests
+
+def test_square(rb):
+    """The seed's square: the arena shows the robot and its pen trail; pause, step, resume, end."""
+    s = Session(rb, "square.bas")
+    try:
+        s.wait_for("the robot to move", lambda t: status(t, "y") not in (None, "300.0"))
+        s.keys("F2")
+        paused = s.wait_for("the pause", lambda t: status(t, "state") == "paused")
+        check("PAUSED" in paused, "no PAUSED banner:\n" + paused)
+        pose = (status(paused, "x"), status(paused, "y"), status(paused, "heading"))
+        time.sleep(0.3)
+        still = s.screen()
+        check((status(still, "x"), status(still, "y"), status(still, "heading")) == pose,
+              "the robot moved while paused:\n" + still)
+        # F3 runs one statement or one robot step (the first may end a wait already under way).
+        moved = None
+        for _ in range(4):
+            s.keys("F3")
+            time.sleep(0.15)
+            t = s.screen()
+            if (status(t, "x"), status(t, "y"), status(t, "heading")) != pose:
+                moved = t
+                break
+        check(moved is not None, "F3 did not step the robot:\n" + s.screen())
+        check(status(moved, "state") == "paused", "not paused after a step:\n" + moved)
+        s.keys("F2")
+        done = s.wait_for("the end", lambda t: status(t, "state") == "finished", timeout=15)
+        check("square done" in done, "the output pane lacks the program's output:\n" + done)
+        arena = arena_lines(done)
+        drawn = sum(1 for row in arena for c in row if c not in " ")
+        check(drawn > 25, f"the square's trail is missing ({drawn} drawn cells):\n" + done)
+        check(any("^" in row for row in arena), "no robot glyph (^) in the arena:\n" + done)
+        check(status(done, "pen") == "down", "the status panel does not show the pen:\n" + done)
+        s.keys("x")
+        code = s.exit_code()
+        check(code == 0, f"exit status {code}, stderr: {s.stderr()}")
+    finally:
+        s.close()
+
+
+def test_keyboard(rb):
+    """Keys go to a program that reads the keyboard; rb keeps its F-keys."""
+    s = Session(rb, "remote.bas")
+    try:
+        s.wait_for("waitKey", lambda t: status(t, "state") == "waiting for a key")
+        s.keys("w", "w", "d", "w")
+        t = s.wait_for("the robot at 420,260",
+                       lambda t: status(t, "x") == "420.0" and status(t, "y") == "260.0")
+        check(status(t, "heading") == "90.0", "heading after d:\n" + t)
+        s.keys("q")
+        t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        check("bye at 420,260" in t, "output pane:\n" + t)
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_mouse(rb):
+    """Clicks map terminal cells to screen pixels; a click on a button presses it."""
+    s = Session(rb, "clicks.bas")
+    try:
+        t = s.wait_for("the program", lambda t: status(t, "state") == "running")
+        check("[Stop]" in t, "the Stop button is not drawn:\n" + t)
+        # The arena's cells start at column 1, row 2; a 61 x 23 arena in a 100 x 30 terminal.
+        s.click(1 + 15, 2 + 5)
+        t = s.wait_text("left ")
+        m = re.search(r"left (\d+),(\d+)", t)
+        x, y = int(m.group(1)), int(m.group(2))
+        check(190 <= x <= 215 and 130 <= y <= 160, f"click mapped to {x},{y}")
+        stop = next(i for i, l in enumerate(t.split("\n")) if "[Stop]" in l)
+        col = t.split("\n")[stop].index("[Stop]") + 2
+        s.click(col, stop)
+        t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        check("end by 0 Stop" in t, "the button press did not end the program:\n" + t)
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_error(rb):
+    """A runtime error shows in the view, then on standard error in rb run's format (exit 70)."""
+    s = Session(rb, "crash.bas")
+    try:
+        t = s.wait_for("the error", lambda t: status(t, "state") == "error", timeout=10)
+        check("crash.bas:5:1: error: robot crashed into an obstacle" in t, "the view lacks the error:\n" + t)
+        s.keys("Enter")
+        code = s.exit_code()
+        check(code == 70, f"exit status {code}")
+        err = s.stderr()
+        check("crash.bas:5:1: error: robot crashed into an obstacle" in err, "stderr: " + err)
+    finally:
+        s.close()
+
+
+def test_quit(rb):
+    """F10 ends a running program at once (exit 0); so does q before the program reads keys."""
+    for key in ("F10", "q", "C-c"):
+        s = Session(rb, "square.bas")
+        try:
+            s.wait_for("the run", lambda t: status(t, "state") == "running")
+            s.keys(key)
+            check(s.exit_code() == 0, f"exit status after {key}")
+            check(s.stderr() == "", f"stderr after {key}: {s.stderr()}")
+        finally:
+            s.close()
+
+
+def test_resize(rb):
+    """Resizing the terminal lays the view out again."""
+    s = Session(rb, "remote.bas")
+    try:
+        t = s.wait_for("the view", lambda t: status(t, "state") == "waiting for a key")
+        before = len(t.split("\n")[1].rstrip())
+        s.tmux("resize-window", "-t", "main", "-x", "80", "-y", "24")
+        t = s.wait_for("a narrower arena", lambda t: t.split("\n")[1].startswith("+ arena")
+                       and len(t.split("\n")[1].rstrip()) < before)
+        check(status(t, "state") == "waiting for a key", "state after resize:\n" + t)
+        s.keys("F10")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_unicode(rb):
+    """In a UTF-8 locale the view may use half blocks or braille; it still shows the robot."""
+    s = Session(rb, "square.bas", env={"LC_ALL": "C.UTF-8"})
+    try:
+        t = s.wait_for("the end", lambda t: "finished" in t.split("\n")[0], timeout=15)
+        check(status(t.replace("\u2502", "|"), "pen") == "down", "status:\n" + t)
+        s.keys("F6")  # another cell mode
+        s.keys("x")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+TESTS = {
+    "square": test_square,
+    "keyboard": test_keyboard,
+    "mouse": test_mouse,
+    "error": test_error,
+    "quit": test_quit,
+    "resize": test_resize,
+    "unicode": test_unicode,
+}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--rb", required=True)
+    ap.add_argument("test", choices=sorted(TESTS))
+    args = ap.parse_args()
+    if not shutil.which("tmux"):
+        print("SKIP: tmux is not installed (scripts/setup.sh installs it)")
+        return 77
+    try:
+        TESTS[args.test](os.path.abspath(args.rb))
+    except Failure as e:
+        print(f"FAIL tui {args.test}: {e}")
+        return 1
+    print(f"PASS tui {args.test}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
