@@ -80,6 +80,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   if (!opts.seed && run.machine->rngUsed())
     std::fprintf(stderr, "%s: random seed %llu (repeat this run with --seed %llu)\n", command,
                  static_cast<unsigned long long>(run.seed), static_cast<unsigned long long>(run.seed));
+  if (run.result.status == RunStatus::StepLimit && !run.stepLimitIsError) return exitcode::kOk;
   if (run.result.error) {
     printDiagnostic(stderr, run.loaded.program->sources, *run.result.error);
     return exitcode::kRuntime;

@@ -21,6 +21,9 @@ struct HeadlessRun {
   RunResult result;
   uint64_t seed = 0;
   bool ran = false;  ///< false when the program could not be loaded
+  /// Set to false before runHeadless when reaching --max-steps is not a failure (rb render
+  /// uses it to choose the moment of its picture): then it is neither printed nor exit 70.
+  bool stepLimitIsError = true;
 };
 
 /// Builds the scripted input that --events and --keys give (script.given is false when neither

@@ -103,14 +103,13 @@ int executeRender(const RenderOptions& opts) {
   }
 
   HeadlessRun run;
+  // For a picture, stopping after N steps is a way to choose the moment, not a failure.
+  run.stepLimitIsError = false;
   int code = runHeadless("rb render", opts.run, CompileOptions{}, nullptr, nullptr, run);
   if (!run.ran) return code;  // nothing ran (load error, missing file): there is no picture
-  if (run.result.status == RunStatus::StepLimit) {
-    // For a picture, stopping after N steps is a way to choose the moment, not a failure.
+  if (run.result.status == RunStatus::StepLimit)
     std::fprintf(stderr, "rb render: stopped after %llu steps (--max-steps)\n",
                  static_cast<unsigned long long>(run.result.steps));
-    code = exitcode::kOk;
-  }
   // After a runtime error the picture of the screen at that moment is still written: it often
   // shows what went wrong (where the robot crashed).
   int written = writePicture(opts, format, *run.machine);

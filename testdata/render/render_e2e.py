@@ -142,6 +142,7 @@ def case_max_steps(env):
     r = env.run(prog, "-o", out, "--max-steps", "500")
     env.expect_exit(r, 0)
     expect("rb render: stopped after 500 steps (--max-steps)" in r.stderr, f"no note: {r.stderr}")
+    expect("error:" not in r.stderr, f"the step limit is not an error for render: {r.stderr}")
     expect("<circle" in open(out).read(), "no robot in the picture")
 
 
