@@ -11,6 +11,7 @@ packages=(
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks
   lua5.4 yabasic brandy hyperfine   # benchmark peers
+  python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)
 )
 
 missing=()
