@@ -297,6 +297,19 @@ int64_t Args::integer(int i) const {
   return static_cast<int64_t>(d);
 }
 
+uint32_t Args::colour(int i) const {
+  int64_t c = integer(i);
+  if (c < 0 || c > 0xFFFFFF) throw RuntimeError(describe(i) + " must be a colour: 0..15 or an RGB() value");
+  return static_cast<uint32_t>(c);
+}
+
+int Args::coordinate(int i) const {
+  double v = std::round(num(i));
+  if (v < -1e6) v = -1e6;
+  if (v > 1e6) v = 1e6;
+  return static_cast<int>(v);
+}
+
 const std::string& Args::str(int i) const {
   const Value& v = v_[i];
   if (v.isStr()) return v.str();

@@ -80,6 +80,11 @@ class Args {
   double num(int i) const;           ///< a number (int or double)
   int64_t integer(int i) const;      ///< a number truncated toward zero
   const std::string& str(int i) const;
+  /// A colour number: 0..15 (the palette) or an RGB() value up to 0xFFFFFF.
+  uint32_t colour(int i) const;
+  /// A screen coordinate or size in pixels: rounded to the nearest whole pixel and kept within
+  /// +-1,000,000 so that no drawing arithmetic can overflow.
+  int coordinate(int i) const;
   double numOr(int i, double dflt) const { return has(i) ? num(i) : dflt; }
   int64_t intOr(int i, int64_t dflt) const { return has(i) ? integer(i) : dflt; }
   /// "argument 2 (count) of left()": for messages.

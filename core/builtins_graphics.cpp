@@ -11,22 +11,7 @@ namespace {
 
 using K = BuiltinKind;
 
-Colour colourArg(Args& a, int i) {
-  int64_t c = a.integer(i);
-  if (c < 0 || c > 0xFFFFFF)
-    throw RuntimeError(a.describe(i) + " must be a colour: 0..15 or an RGB() value");
-  return static_cast<Colour>(c);
-}
-
-/// A coordinate: rounded to the nearest pixel, and kept within a range that cannot overflow.
-int coord(Args& a, int i) {
-  double v = std::round(a.num(i));
-  if (v < -1e6) v = -1e6;
-  if (v > 1e6) v = 1e6;
-  return static_cast<int>(v);
-}
-
-Point point(Args& a, int i) { return {coord(a, i), coord(a, i + 1)}; }
+Point point(Args& a, int i) { return {a.coordinate(i), a.coordinate(i + 1)}; }
 
 int widthArg(Args& a, int i) {
   int64_t w = a.integer(i);
@@ -36,20 +21,20 @@ int widthArg(Args& a, int i) {
 
 /// Outline (default: the current colour) and optional fill of the shape commands.
 std::pair<std::optional<Colour>, std::optional<Colour>> shapeColours(Machine& m, Args& a, int from) {
-  std::optional<Colour> outline = a.has(from) ? colourArg(a, from) : m.canvas().foreground;
+  std::optional<Colour> outline = a.has(from) ? a.colour(from) : m.canvas().foreground;
   std::optional<Colour> fill;
-  if (a.has(from + 1)) fill = colourArg(a, from + 1);
+  if (a.has(from + 1)) fill = a.colour(from + 1);
   return {outline, fill};
 }
 
 Value clearScr(Machine& m, Args& a) {
-  m.canvas().clear(a.has(0) ? colourArg(a, 0) : colours::kWhite);
+  m.canvas().clear(a.has(0) ? a.colour(0) : colours::kWhite);
   return {};
 }
 
 Value setColor(Machine& m, Args& a) {
-  m.canvas().foreground = colourArg(a, 0);
-  if (a.has(1)) m.canvas().textBackground = colourArg(a, 1);
+  m.canvas().foreground = a.colour(0);
+  if (a.has(1)) m.canvas().textBackground = a.colour(1);
   return {};
 }
 
@@ -67,7 +52,7 @@ Value lineTo(Machine& m, Args& a) {
   Canvas& c = m.canvas();
   Point to = point(a, 0);
   int w = a.has(2) ? widthArg(a, 2) : c.lineWidth;
-  Colour col = a.has(3) ? colourArg(a, 3) : c.foreground;
+  Colour col = a.has(3) ? a.colour(3) : c.foreground;
   c.line(c.pen, to, w, col);
   c.pen = to;
   return {};
@@ -77,7 +62,7 @@ Value line(Machine& m, Args& a) {
   Canvas& c = m.canvas();
   Point to = point(a, 2);
   int w = a.has(4) ? widthArg(a, 4) : c.lineWidth;
-  Colour col = a.has(5) ? colourArg(a, 5) : c.foreground;
+  Colour col = a.has(5) ? a.colour(5) : c.foreground;
   c.line(point(a, 0), to, w, col);
   c.pen = to;
   return {};
@@ -92,14 +77,14 @@ Value rectangle(Machine& m, Args& a) {
 Value rectangleWH(Machine& m, Args& a) {
   auto [outline, fill] = shapeColours(m, a, 4);
   Point p = point(a, 0);
-  m.canvas().rectangle(p, {p.x + coord(a, 2), p.y + coord(a, 3)}, m.canvas().lineWidth, outline, fill);
+  m.canvas().rectangle(p, {p.x + a.coordinate(2), p.y + a.coordinate(3)}, m.canvas().lineWidth, outline, fill);
   return {};
 }
 
 Value eRectangle(Machine& m, Args& a) {
   auto [outline, fill] = shapeColours(m, a, 4);
   Point c = point(a, 0);
-  int hw = coord(a, 2) / 2, hh = coord(a, 3) / 2;
+  int hw = a.coordinate(2) / 2, hh = a.coordinate(3) / 2;
   m.canvas().rectangle({c.x - hw, c.y - hh}, {c.x + hw, c.y + hh}, m.canvas().lineWidth, outline, fill);
   return {};
 }
@@ -113,14 +98,14 @@ Value circle(Machine& m, Args& a) {
 Value circleWH(Machine& m, Args& a) {
   auto [outline, fill] = shapeColours(m, a, 4);
   Point p = point(a, 0);
-  m.canvas().ellipse(p, {p.x + coord(a, 2), p.y + coord(a, 3)}, m.canvas().lineWidth, outline, fill);
+  m.canvas().ellipse(p, {p.x + a.coordinate(2), p.y + a.coordinate(3)}, m.canvas().lineWidth, outline, fill);
   return {};
 }
 
 Value eCircle(Machine& m, Args& a) {
   auto [outline, fill] = shapeColours(m, a, 3);
   Point c = point(a, 0);
-  int r = coord(a, 2);
+  int r = a.coordinate(2);
   m.canvas().ellipse({c.x - r, c.y - r}, {c.x + r, c.y + r}, m.canvas().lineWidth, outline, fill);
   return {};
 }
@@ -160,25 +145,25 @@ Value mPolygon(Machine& m, Args& a) {
 }
 
 Value setPixel(Machine& m, Args& a) {
-  m.canvas().setPixel(coord(a, 0), coord(a, 1), a.has(2) ? colourArg(a, 2) : m.canvas().foreground);
+  m.canvas().setPixel(a.coordinate(0), a.coordinate(1), a.has(2) ? a.colour(2) : m.canvas().foreground);
   return {};
 }
 
 Value pixelClr(Machine& m, Args& a) {
-  int x = coord(a, 0), y = coord(a, 1);
+  int x = a.coordinate(0), y = a.coordinate(1);
   if (!Canvas::inside(x, y)) return Value::integer(-1);
   return Value::integer(m.canvas().at(x, y));
 }
 
 Value floodFill(Machine& m, Args& a) {
-  m.canvas().floodFill(coord(a, 0), coord(a, 1), colourArg(a, 2));
+  m.canvas().floodFill(a.coordinate(0), a.coordinate(1), a.colour(2));
   return {};
 }
 
 Value xyString(Machine& m, Args& a) {
   TextStyle style;
   style.background = m.canvas().textBackground;
-  m.canvas().text(coord(a, 0), coord(a, 1), a.str(2), style, m.canvas().foreground);
+  m.canvas().text(a.coordinate(0), a.coordinate(1), a.str(2), style, m.canvas().foreground);
   return {};
 }
 
@@ -212,9 +197,9 @@ Value xyText(Machine& m, Args& a) {
     style.height = static_cast<int>(std::lround(pts * 4.0 / 3.0));
   }
   if (a.has(5)) parseStyle(a, 5, style);
-  Colour c = a.has(6) ? colourArg(a, 6) : m.canvas().foreground;
-  if (a.has(7)) style.background = colourArg(a, 7);
-  m.canvas().text(coord(a, 0), coord(a, 1), s, style, c);
+  Colour c = a.has(6) ? a.colour(6) : m.canvas().foreground;
+  if (a.has(7)) style.background = a.colour(7);
+  m.canvas().text(a.coordinate(0), a.coordinate(1), s, style, c);
   return {};
 }
 

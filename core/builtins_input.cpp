@@ -16,16 +16,8 @@ using K = BuiltinKind;
 /// The default width of a button: room for its name in an 8-pixel font plus a margin.
 int defaultButtonWidth(const std::string& name) { return static_cast<int>(name.size()) * 8 + 16; }
 
-/// A position or size in pixels, rounded and kept within a range that cannot overflow.
-int pixels(Args& a, int i) {
-  double v = std::round(a.num(i));
-  if (v < -1e6) v = -1e6;
-  if (v > 1e6) v = 1e6;
-  return static_cast<int>(v);
-}
-
 int positiveSize(Args& a, int i) {
-  int v = pixels(a, i);
+  int v = a.coordinate(i);
   if (v < 1) throw RuntimeError(a.describe(i) + " must be at least 1 pixel");
   return v;
 }
@@ -90,7 +82,7 @@ Value msgBox(Machine& m, Args& a) {
 
 Value addButton(Machine& m, Args& a) {
   const std::string& name = controlName(a, 0);
-  Button b{name, pixels(a, 1), pixels(a, 2),
+  Button b{name, a.coordinate(1), a.coordinate(2),
            a.has(3) ? positiveSize(a, 3) : defaultButtonWidth(name),
            a.has(4) ? positiveSize(a, 4) : Controls::kButtonHeight};
   // Adding a name again moves that button.
@@ -129,7 +121,7 @@ Value removeButton(Machine& m, Args& a) {
 
 Value addEdit(Machine& m, Args& a) {
   const std::string& name = controlName(a, 0);
-  EditBox e{name, pixels(a, 1), pixels(a, 2), positiveSize(a, 3), Controls::kEditHeight,
+  EditBox e{name, a.coordinate(1), a.coordinate(2), positiveSize(a, 3), Controls::kEditHeight,
             a.has(4) ? formatValue(a[4]) : std::string()};
   if (EditBox* old = m.controls.edit(name)) *old = e;
   else m.controls.edits.push_back(e);

@@ -13,13 +13,6 @@ namespace {
 
 using K = BuiltinKind;
 
-Colour colourArg(Args& a, int i) {
-  int64_t c = a.integer(i);
-  if (c < 0 || c > 0xFFFFFF)
-    throw RuntimeError(a.describe(i) + " must be a colour: 0..15 or an RGB() value");
-  return static_cast<Colour>(c);
-}
-
 std::string argText(Args& a) {
   std::string s;
   for (int i = 0; i < a.size(); ++i) {
@@ -38,7 +31,7 @@ Value sensor(Machine& m, Args& a, double v) {
 Value rLocate(Machine& m, Args& a) {
   double heading = a.numOr(2, 0);
   double radius = a.numOr(3, sim::kDefaultRadius);
-  Colour colour = a.has(4) ? colourArg(a, 4) : static_cast<Colour>(sim::kDefaultColour);
+  Colour colour = a.has(4) ? a.colour(4) : static_cast<Colour>(sim::kDefaultColour);
   if (RealRobot* r = m.realRobot()) r->locate(a.num(0), a.num(1), heading);
   else m.robot().locate(a.num(0), a.num(1), heading, radius, colour);
   m.emit(RobotEvent::Locate, "rLocate", argText(a));
@@ -89,7 +82,7 @@ Value rPen(Machine& m, Args& a) {
 
 Value rInvisible(Machine& m, Args& a) {
   std::vector<Colour> list;
-  for (int i = 0; i < a.size(); ++i) list.push_back(colourArg(a, i));
+  for (int i = 0; i < a.size(); ++i) list.push_back(a.colour(i));
   m.canvas().setInvisible(std::move(list));
   m.emit(RobotEvent::Setting, "rInvisible", argText(a));
   return {};
@@ -127,7 +120,7 @@ RB_SENSOR(rFeel, feel())
 RB_SENSOR(rSense, sense())
 RB_SENSOR(rRange, range(a.numOr(0, 0)))
 RB_SENSOR(rLook, look(a.numOr(0, 0)))
-RB_SENSOR(rBeacon, beacon(colourArg(a, 0)))
+RB_SENSOR(rBeacon, beacon(a.colour(0)))
 RB_SENSOR(rCompass, compass())
 RB_SENSOR(rGPSX, gpsX())
 RB_SENSOR(rGPSY, gpsY())
