@@ -769,8 +769,7 @@ class Compiler {
         }
       }
     }
-    Instr& in = p_.code[emit(Op::CallBuiltin, builtinIndex(&b), first, dest, loc, static_cast<uint16_t>(n))];
-    (void)in;
+    emit(Op::CallBuiltin, builtinIndex(&b), first, dest, loc, static_cast<uint16_t>(n));
     for (size_t i = 0; i < outputs.size(); ++i) {
       if (!outputs[i]) continue;
       store(*outputs[i], first + static_cast<uint32_t>(i));

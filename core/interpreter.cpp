@@ -89,12 +89,6 @@ std::string formatItems(const Value* items, uint32_t n, const std::vector<Tok>& 
 
 Interpreter::Interpreter(const Program& program, Machine& machine) : prog_(program), m_(machine) {}
 
-const Value* Interpreter::global(std::string_view name) const {
-  for (size_t i = 0; i < prog_.globalNames.size() && i < globals_.size(); ++i)
-    if (prog_.globalNames[i] == name) return &globals_[i];
-  return nullptr;
-}
-
 std::string Interpreter::slotName(uint32_t op) const {
   uint32_t idx = operandIndex(op);
   if (operandBase(op) == Base::Global && idx < prog_.globalNames.size()) return prog_.globalNames[idx];
@@ -227,7 +221,7 @@ bool Interpreter::checkpoint(uint32_t /*pc*/) {
 // refused (Clang) when such a local is alive. The loop itself keeps only trivial locals.
 #define RM(x) (bases_[(x) >> kBaseShift][(x) & kIndexMask])
 
-uint32_t Interpreter::doReturn(const Instr& in, uint32_t pc) {
+uint32_t Interpreter::doReturn(const Instr& in) {
   if (frames_.empty()) throw RuntimeError("return without gosub or call");
   Frame f = frames_.back();
   if (f.sub < 0) {
@@ -245,7 +239,6 @@ uint32_t Interpreter::doReturn(const Instr& in, uint32_t pc) {
   bases_[1] = stack_.data() + base_;
   if (f.dest != kNoOperand) {
     if (!in.c) {
-      (void)pc;
       throw ReturnAtCall{f.returnPc - 1, "sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
                                              "' returned no value (use return with a value)"};
     }
@@ -730,7 +723,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       CASE(Return) {
         const Instr& in = code[pc];
         COUNT_STEPS(in);
-        pc = doReturn(in, pc);
+        pc = doReturn(in);
         SYNC_FRAME();
         NEXT;
       }

@@ -39,9 +39,6 @@ class Interpreter {
   /// Runs the program from its first instruction.
   RunResult run(const RunLimits& limits);
 
-  /// The value of a global variable after (or during) a run; nullptr if there is none.
-  const Value* global(std::string_view name) const;
-
  private:
   struct Frame {
     uint32_t returnPc;
@@ -58,7 +55,7 @@ class Interpreter {
   };
 
   void execute(uint32_t& pc);
-  uint32_t doReturn(const Instr& in, uint32_t pc);
+  uint32_t doReturn(const Instr& in);
   void doCallBuiltin(const Instr& in, uint32_t pc);
   void doDim(const Instr& in);
   void doPrint(const Instr& in);

@@ -120,7 +120,6 @@ class Lexer {
     while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
   }
   void blockComment(std::vector<Token>& out) {
-    size_t start = pos_;
     SourceLoc startLoc = loc(pos_);
     pos_ += 2;
     bool sawNewline = false;
@@ -135,7 +134,6 @@ class Lexer {
     }
     if (pos_ >= text_.size()) {
       diags_.error(startLoc, "unterminated /* comment");
-      (void)start;
       return;
     }
     pos_ += 2;

@@ -28,10 +28,6 @@ void transform1d(const float* f, int n, float* out, int* v, float* z) {
       if (s <= z[k] && k > 0) --k;
       else break;
     }
-    if (s <= z[k]) {  // k == 0 and the new parabola wins everywhere
-      v[0] = q;
-      continue;
-    }
     ++k;
     v[k] = q;
     z[k] = s;
