@@ -257,49 +257,96 @@ void Canvas::scrollUp(int pixels) {
   record(DrawOp{DrawOp::Raster, {}});
 }
 
+namespace {
+
+/// Lays out `text` from index `from` the way print does, starting at `cursor` (in pixels):
+/// runs of characters wrap at the right edge, a tab moves to the next multiple of 8 columns,
+/// '\r' goes back to the left edge. Calls `run(start, length, x, y)` for each run of characters
+/// and `feed(nextIndex)` at each line end; `feed` moves the cursor down (and may scroll).
+template <typename Run, typename Feed>
+void layoutText(const std::string& text, size_t from, Point& cursor, int cw, Run run, Feed feed) {
+  size_t runStart = from, runLength = 0;
+  auto flush = [&] {
+    if (runLength == 0) return;
+    run(runStart, runLength, cursor.x, cursor.y);
+    cursor.x += static_cast<int>(runLength) * cw;
+    runLength = 0;
+  };
+  for (size_t i = from; i < text.size(); ++i) {
+    char c = text[i];
+    if (c == '\n') {
+      flush();
+      feed(i + 1);
+    } else if (c == '\t') {
+      flush();
+      int col = cursor.x / cw;
+      cursor.x = (col / kTabColumns + 1) * kTabColumns * cw;
+      if (cursor.x >= Canvas::kWidth) feed(i + 1);
+    } else if (c == '\r') {
+      flush();
+      cursor.x = 0;
+    } else {
+      if (cursor.x + (static_cast<int>(runLength) + 1) * cw > Canvas::kWidth) {
+        flush();
+        feed(i);
+      }
+      if (runLength == 0) runStart = i;
+      ++runLength;
+    }
+  }
+  flush();
+}
+
+}  // namespace
+
 void Canvas::print(const std::string& s, bool newline) {
   const BitmapFont& font = consoleFont();
   const int cw = font.width(), ch = font.height();
   TextStyle style;
   style.height = ch;
   style.background = textBackground;
-  auto lineFeed = [&] {
-    cursor_.x = 0;
-    cursor_.y += ch;
-    if (cursor_.y + ch > kHeight) {
-      scrollUp(cursor_.y + ch - kHeight);
-      cursor_.y = kHeight - ch;
+  std::string all = newline ? s + "\n" : s;
+
+  // A dry run first: where each line starts, and how far the screen would scroll.
+  std::vector<size_t> lineStarts;
+  long scroll = 0;
+  Point dry = cursor_;
+  layoutText(all, 0, dry, cw, [](size_t, size_t, int, int) {}, [&](size_t next) {
+    lineStarts.push_back(next);
+    dry.x = 0;
+    dry.y += ch;
+    if (dry.y + ch > kHeight) {
+      scroll += dry.y + ch - kHeight;
+      dry.y = kHeight - ch;
     }
-  };
-  std::string run;
-  auto flush = [&] {
-    if (run.empty()) return;
-    cursor_.x += text(cursor_.x, cursor_.y, run, style, foreground);
-    run.clear();
-  };
-  for (char c : s) {
-    if (c == '\n') {
-      flush();
-      lineFeed();
-    } else if (c == '\t') {
-      flush();
-      int col = cursor_.x / cw;
-      int next = (col / kTabColumns + 1) * kTabColumns;
-      cursor_.x = next * cw;
-      if (cursor_.x >= kWidth) lineFeed();
-    } else if (c == '\r') {
-      flush();
+  });
+
+  size_t from = 0;
+  if (scroll >= kHeight) {
+    // Everything on the screen now would scroll away, line by line (a huge print would take
+    // minutes): draw only the lines that stay visible, where scrolling would leave them.
+    scrollUp(kHeight);
+    long lines = static_cast<long>(lineStarts.size());
+    long first = std::max(0L, lines - (kHeight - 1) / ch);
+    cursor_.y = (kHeight - ch) - ch * static_cast<int>(lines - first);
+    if (first > 0) {
+      from = lineStarts[static_cast<size_t>(first - 1)];
       cursor_.x = 0;
-    } else {
-      if (cursor_.x + (static_cast<int>(run.size()) + 1) * cw > kWidth) {
-        flush();
-        lineFeed();
-      }
-      run += c;
     }
   }
-  flush();
-  if (newline) lineFeed();
+  layoutText(
+      all, from, cursor_, cw,
+      [&](size_t start, size_t length, int x, int y) {
+        text(x, y, all.substr(start, length), style, foreground);
+      },
+      [&](size_t) {
+        cursor_.x = 0;
+        cursor_.y += ch;
+        if (cursor_.y + ch > kHeight) {
+          scrollUp(cursor_.y + ch - kHeight);
+          cursor_.y = kHeight - ch;
+        }
+      });
 }
 
 void Canvas::save() { saved_ = pixels_; }
