@@ -42,44 +42,65 @@ int loadInputScript(const char* command, const RunOptions& opts, InputScript& sc
   return exitcode::kOk;
 }
 
-int runHeadless(const char* command, const RunOptions& opts, const CompileOptions& compile,
-                std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
-                std::function<void(SourceLoc)> onLine) {
-  run.loaded = loadFile(opts.file, compile, false);
-  if (run.loaded.exitCode == exitcode::kNoInput) {
+int loadForRun(const char* command, const RunOptions& opts, const CompileOptions& compile,
+               LoadedFile& loaded) {
+  loaded = loadFile(opts.file, compile, false);
+  if (loaded.exitCode == exitcode::kNoInput) {
     std::fprintf(stderr, "%s: cannot read '%s': no such file\n", command, opts.file.c_str());
     return exitcode::kNoInput;
   }
-  printDiagnostics(stderr, run.loaded.program->sources, run.loaded.diags, true);
-  if (!run.loaded.compiled) return exitcode::kRejected;
+  printDiagnostics(stderr, loaded.program->sources, loaded.diags, true);
+  return loaded.compiled ? exitcode::kOk : exitcode::kRejected;
+}
+
+uint64_t runSeed(const RunOptions& opts) { return opts.seed ? *opts.seed : std::random_device{}(); }
+
+RunLimits runLimits(const RunOptions& opts) {
+  RunLimits limits;
+  limits.maxSteps = opts.maxSteps;
+  limits.timeoutSeconds = opts.timeoutSeconds;
+  return limits;
+}
+
+std::string connectRealRobot(const RunOptions& opts, Machine& machine) {
+  if (!opts.real) return "";
+  try {
+    machine.useCommPort(-1);  // -1: the port --port names
+  } catch (const RuntimeError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void reportSeed(const char* command, const RunOptions& opts, uint64_t seed, const Machine& machine) {
+  if (!opts.seed && machine.rngUsed())
+    std::fprintf(stderr, "%s: random seed %llu (repeat this run with --seed %llu)\n", command,
+                 static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed));
+}
+
+int runHeadless(const char* command, const RunOptions& opts, const CompileOptions& compile,
+                std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
+                std::function<void(SourceLoc)> onLine) {
+  if (int code = loadForRun(command, opts, compile, run.loaded)) return code;
 
   InputScript script;
   if (int code = loadInputScript(command, opts, script)) return code;
 
-  run.seed = opts.seed ? *opts.seed : std::random_device{}();
+  run.seed = runSeed(opts);
   run.host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
   run.host->lineHook = std::move(onLine);
   run.host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
   run.machine = std::make_unique<Machine>(*run.host, run.seed);
   run.machine->setObserver(observer);
-  if (opts.real) {
-    try {
-      run.machine->useCommPort(-1);  // -1: the port --port names
-    } catch (const RuntimeError& e) {
-      std::fprintf(stderr, "%s: %s\n", command, e.what());
-      return exitcode::kIoError;
-    }
+  if (std::string why = connectRealRobot(opts, *run.machine); !why.empty()) {
+    std::fprintf(stderr, "%s: %s\n", command, why.c_str());
+    return exitcode::kIoError;
   }
   Interpreter interp(*run.loaded.compiled, *run.machine);
-  RunLimits limits;
-  limits.maxSteps = opts.maxSteps;
-  limits.timeoutSeconds = opts.timeoutSeconds;
-  run.result = interp.run(limits);
+  run.result = interp.run(runLimits(opts));
   run.ran = true;
   run.host->flush();
-  if (!opts.seed && run.machine->rngUsed())
-    std::fprintf(stderr, "%s: random seed %llu (repeat this run with --seed %llu)\n", command,
-                 static_cast<unsigned long long>(run.seed), static_cast<unsigned long long>(run.seed));
+  reportSeed(command, opts, run.seed, *run.machine);
   if (run.result.status == RunStatus::StepLimit && !run.stepLimitIsError) return exitcode::kOk;
   if (run.result.error) {
     printDiagnostic(stderr, run.loaded.program->sources, *run.result.error);

@@ -31,6 +31,23 @@ struct HeadlessRun {
 /// (66 for a missing file, 64 for a malformed script); returns 0 otherwise.
 int loadInputScript(const char* command, const RunOptions& opts, InputScript& script);
 
+// The steps every way of running a program shares (headless here, and the terminal view).
+
+/// Loads and compiles FILE and prints its load errors. Returns 0, or the exit code when it cannot
+/// run (66: no such file, 65: errors).
+int loadForRun(const char* command, const RunOptions& opts, const CompileOptions& compile,
+               LoadedFile& loaded);
+/// --seed, or a random seed.
+uint64_t runSeed(const RunOptions& opts);
+/// --max-steps and --timeout.
+RunLimits runLimits(const RunOptions& opts);
+/// With --real: connects the robot on --port before the program starts. Returns "" or why it
+/// could not (rb then exits with 74).
+std::string connectRealRobot(const RunOptions& opts, Machine& machine);
+/// After a run: names the seed when rb chose it and the program used it, so the run can be
+/// repeated.
+void reportSeed(const char* command, const RunOptions& opts, uint64_t seed, const Machine& machine);
+
 /// Runs FILE headless. Program output goes to `programOutput` (nullptr: discarded). Load
 /// errors and the runtime error are printed on stderr prefixed by `command` ("rb render").
 /// Returns the exit code rb should end with.

@@ -94,7 +94,7 @@ class TuiHost : public Host, public RobotObserver {
   void cycleMode();
   /// The key getKey sees now (held keys are inferred: terminals report presses only).
   int64_t currentKey();
-  void programReadsKeys(const char* state);
+
   /// Blocks until `done` holds, showing `state`.
   void blockUntil(const char* state, const std::function<bool()>& done);
   void appendOutput(std::string_view text);

@@ -1,12 +1,11 @@
 #include "tui_run.h"
 
 #include <cstdio>
-#include <random>
 
 #include "curses_screen.h"
 #include "exit_codes.h"
+#include "headless_run.h"
 #include "interpreter.h"
-#include "program_loader.h"
 #include "robot_port.h"
 #include "tui_host.h"
 
@@ -15,15 +14,6 @@ namespace rb::cli {
 namespace {
 
 constexpr const char* kCommand = "rb run --tui";
-
-/// The --cells option, once RunOptions has it. The option belongs to run_command.*, which this
-/// file does not own; reading it through a requires-expression lets it start working the day
-/// the option is added, with no change here.
-template <typename Options>
-std::string cellsOption(const Options& opts) {
-  if constexpr (requires { opts.cells; }) return opts.cells;
-  return {};
-}
 
 /// The cell mode to start in: --cells when it names one the terminal can show, else half blocks
 /// on a colour UTF-8 terminal, braille on a monochrome one, ASCII otherwise.
@@ -59,13 +49,8 @@ int runTui(const RunOptions& opts) {
   }
   CompileOptions compile;
   compile.lineTracing = true;  // single steps stop before every statement
-  LoadedFile loaded = loadFile(opts.file, compile, false);
-  if (loaded.exitCode == exitcode::kNoInput) {
-    std::fprintf(stderr, "%s: cannot read '%s': no such file\n", kCommand, opts.file.c_str());
-    return exitcode::kNoInput;
-  }
-  printDiagnostics(stderr, loaded.program->sources, loaded.diags, true);
-  if (!loaded.compiled) return exitcode::kRejected;
+  LoadedFile loaded;
+  if (int code = loadForRun(kCommand, opts, compile, loaded)) return code;
 
   std::string why;
   std::unique_ptr<render::CursesScreen> screen = render::CursesScreen::open(why);
@@ -75,30 +60,23 @@ int runTui(const RunOptions& opts) {
     return exitcode::kIoError;
   }
 
-  uint64_t seed = opts.seed ? *opts.seed : std::random_device{}();
-  TuiHost host(*screen, baseName(opts.file), startMode(*screen, cellsOption(opts)));
+  uint64_t seed = runSeed(opts);
+  TuiHost host(*screen, baseName(opts.file), startMode(*screen, opts.cells));
   host.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
   Machine machine(host, seed);
   host.attach(machine);
   machine.setObserver(&host);
-  if (opts.real) {
-    try {
-      machine.useCommPort(-1);  // -1: the port --port names
-    } catch (const RuntimeError& e) {
-      screen.reset();
-      std::fprintf(stderr, "%s: %s\n", kCommand, e.what());
-      return exitcode::kIoError;
-    }
+  if (std::string failed = connectRealRobot(opts, machine); !failed.empty()) {
+    screen.reset();
+    std::fprintf(stderr, "%s: %s\n", kCommand, failed.c_str());
+    return exitcode::kIoError;
   }
 
   RunResult result;
   bool quit = false;
   try {
     Interpreter interp(*loaded.compiled, machine);
-    RunLimits limits;
-    limits.maxSteps = opts.maxSteps;
-    limits.timeoutSeconds = opts.timeoutSeconds;
-    result = interp.run(limits);
+    result = interp.run(runLimits(opts));
     quit = result.status == RunStatus::Stopped;
     std::string error;
     if (result.error) {
@@ -114,9 +92,7 @@ int runTui(const RunOptions& opts) {
   }
   screen.reset();  // the terminal is back to normal before anything is printed
 
-  if (!opts.seed && machine.rngUsed())
-    std::fprintf(stderr, "%s: random seed %llu (repeat this run with --seed %llu)\n", kCommand,
-                 static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed));
+  reportSeed(kCommand, opts, seed, machine);
   if (quit) return exitcode::kOk;  // the user ended the program on purpose
   if (result.error) {
     printDiagnostic(stderr, loaded.program->sources, *result.error);

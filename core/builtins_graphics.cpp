@@ -68,45 +68,37 @@ Value line(Machine& m, Args& a) {
   return {};
 }
 
-Value rectangle(Machine& m, Args& a) {
-  auto [outline, fill] = shapeColours(m, a, 4);
-  m.canvas().rectangle(point(a, 0), point(a, 2), m.canvas().lineWidth, outline, fill);
-  return {};
-}
+/// How a shape command gives its box: two corners, a top-left corner and a size, a centre and
+/// a size, or a centre and a radius.
+enum class Box { Corners, CornerSize, CentreSize, CentreRadius };
 
-Value rectangleWH(Machine& m, Args& a) {
-  auto [outline, fill] = shapeColours(m, a, 4);
-  Point p = point(a, 0);
-  m.canvas().rectangle(p, {p.x + a.coordinate(2), p.y + a.coordinate(3)}, m.canvas().lineWidth, outline, fill);
-  return {};
-}
-
-Value eRectangle(Machine& m, Args& a) {
-  auto [outline, fill] = shapeColours(m, a, 4);
-  Point c = point(a, 0);
-  int hw = a.coordinate(2) / 2, hh = a.coordinate(3) / 2;
-  m.canvas().rectangle({c.x - hw, c.y - hh}, {c.x + hw, c.y + hh}, m.canvas().lineWidth, outline, fill);
-  return {};
-}
-
-Value circle(Machine& m, Args& a) {
-  auto [outline, fill] = shapeColours(m, a, 4);
-  m.canvas().ellipse(point(a, 0), point(a, 2), m.canvas().lineWidth, outline, fill);
-  return {};
-}
-
-Value circleWH(Machine& m, Args& a) {
-  auto [outline, fill] = shapeColours(m, a, 4);
-  Point p = point(a, 0);
-  m.canvas().ellipse(p, {p.x + a.coordinate(2), p.y + a.coordinate(3)}, m.canvas().lineWidth, outline, fill);
-  return {};
-}
-
-Value eCircle(Machine& m, Args& a) {
-  auto [outline, fill] = shapeColours(m, a, 3);
-  Point c = point(a, 0);
-  int r = a.coordinate(2);
-  m.canvas().ellipse({c.x - r, c.y - r}, {c.x + r, c.y + r}, m.canvas().lineWidth, outline, fill);
+/// rectangle, rectangleWH, eRectangle, circle, circleWH, eCircle: the box from the first
+/// arguments, then the optional outline and fill colours.
+template <Box form, bool ellipse>
+Value shape(Machine& m, Args& a) {
+  Point p = point(a, 0), q;
+  int next = 4;
+  switch (form) {
+    case Box::Corners: q = point(a, 2); break;
+    case Box::CornerSize: q = {p.x + a.coordinate(2), p.y + a.coordinate(3)}; break;
+    case Box::CentreSize: {
+      int hw = a.coordinate(2) / 2, hh = a.coordinate(3) / 2;
+      q = {p.x + hw, p.y + hh};
+      p = {p.x - hw, p.y - hh};
+      break;
+    }
+    case Box::CentreRadius: {
+      int r = a.coordinate(2);
+      q = {p.x + r, p.y + r};
+      p = {p.x - r, p.y - r};
+      next = 3;
+      break;
+    }
+  }
+  auto [outline, fill] = shapeColours(m, a, next);
+  Canvas& c = m.canvas();
+  if (ellipse) c.ellipse(p, q, c.lineWidth, outline, fill);
+  else c.rectangle(p, q, c.lineWidth, outline, fill);
   return {};
 }
 
@@ -245,17 +237,17 @@ void appendGraphicsBuiltins(std::vector<Builtin>& t) {
        "draws from the graphics pen to (x, y) and moves the pen there"},
       {"line", K::Command, "graphics", "x1, y1, x2, y2 [, width [, colour]]", line, 0,
        "draws a line; the graphics pen ends at (x2, y2)"},
-      {"rectangle", K::Command, "graphics", "x1, y1, x2, y2 [, outline [, fill]]", rectangle, 0,
+      {"rectangle", K::Command, "graphics", "x1, y1, x2, y2 [, outline [, fill]]", shape<Box::Corners, false>, 0,
        "rectangle with corners (x1, y1) and (x2, y2); filled when fill is given"},
-      {"rectangleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", rectangleWH, 0,
+      {"rectangleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CornerSize, false>, 0,
        "rectangle from its top-left corner and size"},
-      {"eRectangle", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", eRectangle, 0,
+      {"eRectangle", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CentreSize, false>, 0,
        "rectangle from its centre and size"},
-      {"circle", K::Command, "graphics", "x1, y1, x2, y2 [, outline [, fill]]", circle, 0,
+      {"circle", K::Command, "graphics", "x1, y1, x2, y2 [, outline [, fill]]", shape<Box::Corners, true>, 0,
        "ellipse inside the box (x1, y1)-(x2, y2); filled when fill is given"},
-      {"circleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", circleWH, 0,
+      {"circleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CornerSize, true>, 0,
        "ellipse inside the box from its top-left corner and size"},
-      {"eCircle", K::Command, "graphics", "x, y, radius [, outline [, fill]]", eCircle, 0,
+      {"eCircle", K::Command, "graphics", "x, y, radius [, outline [, fill]]", shape<Box::CentreRadius, true>, 0,
        "circle from its centre and radius"},
       {"polygon", K::Command, "graphics", "points [, outline [, fill]]", polygon, 0,
        "closed polygon through the points of a 1-D array x1, y1, x2, y2, ..."},

@@ -37,7 +37,7 @@ class RobotObserver {
 class Machine {
  public:
   Machine(Host& host, uint64_t seed)
-      : host_(host), rng_(seed), seed_(seed), robot_(canvas_, rng_) {}
+      : host_(host), rng_(seed), robot_(canvas_, rng_) {}
   Machine(const Machine&) = delete;
   Machine& operator=(const Machine&) = delete;
 
@@ -48,7 +48,6 @@ class Machine {
     return rng_;
   }
   bool rngUsed() const { return rngUsed_ || robot_.slipPercent() > 0; }
-  uint64_t seed() const { return seed_; }
   Canvas& canvas() { return canvas_; }
   const Canvas& canvas() const { return canvas_; }
   SimRobot& robot() { return robot_; }
@@ -58,8 +57,6 @@ class Machine {
   RealRobot* realRobot() { return real_.get(); }
   /// rCommPort n: opens port n through the host (n = 0: back to the simulator, closing it).
   void useCommPort(int64_t port);
-  /// Connects to a real robot over an already opened link (rb run --real).
-  void useRealRobot(std::unique_ptr<RobotLink> link) { real_ = std::make_unique<RealRobot>(std::move(link)); }
   /// The pose and pen a trace or a live view should show: the real robot's dead-reckoned one
   /// when connected, else the simulator's.
   const Pose& robotPose() const { return real_ ? real_->pose() : robot_.pose(); }
@@ -101,7 +98,6 @@ class Machine {
  private:
   Host& host_;
   Rng rng_;
-  uint64_t seed_;
   bool rngUsed_ = false;
   Canvas canvas_;
   SimRobot robot_;
