@@ -22,9 +22,15 @@ std::string argText(Args& a) {
   return s;
 }
 
+/// Tells the observer (rb trace, a live view) what the built-in did; formats its arguments only
+/// when someone is listening.
+void report(Machine& m, RobotEvent::Kind kind, Args& a, std::optional<double> value = std::nullopt) {
+  if (m.observed()) m.emit(kind, a.builtin().name, argText(a), value);
+}
+
 /// Every sensor reads a whole number.
 Value sensor(Machine& m, Args& a, double v) {
-  if (m.observed()) m.emit(RobotEvent::Sensor, a.builtin().name, argText(a), v);
+  report(m, RobotEvent::Sensor, a, v);
   return Value::integer(static_cast<int64_t>(v));
 }
 
@@ -34,7 +40,7 @@ Value rLocate(Machine& m, Args& a) {
   Colour colour = a.has(4) ? a.colour(4) : static_cast<Colour>(sim::kDefaultColour);
   if (RealRobot* r = m.realRobot()) r->locate(a.num(0), a.num(1), heading);
   else m.robot().locate(a.num(0), a.num(1), heading, radius, colour);
-  m.emit(RobotEvent::Locate, "rLocate", argText(a));
+  report(m, RobotEvent::Locate, a);
   return {};
 }
 
@@ -50,17 +56,17 @@ Value rForward(Machine& m, Args& a) {
     if (RealRobot* r = m.realRobot()) r->forward(a.num(0));
     else m.robot().forward(a.num(0), stepper(m));
   } catch (const RuntimeError&) {
-    m.emit(RobotEvent::Crash, "rForward", argText(a));
+    report(m, RobotEvent::Crash, a);
     throw;
   }
-  m.emit(RobotEvent::Move, "rForward", argText(a));
+  report(m, RobotEvent::Move, a);
   return {};
 }
 
 Value rTurn(Machine& m, Args& a) {
   if (RealRobot* r = m.realRobot()) r->turn(a.num(0));
   else m.robot().turn(a.num(0), stepper(m));
-  m.emit(RobotEvent::Turn, "rTurn", argText(a));
+  report(m, RobotEvent::Turn, a);
   return {};
 }
 
@@ -69,14 +75,14 @@ Value rSpeed(Machine& m, Args& a) {
   if (s < 0) throw RuntimeError(a.describe(0) + " must not be negative");
   m.robotSpeed = s;
   if (RealRobot* r = m.realRobot()) r->speed(s);
-  m.emit(RobotEvent::Setting, "rSpeed", argText(a));
+  report(m, RobotEvent::Setting, a);
   return {};
 }
 
 Value rPen(Machine& m, Args& a) {
   if (RealRobot* r = m.realRobot()) r->pen(a.num(0) != 0);
   else m.robot().setPen(a.num(0) != 0);
-  m.emit(RobotEvent::Pen, "rPen", argText(a));
+  report(m, RobotEvent::Pen, a);
   return {};
 }
 
@@ -84,7 +90,7 @@ Value rInvisible(Machine& m, Args& a) {
   std::vector<Colour> list;
   for (int i = 0; i < a.size(); ++i) list.push_back(a.colour(i));
   m.canvas().setInvisible(std::move(list));
-  m.emit(RobotEvent::Setting, "rInvisible", argText(a));
+  report(m, RobotEvent::Setting, a);
   return {};
 }
 
@@ -92,13 +98,13 @@ Value rSlip(Machine& m, Args& a) {
   double p = a.num(0);
   if (p < 0 || p > 100) throw RuntimeError(a.describe(0) + " must be a percentage from 0 to 100");
   m.robot().setSlip(p);
-  m.emit(RobotEvent::Setting, "rSlip", argText(a));
+  report(m, RobotEvent::Setting, a);
   return {};
 }
 
 Value rCommPort(Machine& m, Args& a) {
   m.useCommPort(a.integer(0));
-  m.emit(RobotEvent::Setting, "rCommPort", argText(a));
+  report(m, RobotEvent::Setting, a);
   return {};
 }
 
