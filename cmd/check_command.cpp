@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "builtins.h"
-#include "checker.h"
+#include "lang/builtins.h"
+#include "lang/checker.h"
 #include "exit_codes.h"
 #include "program_loader.h"
 

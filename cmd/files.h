@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "loader.h"
+#include "lang/loader.h"
 
 namespace rb::cli {
 

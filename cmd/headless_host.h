@@ -2,15 +2,15 @@
 // The Host of a headless run: program output to a stream, `input` lines from a stream, and a
 // virtual clock that only moves when the program waits (delay, robot motion at rSpeed), reads
 // timer() or reads input, so runs are fast and repeatable. Keys, the mouse and dialog answers
-// come from scripted input (--events, --keys: core/input_script.h).
+// come from scripted input (--events, --keys: core/input/input_script.h).
 
 #include <chrono>
 #include <cstdio>
 #include <functional>
 #include <istream>
 
-#include "host.h"
-#include "input_script.h"
+#include "machine/host.h"
+#include "input/input_script.h"
 
 namespace rb::cli {
 

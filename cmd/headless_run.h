@@ -7,8 +7,8 @@
 #include <memory>
 
 #include "headless_host.h"
-#include "interpreter.h"
-#include "machine.h"
+#include "machine/interpreter.h"
+#include "machine/machine.h"
 #include "program_loader.h"
 #include "run_command.h"
 

@@ -1,6 +1,6 @@
 #include "program_loader.h"
 
-#include "checker.h"
+#include "lang/checker.h"
 #include "exit_codes.h"
 #include "files.h"
 

@@ -6,10 +6,10 @@
 #include <memory>
 #include <string>
 
-#include "bytecode.h"
-#include "compiler.h"
-#include "diagnostic.h"
-#include "loader.h"
+#include "lang/bytecode.h"
+#include "lang/compiler.h"
+#include "base/diagnostic.h"
+#include "lang/loader.h"
 
 namespace rb::cli {
 

@@ -9,7 +9,7 @@
 #include "exit_codes.h"
 #include "pty.h"
 #include "robot_emulator.h"
-#include "runtime_error.h"
+#include "base/runtime_error.h"
 
 namespace rb::cli {
 

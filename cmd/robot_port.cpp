@@ -1,7 +1,7 @@
 #include "robot_port.h"
 
 #include "port_names.h"
-#include "runtime_error.h"
+#include "base/runtime_error.h"
 #include "serial_link.h"
 
 namespace rb::cli {

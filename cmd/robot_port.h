@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "robot_link.h"
+#include "robot/robot_link.h"
 #include "run_command.h"
 
 namespace rb::cli {

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "diagnostic.h"
+#include "base/diagnostic.h"
 #include "exit_codes.h"
 #include "headless_run.h"
 

@@ -14,9 +14,9 @@
 
 #include "arena_view.h"
 #include "curses_screen.h"
-#include "host.h"
-#include "interpreter.h"
-#include "machine.h"
+#include "machine/host.h"
+#include "machine/interpreter.h"
+#include "machine/machine.h"
 #include "tui_layout.h"
 
 namespace rb::cli {

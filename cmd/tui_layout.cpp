@@ -6,7 +6,7 @@
 #include <initializer_list>
 #include <string_view>
 
-#include "canvas.h"
+#include "screen/canvas.h"
 
 namespace rb::cli {
 

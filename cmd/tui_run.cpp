@@ -5,7 +5,7 @@
 #include "curses_screen.h"
 #include "exit_codes.h"
 #include "headless_run.h"
-#include "interpreter.h"
+#include "machine/interpreter.h"
 #include "robot_port.h"
 #include "tui_host.h"
 

@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "protocol.h"
-#include "runtime_error.h"
+#include "robot/protocol.h"
+#include "base/runtime_error.h"
 
 namespace rb::drivers {
 

@@ -6,7 +6,7 @@
 #include <system_error>
 #include <vector>
 
-#include "runtime_error.h"
+#include "base/runtime_error.h"
 
 namespace fs = std::filesystem;
 

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "runtime_error.h"
+#include "base/runtime_error.h"
 
 namespace fs = std::filesystem;
 

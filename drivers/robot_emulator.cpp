@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "protocol.h"
-#include "real_robot.h"
-#include "runtime_error.h"
-#include "sim_constants.h"
+#include "robot/protocol.h"
+#include "robot/real_robot.h"
+#include "base/runtime_error.h"
+#include "robot/sim_constants.h"
 
 namespace rb::drivers {
 

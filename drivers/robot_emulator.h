@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "canvas.h"
-#include "rng.h"
-#include "robot_link.h"
-#include "robot_sim.h"
+#include "screen/canvas.h"
+#include "base/rng.h"
+#include "robot/robot_link.h"
+#include "robot/robot_sim.h"
 
 namespace rb::drivers {
 

@@ -2,7 +2,7 @@
 // on purpose.
 #include <catch2/catch.hpp>
 
-#include "protocol.h"
+#include "robot/protocol.h"
 #include "robot_emulator.h"
 
 using namespace rb;

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "protocol.h"
-#include "runtime_error.h"
+#include "robot/protocol.h"
+#include "base/runtime_error.h"
 
 namespace rb::drivers {
 

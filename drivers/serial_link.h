@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "robot_link.h"
+#include "robot/robot_link.h"
 #include "serial_port.h"
 
 namespace rb::drivers {

@@ -15,7 +15,7 @@
 #include "emulator_server.h"
 #include "pty.h"
 #include "robot_emulator.h"
-#include "runtime_error.h"
+#include "base/runtime_error.h"
 #include "serial_link.h"
 
 using namespace rb;

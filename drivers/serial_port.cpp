@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "runtime_error.h"
+#include "base/runtime_error.h"
 
 namespace rb::drivers {
 

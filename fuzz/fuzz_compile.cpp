@@ -11,10 +11,10 @@
 #include <optional>
 #include <string>
 
-#include "checker.h"
-#include "compiler.h"
-#include "diagnostic.h"
-#include "loader.h"
+#include "lang/checker.h"
+#include "lang/compiler.h"
+#include "base/diagnostic.h"
+#include "lang/loader.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <iterator>
 #include <string_view>
 
-#include "robot_sim.h"
+#include "robot/robot_sim.h"
 
 namespace rb::render {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "canvas.h"
+#include "screen/canvas.h"
 
 namespace rb::render {
 

@@ -11,7 +11,7 @@
 #include <unordered_map>
 
 #include "curses_palette.h"
-#include "input.h"
+#include "input/input.h"
 
 namespace rb::render {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The terminal, through ncurses: the one place rb talks to curses (this header does not include
 // it). It opens and restores the terminal, turns key and mouse reports into events with rb's key
-// codes (core/input.h), and draws text and arena frames in the best colours the terminal has.
+// codes (core/input/input.h), and draws text and arena frames in the best colours the terminal has.
 // The live view's logic (cmd/tui_*) uses only this interface.
 
 #include <cstdint>
@@ -16,7 +16,7 @@ namespace rb::render {
 /// Something the terminal reported.
 struct TermEvent {
   enum Kind { None, Key, Mouse, Resize } kind = None;
-  /// Key: rb's key code (core/input.h); Ctrl+letter reads as its control character (1..26).
+  /// Key: rb's key code (core/input/input.h); Ctrl+letter reads as its control character (1..26).
   int64_t key = 0;
   // Mouse: the cell under the pointer and what changed.
   int col = 0, row = 0;

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "robot_sim.h"
+#include "robot/robot_sim.h"
 
 namespace rb::render {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "arena_view.h"
-#include "canvas.h"
+#include "screen/canvas.h"
 
 namespace rb::render {
 

@@ -12,12 +12,12 @@
 
 #include <unistd.h>
 
-#include "compiler.h"
-#include "interpreter.h"
-#include "loader.h"
-#include "machine.h"
+#include "lang/compiler.h"
+#include "machine/interpreter.h"
+#include "lang/loader.h"
+#include "machine/machine.h"
 #include "robot_view.h"
-#include "test_support.h"
+#include "machine/test_support.h"
 
 namespace rb::render::test {
 

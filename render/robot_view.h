@@ -3,7 +3,7 @@
 // terminal view so both show the same pose.
 
 #include "arena_view.h"
-#include "machine.h"
+#include "machine/machine.h"
 
 namespace rb::render {
 

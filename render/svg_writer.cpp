@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <string_view>
 
-#include "font.h"
+#include "screen/font.h"
 #include "png_writer.h"
-#include "robot_sim.h"
+#include "robot/robot_sim.h"
 
 namespace rb::render {
 

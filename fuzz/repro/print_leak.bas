@@ -1,4 +1,4 @@
-// Not a fuzzer find: a leak in core/interpreter.cpp's threaded dispatch (GCC build).
+// Not a fuzzer find: a leak in core/machine/interpreter.cpp's threaded dispatch (GCC build).
 // NEXT is a computed goto that leaves each handler's block without running destructors, so
 // locals such as `text` in the Print handler (interpreter.cpp:764) leak. Clang rejects the same
 // code outright ("cannot jump from this indirect goto statement to one of its possible targets").

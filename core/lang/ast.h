@@ -1,0 +1,102 @@
+#pragma once
+// The parsed program: a flat list of statements, one per source line (a single-line `if` holds
+// its then/else statements). Block statements (if/elseif/else/endif, for/next, while/wend,
+// repeat/until, sub/endsub) stay separate entries; the compiler pairs them, which lets
+// goto/gosub jump into and out of blocks as RobotBASIC allows.
+
+#include <deque>
+#include <string_view>
+#include <vector>
+
+#include "base/source.h"
+#include "lang/token.h"
+
+namespace rb::ast {
+
+enum class ExprKind : uint8_t {
+  Int,     ///< integer literal (ival)
+  Float,   ///< double literal (dval)
+  Str,     ///< string literal (text)
+  Var,     ///< variable or constant name (text)
+  Index,   ///< array element: text[args...]
+  Call,    ///< function call: text(args...) — a built-in or a sub
+  Unary,   ///< op args[0]
+  Binary,  ///< args[0] op args[1]
+};
+
+struct Expr {
+  ExprKind kind = ExprKind::Int;
+  Tok op = Tok::Eof;
+  SourceLoc loc;
+  std::string_view text;
+  int64_t ival = 0;
+  double dval = 0;
+  std::vector<Expr*> args;
+};
+
+enum class StmtKind : uint8_t {
+  Assign,    ///< target op value; op is Assign, PlusAssign.. or PlusPlus/MinusMinus (no value)
+  Print,     ///< exprs with seps
+  Input,     ///< [value = prompt], target
+  If,        ///< block if: value = condition
+  IfLine,    ///< single-line if: value = condition, body[0] = then, body[1] = else (optional)
+  ElseIf,    ///< value = condition
+  Else,
+  EndIf,
+  For,       ///< target = control variable, exprs = {from, to[, step]}
+  Next,      ///< name = optional variable
+  While,     ///< value = condition
+  Wend,
+  Repeat,
+  Until,     ///< value = condition
+  Break,
+  Continue,
+  Goto,      ///< name = label
+  Gosub,     ///< name = label
+  Return,    ///< value = optional result (subs only)
+  End,
+  Label,     ///< name
+  Sub,       ///< name, params
+  EndSub,
+  Call,      ///< name, exprs = arguments (call Name(args) or Name(args))
+  Dim,       ///< exprs = Index expressions (name[dims]) or Var (scalar)
+  Data,      ///< name, exprs = values
+  Command,   ///< name = built-in command as written, exprs = arguments; seps for print-style lists
+  Include,   ///< name = the file named by #include (resolved by the loader)
+};
+
+struct Param {
+  std::string_view name;
+  SourceLoc loc;
+  bool byRef = false;
+};
+
+struct Stmt {
+  StmtKind kind = StmtKind::End;
+  SourceLoc loc;              ///< first token of the statement
+  std::string_view name;      ///< label, sub, command or variable name
+  SourceLoc nameLoc;
+  Tok op = Tok::Eof;
+  Expr* target = nullptr;
+  Expr* value = nullptr;
+  std::vector<Expr*> exprs;
+  std::vector<Tok> seps;      ///< print-style separator after each item (Comma, Semicolon, Eof)
+  std::vector<Param> params;
+  std::vector<Stmt*> body;    ///< IfLine: then, else
+  bool paren = false;         ///< Call/Command written with parentheses around the arguments
+  bool broken = false;        ///< a block opener whose line had a syntax error (already
+                              ///< reported): it only keeps its closer paired
+};
+
+/// Owns every node of a program; pointers stay valid for its lifetime.
+class Arena {
+ public:
+  Expr* expr() { return &exprs_.emplace_back(); }
+  Stmt* stmt() { return &stmts_.emplace_back(); }
+
+ private:
+  std::deque<Expr> exprs_;
+  std::deque<Stmt> stmts_;
+};
+
+}  // namespace rb::ast

@@ -1,0 +1,23 @@
+#pragma once
+// Walks the names a statement reads and writes. The compiler uses it to find a sub's local
+// variables before compiling the sub; the checker uses it to find variables that are read but
+// never assigned.
+
+#include <functional>
+#include <string_view>
+
+#include "lang/ast.h"
+
+namespace rb::ast {
+
+enum class NameUse { Read, Write, ReadWrite, ArrayWrite };
+
+/// Calls `visit(name, loc, use)` for every variable name in `s` (and the statements of a
+/// single-line if). Built-in constants are skipped, as are names of called functions. Which
+/// arguments of a built-in command are outputs comes from the built-in table; for sub calls
+/// `isByRefArg(subName, index)` says whether an argument is passed by reference.
+void forEachName(const Stmt& s,
+                 const std::function<void(std::string_view, SourceLoc, NameUse)>& visit,
+                 const std::function<bool(std::string_view, size_t)>& isByRefArg);
+
+}  // namespace rb::ast

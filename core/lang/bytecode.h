@@ -1,0 +1,122 @@
+#pragma once
+// The flat instruction list the compiler produces and the interpreter runs. Labels are
+// addresses, variables are slots, so goto/gosub may enter and leave blocks freely.
+//
+// Operands are 32-bit: the top two bits select a base (global slots, the current frame, the
+// constant pool) and the rest is an index into it. Jump-like instructions keep their target in
+// `a` and carry in `n` the number of statements that began since the previous control transfer,
+// which is how the interpreter counts steps without an instruction per statement.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "base/source.h"
+#include "lang/token.h"
+#include "lang/value.h"
+
+namespace rb {
+
+// Every instruction, in one list: the enum and the interpreter's dispatch table both come
+// from it. Operand use is given beside each.
+#define RB_OPCODES(X)                                                                        \
+  /* R[a] = R[b]; an unassigned R[b] is an error naming the variable unless flags has   */  \
+  /* kMoveMayBeUnassigned                                                                */  \
+  X(Move)                                                                                    \
+  /* R[a] = R[b] op R[c] */                                                                  \
+  X(Add) X(Sub) X(Mul) X(Div) X(Mod) X(Pow) X(BitAnd) X(BitOr) X(Shl) X(Shr)                 \
+  X(Eq) X(Ne) X(Lt) X(Le) X(Gt) X(Ge)                                                        \
+  /* R[a] = op R[b] */                                                                       \
+  X(Neg) X(Not) X(BitNot)                                                                    \
+  /* R[a] += 1 / -= 1 in place */                                                            \
+  X(Inc) X(Dec)                                                                              \
+  /* pc = a (n statements counted) */                                                        \
+  X(Jump)                                                                                    \
+  /* if (!R[b]) pc = a / if (R[b]) pc = a */                                                 \
+  X(JumpIfFalse) X(JumpIfTrue)                                                               \
+  /* if (!(R[b] op R[c])) pc = a */                                                          \
+  X(JumpIfNotLt) X(JumpIfNotLe) X(JumpIfNotGt) X(JumpIfNotGe) X(JumpIfNotEq) X(JumpIfNotNe)  \
+  /* if (R[b] op R[c]) pc = a */                                                             \
+  X(JumpIfLt) X(JumpIfLe) X(JumpIfGt) X(JumpIfGe) X(JumpIfEq) X(JumpIfNe)                    \
+  /* for: a = control variable, b = limit (step at b+1), c = exit / body target */           \
+  X(ForPrep) X(ForLoop)                                                                      \
+  /* push a return address, frame base += b; pc = a */                                      \
+  X(Gosub)                                                                                   \
+  /* pop the innermost gosub or sub call; b = result operand when c = 1 */                   \
+  X(Return)                                                                                  \
+  /* call sub a with arguments in frame slots b..; result to operand c (or kNoOperand) */     \
+  X(CallSub)                                                                                 \
+  /* call built-in a, arguments in R[b]..R[b+n-1], result to operand c (or kNoOperand) */     \
+  X(CallBuiltin)                                                                             \
+  /* R[a] = R[b][R[c]..R[c+n-1]] */                                                          \
+  X(IndexGet)                                                                                \
+  /* R[a][R[c]..R[c+n-1]] = R[b] */                                                          \
+  X(IndexSet)                                                                                \
+  /* R[a] = new array with the n extents R[c].. */                                           \
+  X(Dim)                                                                                     \
+  /* append R[b] to the 1-D array R[a] (creating it) */                                      \
+  X(DataAppend)                                                                              \
+  /* print R[b]..R[b+n-1] with separator list c */                                           \
+  X(Print)                                                                                   \
+  /* R[a] = the items R[b]..R[b+n-1] formatted with separator list c */                      \
+  X(Format)                                                                                  \
+  /* R[a] = a line typed by the user, prompt R[b] when c = 1 */                              \
+  X(Input)                                                                                   \
+  /* count n statements (where more than kMaxPending piled up) */                            \
+  X(Steps)                                                                                   \
+  /* statement boundary, emitted only in line-tracing mode */                                \
+  X(Line)                                                                                    \
+  /* stop the program (n statements counted) */                                              \
+  X(End)
+
+enum class Op : uint8_t {
+#define RB_OPCODE_ENUM(name) name,
+  RB_OPCODES(RB_OPCODE_ENUM)
+#undef RB_OPCODE_ENUM
+};
+
+constexpr uint8_t kMoveMayBeUnassigned = 1;
+
+struct Instr {
+  Op op;
+  uint8_t flags = 0;
+  uint16_t n = 0;
+  uint32_t a = 0, b = 0, c = 0;
+};
+
+constexpr uint32_t kBaseShift = 30;
+constexpr uint32_t kIndexMask = (1u << kBaseShift) - 1;
+enum class Base : uint32_t { Global = 0, Frame = 1, Const = 2 };
+constexpr uint32_t operand(Base base, uint32_t index) {
+  return (static_cast<uint32_t>(base) << kBaseShift) | index;
+}
+constexpr Base operandBase(uint32_t op) { return static_cast<Base>(op >> kBaseShift); }
+constexpr uint32_t operandIndex(uint32_t op) { return op & kIndexMask; }
+constexpr uint32_t kNoOperand = 0xffffffffu;
+
+/// A `sub` after compilation.
+struct SubInfo {
+  std::string name;
+  SourceLoc loc;
+  uint32_t entry = 0;        ///< first instruction of the body
+  uint32_t paramCount = 0;
+  uint32_t frameSize = 0;    ///< parameters + locals + temporaries
+  uint32_t localCount = 0;   ///< parameters + locals (named slots)
+  std::vector<std::string> slotNames;  ///< names of the named frame slots
+  std::vector<bool> byRef;
+};
+
+/// A compiled program: instructions, their source positions, constants and slot names.
+struct Program {
+  std::vector<Instr> code;
+  std::vector<SourceLoc> locs;         ///< one per instruction
+  std::vector<Value> constants;
+  std::vector<std::string> globalNames;
+  uint32_t globalCount = 0;
+  uint32_t mainFrameSize = 0;          ///< temporaries of code outside subs
+  std::vector<SubInfo> subs;
+  std::vector<std::vector<Tok>> separatorLists;  ///< for Print/Format
+  bool lineTracing = false;
+};
+
+}  // namespace rb

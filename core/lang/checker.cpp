@@ -1,0 +1,144 @@
+#include "lang/checker.h"
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <unordered_map>
+
+#include "lang/ast_walk.h"
+#include "lang/builtins.h"
+#include "lang/suggest.h"
+#include "lang/value.h"
+
+namespace rb {
+
+namespace {
+
+struct ScopeUse {
+  std::set<std::string_view> written;
+  std::map<std::string_view, SourceLoc> firstRead;  // ordered for stable output
+};
+
+bool isGlobalRef(std::string_view name) { return name.size() > 1 && name[0] == '_'; }
+
+}  // namespace
+
+void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
+  // Which sub parameters are by reference, for calls.
+  std::unordered_map<std::string_view, std::vector<bool>> byRef;
+  for (const ast::Stmt* s : program.stmts) {
+    if (s->kind != ast::StmtKind::Sub || s->broken) continue;
+    std::vector<bool>& flags = byRef[s->name];
+    for (const ast::Param& p : s->params) flags.push_back(p.byRef);
+  }
+  auto isByRef = [&](std::string_view sub, size_t i) {
+    auto it = byRef.find(sub);
+    return it != byRef.end() && i < it->second.size() && it->second[i];
+  };
+
+  ScopeUse global;
+  std::vector<ScopeUse> subs;
+  ScopeUse* local = nullptr;
+  uint32_t subFile = 0;
+  for (const ast::Stmt* s : program.stmts) {
+    if (local && s->loc.file != subFile) local = nullptr;  // a sub ends with its file
+    if (s->kind == ast::StmtKind::Sub && !s->broken) {
+      subFile = s->loc.file;
+      subs.emplace_back();
+      local = &subs.back();
+    } else if (s->kind == ast::StmtKind::EndSub) {
+      local = nullptr;
+      continue;
+    }
+    ast::forEachName(*s, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
+      ScopeUse* scope = local && !isGlobalRef(name) ? local : &global;
+      if (isGlobalRef(name)) name.remove_prefix(1);
+      if (use != ast::NameUse::Read) scope->written.insert(name);
+      if (use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) scope->firstRead.try_emplace(name, loc);
+    }, isByRef);
+  }
+
+  auto report = [&](const ScopeUse& scope, const char* where) {
+    std::vector<std::string_view> written(scope.written.begin(), scope.written.end());
+    for (const auto& [name, loc] : scope.firstRead) {
+      if (scope.written.count(name)) continue;
+      std::string msg = "variable '" + std::string(name) + "' is read but never assigned" + where;
+      std::string hint = closestMatch(name, written, true);
+      if (!hint.empty()) {
+        msg += "; did you mean '" + hint + "'?";
+        if (editDistance(name, hint, true) == 0) msg += " (names are case-sensitive)";
+      }
+      diags.warning(loc, msg);
+    }
+  };
+  report(global, "");
+  for (const ScopeUse& s : subs) report(s, " in this sub");
+}
+
+}  // namespace rb
+
+namespace rb {
+
+namespace {
+
+/// The RB-9 moves at most about this much per rForward (seed document, "Limitations").
+constexpr double kRb9MaxMove = 250;
+
+/// The value of a constant numeric argument (a literal, or a negated one), if it is one.
+std::optional<double> constantNumber(const ast::Expr* e) {
+  if (!e) return std::nullopt;
+  if (e->kind == ast::ExprKind::Int) return static_cast<double>(e->ival);
+  if (e->kind == ast::ExprKind::Float) return e->dval;
+  if (e->kind == ast::ExprKind::Unary && e->op == Tok::Minus && e->args.size() == 1) {
+    std::optional<double> v = constantNumber(e->args[0]);
+    if (v) return -*v;
+  }
+  return std::nullopt;
+}
+
+/// Why a built-in function has nothing behind it on the RB-9, or "" when it does.
+std::string missingOnRb9(std::string_view name) {
+  if (name == "rLook") return "rLook(): the RB-9 has no camera, so the real robot cannot report colours";
+  if (name == "rGPSX" || name == "rGPSY")
+    return std::string(name) + "(): the RB-9 has no GPS; track the position from its moves and rCompass()";
+  if (name == "rChargeLevel")
+    return "rChargeLevel(): the robot protocol has no battery command, so this stops the program "
+           "on a real robot";
+  return "";
+}
+
+void checkExpr(const ast::Expr* e, DiagnosticList& diags) {
+  if (!e) return;
+  if (e->kind == ast::ExprKind::Call) {
+    if (const Builtin* b = findBuiltin(e->text, BuiltinKind::Function)) {
+      std::string why = missingOnRb9(b->name);
+      if (!why.empty()) diags.warning(e->loc, why);
+    }
+  }
+  for (const ast::Expr* a : e->args) checkExpr(a, diags);
+}
+
+void checkStmt(const ast::Stmt* s, DiagnosticList& diags) {
+  if (s->kind == ast::StmtKind::Command && !s->exprs.empty()) {
+    const Builtin* b = findBuiltin(s->name, BuiltinKind::Command);
+    std::optional<double> n = constantNumber(s->exprs[0]);
+    if (b && b->name == "rForward" && n && std::abs(*n) > kRb9MaxMove)
+      diags.warning(s->loc, "rForward " + formatNumber(*n) +
+                                ": the RB-9 moves at most about 250 per command (the seed "
+                                "recommends staying below 200); use several shorter moves");
+  }
+  checkExpr(s->target, diags);
+  checkExpr(s->value, diags);
+  for (const ast::Expr* e : s->exprs) checkExpr(e, diags);
+  for (const ast::Stmt* b : s->body) checkStmt(b, diags);
+}
+
+}  // namespace
+
+void checkRb9Target(const LoadedProgram& program, DiagnosticList& diags) {
+  for (const ast::Stmt* s : program.stmts) checkStmt(s, diags);
+}
+
+}  // namespace rb

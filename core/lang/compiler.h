@@ -1,0 +1,25 @@
+#pragma once
+// Compiles a loaded program to the flat instruction list of bytecode.h: pairs block statements,
+// resolves labels to addresses and variables to slots, checks calls against the built-in table
+// and the program's subs. Everything `rb run` rejects before running is found here, so `rb
+// check` and `rb run` agree by construction.
+
+#include <memory>
+
+#include "lang/bytecode.h"
+#include "base/diagnostic.h"
+#include "lang/loader.h"
+
+namespace rb {
+
+struct CompileOptions {
+  /// Emit a Line instruction at every statement (for `rb trace --lines` and single-stepping).
+  bool lineTracing = false;
+};
+
+/// Compiles `program`. Errors and warnings go to `diags`; the result is null when `diags` holds
+/// any error (including those found while loading).
+std::unique_ptr<Program> compileProgram(const LoadedProgram& program, const CompileOptions& options,
+                                        DiagnosticList& diags);
+
+}  // namespace rb

@@ -1,0 +1,405 @@
+#include "lang/lexer.h"
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <unordered_map>
+
+namespace rb {
+
+namespace {
+
+struct Keyword {
+  std::string_view word;
+  Tok kind;
+};
+
+constexpr std::array kKeywords{
+    Keyword{"and", Tok::KwAnd},       Keyword{"or", Tok::KwOr},
+    Keyword{"not", Tok::KwNot},       Keyword{"mod", Tok::KwMod},
+    Keyword{"if", Tok::KwIf},         Keyword{"then", Tok::KwThen},
+    Keyword{"else", Tok::KwElse},     Keyword{"elseif", Tok::KwElseIf},
+    Keyword{"endif", Tok::KwEndIf},   Keyword{"end", Tok::KwEnd},
+    Keyword{"for", Tok::KwFor},       Keyword{"to", Tok::KwTo},
+    Keyword{"step", Tok::KwStep},     Keyword{"next", Tok::KwNext},
+    Keyword{"while", Tok::KwWhile},   Keyword{"wend", Tok::KwWend},
+    Keyword{"repeat", Tok::KwRepeat}, Keyword{"until", Tok::KwUntil},
+    Keyword{"break", Tok::KwBreak},   Keyword{"continue", Tok::KwContinue},
+    Keyword{"goto", Tok::KwGoto},     Keyword{"gosub", Tok::KwGosub},
+    Keyword{"return", Tok::KwReturn}, Keyword{"sub", Tok::KwSub},
+    Keyword{"endsub", Tok::KwEndSub}, Keyword{"call", Tok::KwCall},
+    Keyword{"dim", Tok::KwDim},       Keyword{"data", Tok::KwData},
+    Keyword{"print", Tok::KwPrint},   Keyword{"input", Tok::KwInput},
+};
+
+bool isIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool isIdentChar(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$';
+}
+
+class Lexer {
+ public:
+  Lexer(const SourceSet& sources, uint32_t file, DiagnosticList& diags)
+      : text_(sources.file(file).text()), file_(file), diags_(diags) {}
+
+  std::vector<Token> run() {
+    std::vector<Token> out;
+    out.reserve(text_.size() / 3 + 4);
+    while (pos_ < text_.size()) {
+      char c = text_[pos_];
+      if (c == '\n') {
+        push(out, Tok::Newline, pos_, 1);
+        ++pos_;
+        ++line_;
+        lineStart_ = pos_;
+        continue;
+      }
+      if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+        ++pos_;
+        continue;
+      }
+      if (c == '/' && peek(1) == '/') {
+        skipToLineEnd();
+        continue;
+      }
+      if (c == '\'') {
+        skipToLineEnd();
+        continue;
+      }
+      if (c == '/' && peek(1) == '*') {
+        blockComment(out);
+        continue;
+      }
+      if (c == '"') {
+        string(out);
+        continue;
+      }
+      if (std::isdigit(static_cast<unsigned char>(c)) ||
+          (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1))))) {
+        number(out);
+        continue;
+      }
+      if (isIdentStart(c)) {
+        identifier(out);
+        continue;
+      }
+      if (!op(out)) {
+        unsigned char uc = static_cast<unsigned char>(c);
+        std::string shown = uc >= 0x20 && uc < 0x7f ? std::string(1, c) : "\\x" + hex(uc);
+        diags_.error(loc(pos_), "unexpected character '" + shown + "'");
+        ++pos_;
+      }
+    }
+    push(out, Tok::Newline, pos_, 0);
+    push(out, Tok::Eof, pos_, 0);
+    return out;
+  }
+
+ private:
+  static std::string hex(unsigned char c) {
+    static const char* d = "0123456789abcdef";
+    return {d[c >> 4], d[c & 15]};
+  }
+  char peek(size_t ahead) const {
+    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+  }
+  SourceLoc loc(size_t at) const {
+    return {file_, line_, static_cast<uint32_t>(at - lineStart_ + 1)};
+  }
+  void push(std::vector<Token>& out, Tok kind, size_t start, size_t len) {
+    Token t;
+    t.kind = kind;
+    t.loc = loc(start);
+    t.text = std::string_view(text_).substr(start, len);
+    out.push_back(t);
+  }
+  void skipToLineEnd() {
+    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+  }
+  void blockComment(std::vector<Token>& out) {
+    SourceLoc startLoc = loc(pos_);
+    pos_ += 2;
+    bool sawNewline = false;
+    while (pos_ < text_.size() && !(text_[pos_] == '*' && peek(1) == '/')) {
+      if (text_[pos_] == '\n') {
+        if (!sawNewline) push(out, Tok::Newline, pos_, 1);  // the comment ends the statement
+        sawNewline = true;
+        ++line_;
+        lineStart_ = pos_ + 1;
+      }
+      ++pos_;
+    }
+    if (pos_ >= text_.size()) {
+      diags_.error(startLoc, "unterminated /* comment");
+      return;
+    }
+    pos_ += 2;
+  }
+  void string(std::vector<Token>& out) {
+    size_t start = pos_;
+    ++pos_;
+    while (pos_ < text_.size() && text_[pos_] != '"' && text_[pos_] != '\n') ++pos_;
+    if (pos_ >= text_.size() || text_[pos_] != '"') {
+      diags_.error(loc(start), "unterminated string (a string must close on the same line)");
+      Token t;
+      t.kind = Tok::String;
+      t.loc = loc(start);
+      t.text = std::string_view(text_).substr(start + 1, pos_ - start - 1);
+      out.push_back(t);
+      return;
+    }
+    Token t;
+    t.kind = Tok::String;
+    t.loc = loc(start);
+    t.text = std::string_view(text_).substr(start + 1, pos_ - start - 1);
+    out.push_back(t);
+    ++pos_;
+  }
+  void number(std::vector<Token>& out) {
+    size_t start = pos_;
+    Token t;
+    t.loc = loc(start);
+    if (text_[pos_] == '0' && (peek(1) == 'x' || peek(1) == 'X') && std::isxdigit(static_cast<unsigned char>(peek(2)))) {
+      pos_ += 2;
+      size_t digits = pos_;
+      while (pos_ < text_.size() && std::isxdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+      uint64_t v = 0;
+      auto r = std::from_chars(text_.data() + digits, text_.data() + pos_, v, 16);
+      if (r.ec != std::errc()) diags_.error(t.loc, "hexadecimal number too large");
+      t.kind = Tok::Int;
+      t.intValue = static_cast<int64_t>(v);
+      t.text = std::string_view(text_).substr(start, pos_ - start);
+      out.push_back(t);
+      return;
+    }
+    bool isFloat = false;
+    while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    if (pos_ < text_.size() && text_[pos_] == '.' ) {
+      isFloat = true;
+      ++pos_;
+      while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    }
+    if (pos_ < text_.size() && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
+      size_t save = pos_;
+      ++pos_;
+      if (pos_ < text_.size() && (text_[pos_] == '+' || text_[pos_] == '-')) ++pos_;
+      if (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) {
+        isFloat = true;
+        while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+      } else {
+        pos_ = save;  // "2e" is the number 2 followed by the name e
+      }
+    }
+    t.text = std::string_view(text_).substr(start, pos_ - start);
+    std::string digits(t.text);
+    if (!isFloat) {
+      int64_t v = 0;
+      auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+      if (r.ec == std::errc()) {
+        t.kind = Tok::Int;
+        t.intValue = v;
+        out.push_back(t);
+        return;
+      }
+      // Too large for a 64-bit integer: keep it as a double.
+    }
+    t.kind = Tok::Float;
+    t.floatValue = std::strtod(digits.c_str(), nullptr);
+    out.push_back(t);
+  }
+  void identifier(std::vector<Token>& out) {
+    size_t start = pos_;
+    while (pos_ < text_.size() && isIdentChar(text_[pos_])) ++pos_;
+    std::string_view word = std::string_view(text_).substr(start, pos_ - start);
+    char lower[16];
+    Tok kind = Tok::Ident;
+    if (word.size() < sizeof lower) {
+      for (size_t i = 0; i < word.size(); ++i)
+        lower[i] = static_cast<char>(std::tolower(static_cast<unsigned char>(word[i])));
+      std::string_view lw(lower, word.size());
+      if (lw == "rem") {  // a remark runs to the end of the line
+        skipToLineEnd();
+        return;
+      }
+      kind = keywordKind(lw);
+    }
+    push(out, kind, start, word.size());
+  }
+  bool op(std::vector<Token>& out) {
+    char c = text_[pos_];
+    char n = peek(1);
+    auto two = [&](Tok k) {
+      push(out, k, pos_, 2);
+      pos_ += 2;
+      return true;
+    };
+    auto one = [&](Tok k) {
+      push(out, k, pos_, 1);
+      pos_ += 1;
+      return true;
+    };
+    switch (c) {
+      case '(': return one(Tok::LParen);
+      case ')': return one(Tok::RParen);
+      case '[': return one(Tok::LBracket);
+      case ']': return one(Tok::RBracket);
+      case ',': return one(Tok::Comma);
+      case ';': return one(Tok::Semicolon);
+      case ':': return one(Tok::Colon);
+      case '#': return one(Tok::Hash);
+      case '+':
+        if (n == '+') return two(Tok::PlusPlus);
+        if (n == '=') return two(Tok::PlusAssign);
+        return one(Tok::Plus);
+      case '-':
+        if (n == '-') return two(Tok::MinusMinus);
+        if (n == '=') return two(Tok::MinusAssign);
+        return one(Tok::Minus);
+      case '*':
+        if (n == '=') return two(Tok::StarAssign);
+        return one(Tok::Star);
+      case '/':
+        if (n == '=') return two(Tok::SlashAssign);
+        return one(Tok::Slash);
+      case '%': return one(Tok::Percent);
+      case '^': return one(Tok::Caret);
+      case '~': return one(Tok::Tilde);
+      case '&':
+        if (n == '&') return two(Tok::AndAnd);
+        return one(Tok::Amp);
+      case '|':
+        if (n == '|') return two(Tok::OrOr);
+        return one(Tok::Pipe);
+      case '!':
+        if (n == '=') return two(Tok::NotEq);
+        return one(Tok::Bang);
+      case '=':
+        if (n == '=') return two(Tok::EqEq);
+        return one(Tok::Assign);
+      case '<':
+        if (n == '>') return two(Tok::NotEq);
+        if (n == '=') return two(Tok::LessEq);
+        if (n == '<') return two(Tok::Shl);
+        return one(Tok::Less);
+      case '>':
+        if (n == '=') return two(Tok::GreaterEq);
+        if (n == '>') return two(Tok::Shr);
+        return one(Tok::Greater);
+      default: return false;
+    }
+  }
+
+  const std::string& text_;
+  uint32_t file_;
+  DiagnosticList& diags_;
+  size_t pos_ = 0;
+  uint32_t line_ = 1;
+  size_t lineStart_ = 0;
+};
+
+}  // namespace
+
+std::vector<Token> lex(const SourceSet& sources, uint32_t fileIndex, DiagnosticList& diags) {
+  return Lexer(sources, fileIndex, diags).run();
+}
+
+Tok keywordKind(std::string_view lowerWord) {
+  static const std::unordered_map<std::string_view, Tok> table = [] {
+    std::unordered_map<std::string_view, Tok> m;
+    for (const auto& k : kKeywords) m.emplace(k.word, k.kind);
+    return m;
+  }();
+  auto it = table.find(lowerWord);
+  return it == table.end() ? Tok::Ident : it->second;
+}
+
+const std::vector<std::string_view>& keywordSpellings() {
+  static const std::vector<std::string_view> words = [] {
+    std::vector<std::string_view> w;
+    for (const auto& k : kKeywords) w.push_back(k.word);
+    w.push_back("rem");
+    return w;
+  }();
+  return words;
+}
+
+std::string_view tokName(Tok t) {
+  switch (t) {
+    case Tok::Eof: return "end of file";
+    case Tok::Newline: return "end of line";
+    case Tok::Ident: return "a name";
+    case Tok::Int: case Tok::Float: return "a number";
+    case Tok::String: return "a string";
+    case Tok::LParen: return "'('";
+    case Tok::RParen: return "')'";
+    case Tok::LBracket: return "'['";
+    case Tok::RBracket: return "']'";
+    case Tok::Comma: return "','";
+    case Tok::Semicolon: return "';'";
+    case Tok::Colon: return "':'";
+    case Tok::Hash: return "'#'";
+    case Tok::Plus: return "'+'";
+    case Tok::Minus: return "'-'";
+    case Tok::Star: return "'*'";
+    case Tok::Slash: return "'/'";
+    case Tok::Percent: return "'%'";
+    case Tok::Caret: return "'^'";
+    case Tok::Amp: return "'&'";
+    case Tok::Pipe: return "'|'";
+    case Tok::Tilde: return "'~'";
+    case Tok::Bang: return "'!'";
+    case Tok::Shl: return "'<<'";
+    case Tok::Shr: return "'>>'";
+    case Tok::Assign: return "'='";
+    case Tok::EqEq: return "'=='";
+    case Tok::NotEq: return "'<>'";
+    case Tok::Less: return "'<'";
+    case Tok::LessEq: return "'<='";
+    case Tok::Greater: return "'>'";
+    case Tok::GreaterEq: return "'>='";
+    case Tok::AndAnd: return "'&&'";
+    case Tok::OrOr: return "'||'";
+    case Tok::PlusPlus: return "'++'";
+    case Tok::MinusMinus: return "'--'";
+    case Tok::PlusAssign: return "'+='";
+    case Tok::MinusAssign: return "'-='";
+    case Tok::StarAssign: return "'*='";
+    case Tok::SlashAssign: return "'/='";
+    case Tok::KwAnd: return "'and'";
+    case Tok::KwOr: return "'or'";
+    case Tok::KwNot: return "'not'";
+    case Tok::KwMod: return "'mod'";
+    case Tok::KwIf: return "'if'";
+    case Tok::KwThen: return "'then'";
+    case Tok::KwElse: return "'else'";
+    case Tok::KwElseIf: return "'elseif'";
+    case Tok::KwEndIf: return "'endif'";
+    case Tok::KwEnd: return "'end'";
+    case Tok::KwFor: return "'for'";
+    case Tok::KwTo: return "'to'";
+    case Tok::KwStep: return "'step'";
+    case Tok::KwNext: return "'next'";
+    case Tok::KwWhile: return "'while'";
+    case Tok::KwWend: return "'wend'";
+    case Tok::KwRepeat: return "'repeat'";
+    case Tok::KwUntil: return "'until'";
+    case Tok::KwBreak: return "'break'";
+    case Tok::KwContinue: return "'continue'";
+    case Tok::KwGoto: return "'goto'";
+    case Tok::KwGosub: return "'gosub'";
+    case Tok::KwReturn: return "'return'";
+    case Tok::KwSub: return "'sub'";
+    case Tok::KwEndSub: return "'endsub'";
+    case Tok::KwCall: return "'call'";
+    case Tok::KwDim: return "'dim'";
+    case Tok::KwData: return "'data'";
+    case Tok::KwPrint: return "'print'";
+    case Tok::KwInput: return "'input'";
+  }
+  return "a token";
+}
+
+}  // namespace rb

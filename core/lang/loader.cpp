@@ -1,0 +1,98 @@
+#include "lang/loader.h"
+
+#include <filesystem>
+#include <set>
+
+#include "lang/lexer.h"
+#include "lang/parser.h"
+
+namespace rb {
+
+namespace {
+
+constexpr int kMaxIncludeDepth = 32;
+
+class Loader {
+ public:
+  Loader(LoadedProgram& out, SourceReader& reader, const LoadOptions& options,
+         DiagnosticList& diags)
+      : out_(out), reader_(reader), options_(options), diags_(diags) {}
+
+  void loadMain(const std::string& name, std::string text) {
+    if (auto canonical = reader_.find(name)) seen_.insert(*canonical);
+    uint32_t index = out_.sources.add(name, std::move(text));
+    parseFile(index, 0, out_.stmts);
+  }
+
+ private:
+  void parseFile(uint32_t index, int depth, std::vector<ast::Stmt*>& dest) {
+    std::vector<Token> tokens = lex(out_.sources, index, diags_);
+    std::vector<ast::Stmt*> stmts = parseTokens(tokens, out_.arena, diags_);
+    for (ast::Stmt* s : stmts) {
+      if (s->kind == ast::StmtKind::Include) {
+        include(*s, index, depth, dest);
+      } else {
+        dest.push_back(s);
+      }
+    }
+  }
+
+  void include(const ast::Stmt& s, uint32_t from, int depth, std::vector<ast::Stmt*>& dest) {
+    std::string wanted(s.name);
+    if (depth + 1 > kMaxIncludeDepth) {
+      diags_.error(s.nameLoc, "includes nested too deeply (more than " +
+                                  std::to_string(kMaxIncludeDepth) + " levels)");
+      return;
+    }
+    namespace fs = std::filesystem;
+    std::vector<std::string> candidates;
+    fs::path wantedPath(wanted);
+    if (wantedPath.is_absolute()) {
+      candidates.push_back(wanted);
+    } else {
+      fs::path dir = fs::path(out_.sources.file(from).name()).parent_path();
+      candidates.push_back((dir / wantedPath).lexically_normal().string());
+      for (const std::string& lib : options_.libraryDirs)
+        candidates.push_back((fs::path(lib) / wantedPath).lexically_normal().string());
+    }
+    std::optional<std::string> found;
+    std::string display;
+    for (const std::string& c : candidates) {
+      found = reader_.find(c);
+      if (found) {
+        display = c;
+        break;
+      }
+    }
+    if (!found) {
+      diags_.error(s.nameLoc, "include file '" + wanted + "' not found");
+      return;
+    }
+    if (!seen_.insert(*found).second) return;  // each file once
+    std::optional<std::string> text = reader_.read(*found);
+    if (!text) {
+      diags_.error(s.nameLoc, "cannot read include file '" + wanted + "'");
+      return;
+    }
+    uint32_t index = out_.sources.add(display, std::move(*text));
+    parseFile(index, depth + 1, dest);
+  }
+
+  LoadedProgram& out_;
+  SourceReader& reader_;
+  const LoadOptions& options_;
+  DiagnosticList& diags_;
+  std::set<std::string> seen_;
+};
+
+}  // namespace
+
+std::unique_ptr<LoadedProgram> loadProgram(const std::string& name, std::string text,
+                                           SourceReader& reader, const LoadOptions& options,
+                                           DiagnosticList& diags) {
+  auto out = std::make_unique<LoadedProgram>();
+  Loader(*out, reader, options, diags).loadMain(name, std::move(text));
+  return out;
+}
+
+}  // namespace rb

@@ -1,0 +1,46 @@
+#pragma once
+// Loads a program: reads the main file, tokenizes and parses it, and splices in every
+// `#include`d file at the point of its directive (each file once). File access goes through a
+// SourceReader so that tests can load programs from memory.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lang/ast.h"
+#include "base/diagnostic.h"
+#include "base/source.h"
+
+namespace rb {
+
+/// Where program text comes from.
+class SourceReader {
+ public:
+  virtual ~SourceReader() = default;
+  /// A canonical name for an existing file (so that one file included twice is seen once), or
+  /// nullopt when there is no such file.
+  virtual std::optional<std::string> find(const std::string& path) = 0;
+  /// The whole text of a file found by find(), or nullopt on a read error.
+  virtual std::optional<std::string> read(const std::string& canonical) = 0;
+};
+
+struct LoadOptions {
+  /// Folders searched for an #include that is not found beside the including file.
+  std::vector<std::string> libraryDirs;
+};
+
+/// A parsed program with every include spliced in.
+struct LoadedProgram {
+  SourceSet sources;
+  ast::Arena arena;
+  std::vector<ast::Stmt*> stmts;
+};
+
+/// Loads `text` as the main file named `name` (already read by the caller). Diagnostics go to
+/// `diags`; the result is usable for checks even when there are errors.
+std::unique_ptr<LoadedProgram> loadProgram(const std::string& name, std::string text,
+                                           SourceReader& reader, const LoadOptions& options,
+                                           DiagnosticList& diags);
+
+}  // namespace rb

@@ -1,0 +1,695 @@
+#include "lang/parser.h"
+
+#include <cctype>
+#include <string>
+
+#include "lang/builtins.h"
+#include "lang/suggest.h"
+
+namespace rb {
+
+using ast::Expr;
+using ast::ExprKind;
+using ast::Stmt;
+using ast::StmtKind;
+
+BinaryOpInfo binaryOpInfo(Tok t) {
+  // Precedence, low to high: or; and; comparisons; |; &; << >>; + -; * / % mod; ^ (right).
+  switch (t) {
+    case Tok::KwOr: case Tok::OrOr: return {1, false};
+    case Tok::KwAnd: case Tok::AndAnd: return {2, false};
+    case Tok::Assign: case Tok::EqEq: case Tok::NotEq: case Tok::Less: case Tok::LessEq:
+    case Tok::Greater: case Tok::GreaterEq: return {3, false};
+    case Tok::Pipe: return {4, false};
+    case Tok::Amp: return {5, false};
+    case Tok::Shl: case Tok::Shr: return {6, false};
+    case Tok::Plus: case Tok::Minus: return {7, false};
+    case Tok::Star: case Tok::Slash: case Tok::Percent: case Tok::KwMod: return {8, false};
+    case Tok::Caret: return {9, true};
+    default: return {0, false};
+  }
+}
+
+namespace {
+
+constexpr int kMaxNesting = 200;
+
+/// 'text' (built by appending: GCC 12 warns falsely about operator+ chains of this shape).
+std::string quoted(std::string_view text, char quote = '\'') {
+  std::string out;
+  out.reserve(text.size() + 2);
+  out += quote;
+  out += text;
+  out += quote;
+  return out;
+}
+
+struct SyntaxError {};
+
+class Parser {
+ public:
+  Parser(const std::vector<Token>& toks, ast::Arena& arena, DiagnosticList& diags)
+      : toks_(toks), arena_(arena), diags_(diags) {}
+
+  std::vector<Stmt*> run() {
+    std::vector<Stmt*> out;
+    while (cur().kind != Tok::Eof) {
+      if (cur().kind == Tok::Newline) {
+        ++pos_;
+        continue;
+      }
+      size_t start = pos_;
+      try {
+        line(out);
+      } catch (const SyntaxError&) {
+        keepBlockOpener(start, out);
+        while (cur().kind != Tok::Newline && cur().kind != Tok::Eof) ++pos_;
+      }
+    }
+    return out;
+  }
+
+ private:
+  /// After a syntax error in a line that opens a block (for, while, repeat, a block if, sub) or
+  /// closes one with a condition (until), keeps a placeholder so that the blocks still pair
+  /// and no second, misleading error is reported.
+  void keepBlockOpener(size_t start, std::vector<Stmt*>& out) {
+    size_t i = start;
+    if (toks_[i].kind == Tok::Ident && toks_[i + 1].kind == Tok::Colon) i += 2;  // a label
+    StmtKind kind;
+    switch (toks_[i].kind) {
+      case Tok::KwFor: kind = StmtKind::For; break;
+      case Tok::KwWhile: kind = StmtKind::While; break;
+      case Tok::KwRepeat: kind = StmtKind::Repeat; break;
+      case Tok::KwSub: kind = StmtKind::Sub; break;
+      case Tok::KwUntil: kind = StmtKind::Until; break;
+      case Tok::KwIf: {
+        // A block if has nothing after "then" (or no "then"); a single-line if closes itself.
+        size_t j = i + 1;
+        while (toks_[j].kind != Tok::Newline && toks_[j].kind != Tok::Eof && toks_[j].kind != Tok::KwThen) ++j;
+        if (toks_[j].kind == Tok::KwThen && toks_[j + 1].kind != Tok::Newline && toks_[j + 1].kind != Tok::Eof)
+          return;
+        kind = StmtKind::If;
+        break;
+      }
+      default: return;
+    }
+    if (!out.empty() && out.back()->loc == toks_[i].loc) return;  // already added
+    Stmt* s = newStmt(kind, toks_[i].loc);
+    s->broken = true;
+    out.push_back(s);
+  }
+
+  const Token& cur() const { return toks_[pos_]; }
+  const Token& peek(size_t n = 1) const {
+    size_t i = pos_ + n;
+    return i < toks_.size() ? toks_[i] : toks_.back();
+  }
+  bool at(Tok k) const { return cur().kind == k; }
+  bool atLineEnd() const { return at(Tok::Newline) || at(Tok::Eof); }
+  const Token& advance() { return toks_[pos_++]; }
+  bool accept(Tok k) {
+    if (!at(k)) return false;
+    ++pos_;
+    return true;
+  }
+
+  [[noreturn]] void fail(SourceLoc loc, std::string message) {
+    // One error per line: a lexical error already explains what follows it.
+    if (!diags_.hasErrorOnLine(loc.file, loc.line)) diags_.error(loc, std::move(message));
+    throw SyntaxError{};
+  }
+  [[noreturn]] void failHere(const std::string& expected) {
+    std::string found(tokName(cur().kind));
+    if (cur().kind == Tok::Ident) found = quoted(cur().text);
+    fail(cur().loc, "expected " + expected + ", found " + found);
+  }
+  const Token& expect(Tok k, const std::string& what) {
+    if (!at(k)) failHere(what);
+    return advance();
+  }
+  void expectLineEnd() {
+    if (!atLineEnd()) {
+      std::string shown = cur().kind == Tok::String ? quoted(cur().text, '"') : quoted(cur().text);
+      fail(cur().loc, "unexpected " + shown + " after the end of the statement");
+    }
+  }
+
+  // line -> [label ':'] [statement] NEWLINE  |  '#' include STRING NEWLINE
+  void line(std::vector<Stmt*>& out) {
+    if (at(Tok::Hash)) {
+      Stmt* s = arena_.stmt();
+      s->kind = StmtKind::Include;
+      s->loc = cur().loc;
+      ++pos_;
+      if (!at(Tok::Ident) || lower(cur().text) != "include")
+        fail(cur().loc, "unknown directive: only #include is supported");
+      ++pos_;
+      const Token& file = expect(Tok::String, "a file name in quotes after #include");
+      s->name = file.text;
+      s->nameLoc = file.loc;
+      expectLineEnd();
+      out.push_back(s);
+      return;
+    }
+    if (at(Tok::Ident) && peek().kind == Tok::Colon) {
+      Stmt* s = arena_.stmt();
+      s->kind = StmtKind::Label;
+      s->loc = s->nameLoc = cur().loc;
+      s->name = cur().text;
+      pos_ += 2;
+      out.push_back(s);
+      if (atLineEnd()) return;
+    }
+    out.push_back(statement(false));
+    expectLineEnd();
+  }
+
+  Stmt* newStmt(StmtKind kind, SourceLoc loc) {
+    Stmt* s = arena_.stmt();
+    s->kind = kind;
+    s->loc = loc;
+    return s;
+  }
+
+  // statement -> keyword statement | assignment | command | sub call
+  Stmt* statement(bool inLineIf) {
+    const Token& t = cur();
+    SourceLoc loc = t.loc;
+    switch (t.kind) {
+      case Tok::KwPrint: {
+        ++pos_;
+        Stmt* s = newStmt(StmtKind::Print, loc);
+        printList(s);
+        return s;
+      }
+      case Tok::KwInput: return inputStmt();
+      case Tok::KwIf: return ifStmt(inLineIf);
+      case Tok::KwElseIf: {
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "elseif");
+        Stmt* s = newStmt(StmtKind::ElseIf, loc);
+        s->value = expression();
+        accept(Tok::KwThen);
+        return s;
+      }
+      case Tok::KwElse: {
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "else");
+        if (at(Tok::KwIf)) {  // "else if cond" is read as elseif
+          ++pos_;
+          Stmt* s = newStmt(StmtKind::ElseIf, loc);
+          s->value = expression();
+          accept(Tok::KwThen);
+          return s;
+        }
+        return newStmt(StmtKind::Else, loc);
+      }
+      case Tok::KwEndIf:
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "endif");
+        return newStmt(StmtKind::EndIf, loc);
+      case Tok::KwEnd:
+        ++pos_;
+        if (accept(Tok::KwIf)) {
+          noBlockInLineIf(inLineIf, loc, "end if");
+          return newStmt(StmtKind::EndIf, loc);
+        }
+        if (accept(Tok::KwSub)) {
+          noBlockInLineIf(inLineIf, loc, "end sub");
+          return newStmt(StmtKind::EndSub, loc);
+        }
+        return newStmt(StmtKind::End, loc);
+      case Tok::KwFor: return forStmt(inLineIf);
+      case Tok::KwNext: {
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "next");
+        Stmt* s = newStmt(StmtKind::Next, loc);
+        if (at(Tok::Ident)) {
+          s->name = cur().text;
+          s->nameLoc = cur().loc;
+          ++pos_;
+        }
+        return s;
+      }
+      case Tok::KwWhile: {
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "while");
+        Stmt* s = newStmt(StmtKind::While, loc);
+        s->value = expression();
+        return s;
+      }
+      case Tok::KwWend:
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "wend");
+        return newStmt(StmtKind::Wend, loc);
+      case Tok::KwRepeat:
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "repeat");
+        return newStmt(StmtKind::Repeat, loc);
+      case Tok::KwUntil: {
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "until");
+        Stmt* s = newStmt(StmtKind::Until, loc);
+        s->value = expression();
+        return s;
+      }
+      case Tok::KwBreak: ++pos_; return newStmt(StmtKind::Break, loc);
+      case Tok::KwContinue: ++pos_; return newStmt(StmtKind::Continue, loc);
+      case Tok::KwGoto:
+      case Tok::KwGosub: {
+        ++pos_;
+        Stmt* s = newStmt(t.kind == Tok::KwGoto ? StmtKind::Goto : StmtKind::Gosub, loc);
+        const Token& name = expect(Tok::Ident, "a label name");
+        s->name = name.text;
+        s->nameLoc = name.loc;
+        return s;
+      }
+      case Tok::KwReturn: {
+        ++pos_;
+        Stmt* s = newStmt(StmtKind::Return, loc);
+        if (!atLineEnd() && !at(Tok::KwElse)) s->value = expression();
+        return s;
+      }
+      case Tok::KwSub: return subStmt(inLineIf);
+      case Tok::KwEndSub:
+        ++pos_;
+        noBlockInLineIf(inLineIf, loc, "endsub");
+        return newStmt(StmtKind::EndSub, loc);
+      case Tok::KwCall: {
+        ++pos_;
+        Stmt* s = newStmt(StmtKind::Call, loc);
+        const Token& name = expect(Tok::Ident, "a sub name after call");
+        s->name = name.text;
+        s->nameLoc = name.loc;
+        if (accept(Tok::LParen)) {
+          s->paren = true;
+          if (!at(Tok::RParen)) argList(s->exprs);
+          expect(Tok::RParen, "')' to close the argument list");
+        } else if (!atLineEnd() && !at(Tok::KwElse)) {
+          argList(s->exprs);
+        }
+        return s;
+      }
+      case Tok::KwDim: return dimStmt();
+      case Tok::KwData: return dataStmt();
+      case Tok::Ident: return identStmt();
+      default: break;
+    }
+    failHere("a statement");
+  }
+
+  void noBlockInLineIf(bool inLineIf, SourceLoc loc, const char* what) {
+    if (inLineIf)
+      fail(loc, std::string("'") + what + "' cannot be part of a single-line if (put it on its own line)");
+  }
+
+  static std::string lower(std::string_view s) {
+    std::string r(s);
+    for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return r;
+  }
+
+  // print-list -> [ expr { (',' | ';') expr } [',' | ';'] ]
+  void printList(Stmt* s) {
+    while (!atLineEnd() && !at(Tok::KwElse)) {
+      s->exprs.push_back(expression());
+      if (at(Tok::Comma) || at(Tok::Semicolon)) {
+        s->seps.push_back(advance().kind);
+      } else {
+        s->seps.push_back(Tok::Eof);
+        break;
+      }
+    }
+  }
+
+  // input -> INPUT [prompt (',' | ';')] lvalue
+  Stmt* inputStmt() {
+    Stmt* s = newStmt(StmtKind::Input, cur().loc);
+    ++pos_;
+    Expr* first = expression();
+    if (at(Tok::Comma) || at(Tok::Semicolon)) {
+      ++pos_;
+      s->value = first;
+      s->target = lvalue();
+    } else {
+      if (first->kind != ExprKind::Var && first->kind != ExprKind::Index)
+        fail(first->loc, "input needs a variable to store what is typed");
+      s->target = first;
+    }
+    return s;
+  }
+
+  // if -> IF expr NEWLINE                      (block)
+  //     | IF expr THEN NEWLINE                 (block)
+  //     | IF expr THEN statement [ELSE statement]
+  Stmt* ifStmt(bool inLineIf) {
+    SourceLoc loc = cur().loc;
+    ++pos_;
+    Expr* cond = expression();
+    bool then = accept(Tok::KwThen);
+    if (atLineEnd()) {
+      noBlockInLineIf(inLineIf, loc, "if");
+      Stmt* s = newStmt(StmtKind::If, loc);
+      s->value = cond;
+      return s;
+    }
+    if (!then) failHere("'then' or the end of the line after the if condition");
+    Stmt* s = newStmt(StmtKind::IfLine, loc);
+    s->value = cond;
+    enter(loc);
+    s->body.push_back(statement(true));
+    if (accept(Tok::KwElse)) s->body.push_back(statement(true));
+    leave();
+    return s;
+  }
+
+  // for -> FOR name '=' expr TO expr [STEP expr]
+  Stmt* forStmt(bool inLineIf) {
+    SourceLoc loc = cur().loc;
+    ++pos_;
+    noBlockInLineIf(inLineIf, loc, "for");
+    Stmt* s = newStmt(StmtKind::For, loc);
+    const Token& v = expect(Tok::Ident, "the loop variable after for");
+    s->target = varExpr(v);
+    expect(Tok::Assign, "'=' after the loop variable");
+    s->exprs.push_back(expression());
+    expect(Tok::KwTo, "'to'");
+    s->exprs.push_back(expression());
+    if (accept(Tok::KwStep)) s->exprs.push_back(expression());
+    return s;
+  }
+
+  // sub -> SUB name ['(' [['&'] name {',' ['&'] name}] ')']
+  Stmt* subStmt(bool inLineIf) {
+    SourceLoc loc = cur().loc;
+    ++pos_;
+    noBlockInLineIf(inLineIf, loc, "sub");
+    Stmt* s = newStmt(StmtKind::Sub, loc);
+    const Token& name = expect(Tok::Ident, "a sub name");
+    s->name = name.text;
+    s->nameLoc = name.loc;
+    if (accept(Tok::LParen)) {
+      if (!at(Tok::RParen)) {
+        do {
+          ast::Param p;
+          p.byRef = accept(Tok::Amp);
+          const Token& pn = expect(Tok::Ident, "a parameter name");
+          p.name = pn.text;
+          p.loc = pn.loc;
+          s->params.push_back(p);
+        } while (accept(Tok::Comma));
+      }
+      expect(Tok::RParen, "')' to close the parameter list");
+    }
+    return s;
+  }
+
+  // dim -> DIM name ['[' expr {',' expr} ']'] {',' name [...]}
+  Stmt* dimStmt() {
+    Stmt* s = newStmt(StmtKind::Dim, cur().loc);
+    ++pos_;
+    do {
+      const Token& name = expect(Tok::Ident, "an array name after dim");
+      Expr* e = varExpr(name);
+      if (accept(Tok::LBracket)) {
+        e->kind = ExprKind::Index;
+        argList(e->args);
+        expect(Tok::RBracket, "']' to close the array size");
+      } else if (accept(Tok::LParen)) {
+        e->kind = ExprKind::Index;
+        argList(e->args);
+        expect(Tok::RParen, "')' to close the array size");
+      }
+      s->exprs.push_back(e);
+    } while (accept(Tok::Comma));
+    return s;
+  }
+
+  // data -> DATA name (';' | ',') expr {',' expr}
+  Stmt* dataStmt() {
+    Stmt* s = newStmt(StmtKind::Data, cur().loc);
+    ++pos_;
+    const Token& name = expect(Tok::Ident, "an array name after data");
+    s->name = name.text;
+    s->nameLoc = name.loc;
+    if (!accept(Tok::Semicolon) && !accept(Tok::Comma)) failHere("';' after the array name");
+    argList(s->exprs);
+    return s;
+  }
+
+  bool isAssignOp(Tok k) const {
+    return k == Tok::Assign || k == Tok::PlusAssign || k == Tok::MinusAssign ||
+           k == Tok::StarAssign || k == Tok::SlashAssign || k == Tok::PlusPlus ||
+           k == Tok::MinusMinus;
+  }
+
+  // Statement starting with a name: assignment, built-in command or sub call.
+  Stmt* identStmt() {
+    const Token& name = cur();
+    Tok next = peek().kind;
+    if (isAssignOp(next) || next == Tok::LBracket) return assignment();
+    if (const Builtin* b = findBuiltin(name.text, BuiltinKind::Command)) return command(*b);
+    if (next == Tok::LParen) {
+      if (const Builtin* f = findBuiltin(name.text, BuiltinKind::Function))
+        fail(name.loc, "'" + std::string(f->name) + "' is a function: use its value, as in x = " +
+                           std::string(f->name) + "(...)");
+      Stmt* s = newStmt(StmtKind::Call, name.loc);
+      s->name = name.text;
+      s->nameLoc = name.loc;
+      s->paren = true;
+      pos_ += 2;
+      if (!at(Tok::RParen)) argList(s->exprs);
+      expect(Tok::RParen, "')' to close the argument list");
+      return s;
+    }
+    if (const Builtin* f = findBuiltin(name.text, BuiltinKind::Function))
+      fail(name.loc, "'" + std::string(f->name) + "' is a function: use its value, as in x = " +
+                         std::string(f->name) + "(...)");
+    if (findBuiltin(name.text, BuiltinKind::Constant))
+      fail(name.loc, "'" + std::string(name.text) + "' is a constant, not a command");
+    std::string msg = "unknown command '" + std::string(name.text) + "'";
+    std::string hint = suggestCommand(name.text);
+    if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
+    fail(name.loc, msg);
+  }
+
+  // assignment -> lvalue ('=' | '+=' | '-=' | '*=' | '/=') expr | lvalue ('++' | '--')
+  Stmt* assignment() {
+    SourceLoc loc = cur().loc;
+    if (const Builtin* b = findAnyBuiltin(cur().text)) {
+      const char* what = b->kind == BuiltinKind::Constant ? "a built-in constant"
+                         : b->kind == BuiltinKind::Command ? "a command" : "a built-in function";
+      fail(loc, "cannot assign to '" + std::string(cur().text) + "': it is " + what);
+    }
+    Stmt* s = newStmt(StmtKind::Assign, loc);
+    s->target = lvalue();
+    if (!isAssignOp(cur().kind)) failHere("'=' in an assignment");
+    s->op = advance().kind;
+    if (s->op != Tok::PlusPlus && s->op != Tok::MinusMinus) s->value = expression();
+    return s;
+  }
+
+  // command -> NAME [args] | NAME '(' args ')'
+  Stmt* command(const Builtin& b) {
+    Stmt* s = newStmt(StmtKind::Command, cur().loc);
+    s->name = cur().text;
+    s->nameLoc = cur().loc;
+    ++pos_;
+    if (atLineEnd() || at(Tok::KwElse)) return s;
+    if (b.printList) {
+      printList(s);
+      return s;
+    }
+    if (at(Tok::LParen) && parenthesizedArgList()) {
+      s->paren = true;
+      ++pos_;
+      argList(s->exprs);
+      expect(Tok::RParen, "')'");
+      return s;
+    }
+    argList(s->exprs);
+    return s;
+  }
+
+  /// True when the tokens from '(' to the matching ')' hold a top-level comma and the line ends
+  /// right after the ')': `rLocate(400, 300)` is an argument list, `rForward (a+b)*2` is not.
+  bool parenthesizedArgList() const {
+    int depth = 0;
+    bool comma = false;
+    for (size_t i = pos_; i < toks_.size(); ++i) {
+      Tok k = toks_[i].kind;
+      if (k == Tok::Newline || k == Tok::Eof) return false;
+      if (k == Tok::LParen || k == Tok::LBracket) ++depth;
+      if (k == Tok::RParen || k == Tok::RBracket) {
+        if (--depth == 0) {
+          Tok after = i + 1 < toks_.size() ? toks_[i + 1].kind : Tok::Eof;
+          return comma && (after == Tok::Newline || after == Tok::Eof || after == Tok::KwElse);
+        }
+      }
+      if (k == Tok::Comma && depth == 1) comma = true;
+    }
+    return false;
+  }
+
+  void argList(std::vector<Expr*>& out) {
+    do {
+      out.push_back(expression());
+    } while (accept(Tok::Comma));
+  }
+
+  Expr* varExpr(const Token& t) {
+    Expr* e = arena_.expr();
+    e->kind = ExprKind::Var;
+    e->loc = t.loc;
+    e->text = t.text;
+    return e;
+  }
+
+  // lvalue -> name | name '[' expr {',' expr} ']'
+  Expr* lvalue() {
+    const Token& name = expect(Tok::Ident, "a variable name");
+    if (findBuiltin(name.text, BuiltinKind::Constant))
+      fail(name.loc, "cannot assign to '" + std::string(name.text) + "': it is a built-in constant");
+    Expr* e = varExpr(name);
+    if (accept(Tok::LBracket)) {
+      e->kind = ExprKind::Index;
+      argList(e->args);
+      expect(Tok::RBracket, "']' to close the index");
+    }
+    return e;
+  }
+
+  // expression -> precedence climbing over binaryOpInfo()
+  Expr* expression() { return binary(1); }
+
+  Expr* binary(int minPrec) {
+    Expr* left = unary();
+    for (;;) {
+      Tok op = cur().kind;
+      BinaryOpInfo info = binaryOpInfo(op);
+      if (info.prec == 0 || info.prec < minPrec) return left;
+      SourceLoc loc = cur().loc;
+      ++pos_;
+      enter(loc);
+      Expr* right = binary(info.rightAssoc ? info.prec : info.prec + 1);
+      leave();
+      Expr* e = arena_.expr();
+      e->kind = ExprKind::Binary;
+      e->op = op;
+      e->loc = loc;
+      e->args = {left, right};
+      left = e;
+    }
+  }
+
+  // unary -> ('-' | '+' | NOT | '!' | '~') unary | postfix
+  Expr* unary() {
+    Tok k = cur().kind;
+    if (k == Tok::Minus || k == Tok::Plus || k == Tok::KwNot || k == Tok::Bang || k == Tok::Tilde) {
+      SourceLoc loc = cur().loc;
+      ++pos_;
+      enter(loc);
+      Expr* operand = unary();
+      leave();
+      // Fold a minus sign into a number literal so that -5 is a constant.
+      if (k == Tok::Minus && operand->kind == ExprKind::Int && operand->ival != INT64_MIN) {
+        operand->ival = -operand->ival;
+        operand->loc = loc;
+        return operand;
+      }
+      if (k == Tok::Minus && operand->kind == ExprKind::Float) {
+        operand->dval = -operand->dval;
+        operand->loc = loc;
+        return operand;
+      }
+      if (k == Tok::Plus) return operand;
+      Expr* e = arena_.expr();
+      e->kind = ExprKind::Unary;
+      e->op = k;
+      e->loc = loc;
+      e->args = {operand};
+      return e;
+    }
+    return primary();
+  }
+
+  // primary -> number | string | '(' expression ')' | name | name '(' args ')' | name '[' args ']'
+  Expr* primary() {
+    const Token& t = cur();
+    Expr* e = arena_.expr();
+    e->loc = t.loc;
+    switch (t.kind) {
+      case Tok::Int:
+        e->kind = ExprKind::Int;
+        e->ival = t.intValue;
+        ++pos_;
+        return e;
+      case Tok::Float:
+        e->kind = ExprKind::Float;
+        e->dval = t.floatValue;
+        ++pos_;
+        return e;
+      case Tok::String:
+        e->kind = ExprKind::Str;
+        e->text = t.text;
+        ++pos_;
+        return e;
+      case Tok::LParen: {
+        ++pos_;
+        enter(t.loc);
+        Expr* inner = expression();
+        leave();
+        expect(Tok::RParen, "')'");
+        return inner;
+      }
+      case Tok::Ident: {
+        e->text = t.text;
+        ++pos_;
+        if (accept(Tok::LParen)) {
+          e->kind = ExprKind::Call;
+          enter(t.loc);
+          if (!at(Tok::RParen)) argList(e->args);
+          leave();
+          expect(Tok::RParen, "')' to close the argument list");
+          return e;
+        }
+        if (accept(Tok::LBracket)) {
+          e->kind = ExprKind::Index;
+          enter(t.loc);
+          argList(e->args);
+          leave();
+          expect(Tok::RBracket, "']' to close the index");
+          return e;
+        }
+        e->kind = ExprKind::Var;
+        return e;
+      }
+      default: break;
+    }
+    if (t.kind >= Tok::KwAnd) {
+      fail(t.loc, "expected an expression, found the keyword '" + std::string(t.text) + "'");
+    }
+    failHere("an expression");
+  }
+
+  void enter(SourceLoc loc) {
+    if (++depth_ > kMaxNesting) fail(loc, "expression nested too deeply");
+  }
+  void leave() { --depth_; }
+
+  const std::vector<Token>& toks_;
+  ast::Arena& arena_;
+  DiagnosticList& diags_;
+  size_t pos_ = 0;
+  int depth_ = 0;
+};
+
+}  // namespace
+
+std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena& arena,
+                                    DiagnosticList& diags) {
+  return Parser(tokens, arena, diags).run();
+}
+
+}  // namespace rb

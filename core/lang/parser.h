@@ -1,0 +1,25 @@
+#pragma once
+// Tokens of one file -> flat statement list. Syntax errors are collected; after an error the
+// parser skips to the end of the line and goes on, so one run reports every bad line.
+
+#include <vector>
+
+#include "lang/ast.h"
+#include "base/diagnostic.h"
+#include "lang/token.h"
+
+namespace rb {
+
+/// Parses one file's tokens. `#include` lines become StmtKind::Include entries.
+std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena& arena,
+                                    DiagnosticList& diags);
+
+/// The binary operator table: precedence (higher binds tighter, 0 = not a binary operator) and
+/// associativity. Unary operators bind tighter than every binary one.
+struct BinaryOpInfo {
+  int prec;
+  bool rightAssoc;
+};
+BinaryOpInfo binaryOpInfo(Tok t);
+
+}  // namespace rb

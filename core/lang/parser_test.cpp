@@ -1,0 +1,106 @@
+#include <catch2/catch.hpp>
+
+#include "lang/lexer.h"
+#include "lang/parser.h"
+
+using namespace rb;
+using ast::ExprKind;
+using ast::StmtKind;
+
+namespace {
+struct Parsed {
+  SourceSet sources;
+  ast::Arena arena;
+  DiagnosticList diags;
+  std::vector<ast::Stmt*> stmts;
+};
+std::unique_ptr<Parsed> parse(const std::string& text) {
+  auto p = std::make_unique<Parsed>();
+  uint32_t f = p->sources.add("t.bas", text);
+  auto toks = lex(p->sources, f, p->diags);
+  p->stmts = parseTokens(toks, p->arena, p->diags);
+  return p;
+}
+/// A compact rendering of an expression tree: (op a b).
+std::string show(const ast::Expr* e) {
+  std::string out;
+  switch (e->kind) {
+    case ExprKind::Int: return std::to_string(e->ival);
+    case ExprKind::Var: return std::string(e->text);
+    case ExprKind::Unary:
+    case ExprKind::Binary:
+      out += '(';
+      out += tokName(e->op);
+      for (const ast::Expr* a : e->args) {
+        out += ' ';
+        out += show(a);
+      }
+      out += ')';
+      return out;
+    default: return "?";
+  }
+}
+std::string exprOf(const std::string& text) {
+  auto p = parse("x = " + text);
+  REQUIRE_FALSE(p->diags.hasErrors());
+  return show(p->stmts[0]->value);
+}
+}  // namespace
+
+TEST_CASE("precedence follows the documented table", "[parser]") {
+  CHECK(exprOf("1 + 2 * 3") == "('+' 1 ('*' 2 3))");
+  CHECK(exprOf("2 ^ 3 ^ 2") == "('^' 2 ('^' 3 2))");
+  CHECK(exprOf("-a ^ 2") == "('^' ('-' a) 2)");
+  CHECK(exprOf("a & 3 = 0") == "('=' ('&' a 3) 0)");
+  CHECK(exprOf("a | b & c") == "('|' a ('&' b c))");
+  CHECK(exprOf("a or b and c") == "('or' a ('and' b c))");
+  CHECK(exprOf("not a = b") == "('=' ('not' a) b)");
+  CHECK(exprOf("a << 1 + 1") == "('<<' a ('+' 1 1))");
+  CHECK(exprOf("a < b = c") == "('=' ('<' a b) c)");
+}
+
+TEST_CASE("statements of a line: labels, single-line if with else", "[parser]") {
+  auto p = parse("Main: print 1\nif a then b = 1 else gosub X\n");
+  REQUIRE_FALSE(p->diags.hasErrors());
+  REQUIRE(p->stmts.size() == 3);
+  CHECK(p->stmts[0]->kind == StmtKind::Label);
+  CHECK(p->stmts[1]->kind == StmtKind::Print);
+  CHECK(p->stmts[2]->kind == StmtKind::IfLine);
+  REQUIRE(p->stmts[2]->body.size() == 2);
+  CHECK(p->stmts[2]->body[1]->kind == StmtKind::Gosub);
+}
+
+TEST_CASE("block if forms", "[parser]") {
+  auto p = parse("if a\nelseif b then\nelse if c\nelse\nend if\nendif");
+  REQUIRE_FALSE(p->diags.hasErrors());
+  std::vector<StmtKind> k;
+  for (auto* s : p->stmts) k.push_back(s->kind);
+  CHECK(k == std::vector<StmtKind>{StmtKind::If, StmtKind::ElseIf, StmtKind::ElseIf, StmtKind::Else,
+                                   StmtKind::EndIf, StmtKind::EndIf});
+}
+
+TEST_CASE("print(x) is print with a parenthesised expression", "[parser]") {
+  auto p = parse("print(1) + 2");
+  REQUIRE_FALSE(p->diags.hasErrors());
+  CHECK(show(p->stmts[0]->exprs[0]) == "('+' 1 2)");
+}
+
+TEST_CASE("a command may take its arguments in parentheses", "[parser]") {
+  auto p = parse("randomize(5)\nmid = 1");
+  CHECK(p->stmts[0]->kind == StmtKind::Command);
+  CHECK(p->diags.errorCount() == 1);  // mid is a function name
+}
+
+TEST_CASE("one error per bad line, parsing goes on", "[parser]") {
+  auto p = parse("x = (1\nprint 1\ny = ]\n");
+  CHECK(p->diags.errorCount() == 2);
+  CHECK(p->stmts.size() == 1);
+}
+
+TEST_CASE("deep nesting is an error, not a crash", "[parser]") {
+  auto p = parse("x = " + std::string(5000, '(') + "1" + std::string(5000, ')'));
+  REQUIRE(p->diags.errorCount() == 1);
+  CHECK(p->diags.all()[0].message == "expression nested too deeply");
+  auto q = parse("x = " + std::string(5000, '-') + "1");
+  CHECK(q->diags.errorCount() == 1);
+}

@@ -1,0 +1,320 @@
+#include "lang/builtins.h"
+
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "machine/builtins_impl.h"
+#include "base/runtime_error.h"
+
+namespace rb {
+
+namespace {
+
+using K = BuiltinKind;
+
+// The table. Signatures name the parameters: `[...]` is optional, `&name` receives a result
+// (the argument must be a variable), `name...` repeats, and a final `items...` takes a
+// print-style list (items separated by ',' or ';').
+std::vector<Builtin> makeTable() {
+  using namespace builtins;
+  std::vector<Builtin> t = {
+      // ---- constants
+      {"True", K::Constant, "constant", "", nullptr, 1, "1"},
+      {"False", K::Constant, "constant", "", nullptr, 0, "0"},
+      {"Up", K::Constant, "constant", "", nullptr, 0, "pen up (0)"},
+      {"Down", K::Constant, "constant", "", nullptr, 1, "pen down (1)"},
+      {"On", K::Constant, "constant", "", nullptr, 1, "1"},
+      {"Off", K::Constant, "constant", "", nullptr, 0, "0"},
+      {"Black", K::Constant, "colour", "", nullptr, 0, "colour 0"},
+      {"Blue", K::Constant, "colour", "", nullptr, 1, "colour 1"},
+      {"Green", K::Constant, "colour", "", nullptr, 2, "colour 2"},
+      {"Cyan", K::Constant, "colour", "", nullptr, 3, "colour 3"},
+      {"Red", K::Constant, "colour", "", nullptr, 4, "colour 4"},
+      {"Magenta", K::Constant, "colour", "", nullptr, 5, "colour 5"},
+      {"Brown", K::Constant, "colour", "", nullptr, 6, "colour 6"},
+      {"Gray", K::Constant, "colour", "", nullptr, 7, "colour 7"},
+      {"DarkGray", K::Constant, "colour", "", nullptr, 8, "colour 8"},
+      {"LightBlue", K::Constant, "colour", "", nullptr, 9, "colour 9"},
+      {"LightGreen", K::Constant, "colour", "", nullptr, 10, "colour 10"},
+      {"LightCyan", K::Constant, "colour", "", nullptr, 11, "colour 11"},
+      {"LightRed", K::Constant, "colour", "", nullptr, 12, "colour 12"},
+      {"LightMagenta", K::Constant, "colour", "", nullptr, 13, "colour 13"},
+      {"Yellow", K::Constant, "colour", "", nullptr, 14, "colour 14"},
+      {"White", K::Constant, "colour", "", nullptr, 15, "colour 15"},
+
+      // ---- math
+      {"abs", K::Function, "math", "x", mathAbs, 0, "absolute value"},
+      {"sqrt", K::Function, "math", "x", mathSqrt, 0, "square root (x >= 0)"},
+      {"sin", K::Function, "math", "radians", mathSin, 0, "sine of an angle in radians"},
+      {"cos", K::Function, "math", "radians", mathCos, 0, "cosine of an angle in radians"},
+      {"tan", K::Function, "math", "radians", mathTan, 0, "tangent of an angle in radians"},
+      {"asin", K::Function, "math", "x", mathAsin, 0, "arc sine in radians (-1 <= x <= 1)"},
+      {"acos", K::Function, "math", "x", mathAcos, 0, "arc cosine in radians (-1 <= x <= 1)"},
+      {"atan", K::Function, "math", "x", mathAtan, 0, "arc tangent in radians"},
+      {"atan2", K::Function, "math", "y, x", mathAtan2, 0, "angle of the vector (x, y) in radians"},
+      {"exp", K::Function, "math", "x", mathExp, 0, "e to the power x"},
+      {"ln", K::Function, "math", "x", mathLn, 0, "natural logarithm (x > 0)"},
+      {"log", K::Function, "math", "x", mathLog, 0, "base-10 logarithm (x > 0)"},
+      {"pow", K::Function, "math", "x, y", mathPow, 0, "x to the power y (same as x ^ y)"},
+      {"int", K::Function, "math", "x", mathInt, 0, "x truncated toward zero"},
+      {"floor", K::Function, "math", "x", mathFloor, 0, "largest integer <= x"},
+      {"ceil", K::Function, "math", "x", mathCeil, 0, "smallest integer >= x"},
+      {"frac", K::Function, "math", "x", mathFrac, 0, "fractional part: x - int(x)"},
+      {"round", K::Function, "math", "x", mathRound, 0, "nearest integer (halves away from zero)"},
+      {"sign", K::Function, "math", "x", mathSign, 0, "-1, 0 or 1"},
+      {"min", K::Function, "math", "a, b...", mathMin, 0, "the smallest argument"},
+      {"max", K::Function, "math", "a, b...", mathMax, 0, "the largest argument"},
+      {"limit", K::Function, "math", "x, low, high", mathLimit, 0, "x clamped to low..high"},
+      {"within", K::Function, "math", "x, low, high", mathWithin, 0, "1 if low <= x <= high, else 0"},
+      {"pi", K::Function, "math", "[factor]", mathPi, 0, "3.14159... times factor (default 1)"},
+      {"rtod", K::Function, "math", "radians", mathRtoD, 0, "radians to degrees"},
+      {"dtor", K::Function, "math", "degrees", mathDtoR, 0, "degrees to radians"},
+      {"polarA", K::Function, "math", "x, y", mathPolarA, 0,
+       "angle of (x, y) in radians, atan2(y, x); screen y grows downward"},
+      {"polarR", K::Function, "math", "x, y", mathPolarR, 0, "length of (x, y): sqrt(x*x + y*y)"},
+      {"cartX", K::Function, "math", "r, radians", mathCartX, 0, "x of the polar point: r*cos(a)"},
+      {"cartY", K::Function, "math", "r, radians", mathCartY, 0, "y of the polar point: r*sin(a)"},
+      {"random", K::Function, "math", "n", mathRandom, 0, "random integer 0 .. n-1 (seeded by --seed)"},
+      {"rRandom", K::Function, "math", "n", mathRRandom, 0, "random real in [0, n)"},
+      {"randomize", K::Command, "math", "seed", mathRandomize, 0, "restarts the random numbers from seed"},
+
+      // ---- strings and conversion
+      {"length", K::Function, "string", "s", strLength, 0, "number of characters"},
+      {"left", K::Function, "string", "s, n", strLeft, 0, "the first n characters"},
+      {"right", K::Function, "string", "s, n", strRight, 0, "the last n characters"},
+      {"mid", K::Function, "string", "s, start [, count]", strMid, 0,
+       "count characters (default: all) from position start (1 = first)"},
+      {"upper", K::Function, "string", "s", strUpper, 0, "upper case"},
+      {"lower", K::Function, "string", "s", strLower, 0, "lower case"},
+      {"trim", K::Function, "string", "s", strTrim, 0, "s without leading and trailing spaces"},
+      {"trimL", K::Function, "string", "s", strTrimL, 0, "s without leading spaces"},
+      {"trimR", K::Function, "string", "s", strTrimR, 0, "s without trailing spaces"},
+      {"spaces", K::Function, "string", "n", strSpaces, 0, "n spaces"},
+      {"reverse", K::Function, "string", "s", strReverse, 0, "s backwards"},
+      {"instr", K::Function, "string", "s, find [, start]", strInstr, 0,
+       "position (1 = first) of find in s at or after start, 0 if absent"},
+      {"contains", K::Function, "string", "s, find", strContains, 0, "1 if find occurs in s, else 0"},
+      {"replace", K::Function, "string", "s, find, with", strReplace, 0, "s with every find replaced"},
+      {"extract", K::Function, "string", "s, delimiter, n", strExtract, 0,
+       "the n-th field (1 = first) of s split at delimiter"},
+      {"char", K::Function, "string", "code", strChar, 0, "one-character string with that code"},
+      {"ascii", K::Function, "string", "s", strAscii, 0, "code of the first character of s"},
+      {"toString", K::Function, "string", "x [, decimals]", strToString, 0,
+       "x as text (with a fixed number of decimals if given)"},
+      {"toNumber", K::Function, "string", "s [, default]", strToNumber, 0,
+       "the number s spells; default (or an error) if it is not a number"},
+      {"isNumber", K::Function, "string", "value", strIsNumber, 0, "1 if value is a number"},
+      {"isString", K::Function, "string", "value", strIsString, 0, "1 if value is a string"},
+
+      // ---- time
+      {"timer", K::Function, "time", "", timeTimer, 0, "milliseconds since the program started"},
+      {"delay", K::Command, "time", "ms", timeDelay, 0, "waits ms milliseconds"},
+  };
+  appendRobotBuiltins(t);
+  appendGraphicsBuiltins(t);
+  appendInputBuiltins(t);
+  return t;
+}
+
+// ---- signature parsing
+
+struct SigNode {
+  enum Kind { Param, Optional } kind;
+  ParamSpec param;
+  bool repeats = false;
+  std::vector<SigNode> children;
+};
+
+std::vector<SigNode> parseSignature(std::string_view sig, size_t& pos, std::string_view name) {
+  std::vector<SigNode> out;
+  while (pos < sig.size()) {
+    char c = sig[pos];
+    if (c == ' ' || c == ',') {
+      ++pos;
+    } else if (c == '[') {
+      ++pos;
+      SigNode n{SigNode::Optional, {}, false, parseSignature(sig, pos, name)};
+      if (pos >= sig.size() || sig[pos] != ']')
+        throw std::logic_error("builtin signature: missing ] in " + std::string(name));
+      ++pos;
+      out.push_back(std::move(n));
+    } else if (c == ']') {
+      return out;
+    } else {
+      SigNode n{SigNode::Param, {}, false, {}};
+      if (c == '&') {
+        n.param.out = true;
+        ++pos;
+      }
+      size_t start = pos;
+      while (pos < sig.size() && (std::isalnum(static_cast<unsigned char>(sig[pos])) || sig[pos] == '_'))
+        ++pos;
+      n.param.name = sig.substr(start, pos - start);
+      if (n.param.name.empty())
+        throw std::logic_error("builtin signature: bad character in " + std::string(name));
+      if (sig.substr(pos, 3) == "...") {
+        n.repeats = true;
+        pos += 3;
+      }
+      out.push_back(std::move(n));
+    }
+  }
+  return out;
+}
+
+void expand(const std::vector<SigNode>& seq, size_t i, std::vector<ParamSpec> cur,
+            std::vector<std::vector<ParamSpec>>& out, bool& repeats) {
+  if (i == seq.size()) {
+    out.push_back(std::move(cur));
+    return;
+  }
+  const SigNode& n = seq[i];
+  if (n.kind == SigNode::Param) {
+    cur.push_back(n.param);
+    if (n.repeats) repeats = true;
+    expand(seq, i + 1, std::move(cur), out, repeats);
+    return;
+  }
+  // Optional group: with it (longer forms first) and without.
+  std::vector<std::vector<ParamSpec>> inner;
+  expand(n.children, 0, {}, inner, repeats);
+  for (auto& in : inner) {
+    std::vector<ParamSpec> with = cur;
+    with.insert(with.end(), in.begin(), in.end());
+    expand(seq, i + 1, std::move(with), out, repeats);
+  }
+  expand(seq, i + 1, std::move(cur), out, repeats);
+}
+
+void derive(Builtin& b) {
+  if (b.kind == BuiltinKind::Constant) return;
+  size_t pos = 0;
+  std::vector<SigNode> seq = parseSignature(b.signature, pos, b.name);
+  std::vector<std::vector<ParamSpec>> forms;
+  bool repeats = false;
+  expand(seq, 0, {}, forms, repeats);
+  b.minArgs = INT32_MAX;
+  b.maxArgs = 0;
+  for (const auto& f : forms) {
+    int n = static_cast<int>(f.size());
+    b.minArgs = std::min(b.minArgs, n);
+    b.maxArgs = std::max(b.maxArgs, n);
+    if (static_cast<int>(b.forms.size()) <= n) b.forms.resize(static_cast<size_t>(n) + 1);
+    if (b.forms[static_cast<size_t>(n)].empty()) b.forms[static_cast<size_t>(n)] = f;
+  }
+  if (repeats) {
+    b.maxArgs = -1;
+    const auto& longest = b.forms.back();
+    if (!longest.empty() && longest.back().name == "items") b.printList = true;
+  }
+}
+
+}  // namespace
+
+const ParamSpec& Builtin::param(int n, int i) const {
+  static const ParamSpec none{"argument", false};
+  if (n >= 0 && static_cast<size_t>(n) < forms.size() && !forms[static_cast<size_t>(n)].empty() &&
+      i < static_cast<int>(forms[static_cast<size_t>(n)].size()))
+    return forms[static_cast<size_t>(n)][static_cast<size_t>(i)];
+  // Beyond the listed forms, the repeated last parameter.
+  if (maxArgs < 0 && !forms.empty() && !forms.back().empty()) return forms.back().back();
+  return none;
+}
+
+std::string Builtin::arityText() const {
+  if (maxArgs < 0) return "at least " + std::to_string(minArgs);
+  if (minArgs == maxArgs) return std::to_string(minArgs);
+  return std::to_string(minArgs) + " to " + std::to_string(maxArgs);
+}
+
+const std::vector<Builtin>& builtinTable() {
+  static const std::vector<Builtin> table = [] {
+    std::vector<Builtin> t = makeTable();
+    for (Builtin& b : t) derive(b);
+    return t;
+  }();
+  return table;
+}
+
+namespace {
+std::string lowerName(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return r;
+}
+
+struct Index {
+  std::unordered_map<std::string, const Builtin*> byKind[3];
+};
+
+const Index& index() {
+  static const Index idx = [] {
+    Index i;
+    for (const Builtin& b : builtinTable()) i.byKind[static_cast<int>(b.kind)].emplace(lowerName(b.name), &b);
+    return i;
+  }();
+  return idx;
+}
+}  // namespace
+
+const Builtin* findBuiltin(std::string_view name, BuiltinKind kind) {
+  if (name.size() > 40) return nullptr;
+  const auto& m = index().byKind[static_cast<int>(kind)];
+  auto it = m.find(lowerName(name));
+  return it == m.end() ? nullptr : it->second;
+}
+
+const Builtin* findAnyBuiltin(std::string_view name) {
+  for (BuiltinKind k : {BuiltinKind::Constant, BuiltinKind::Function, BuiltinKind::Command})
+    if (const Builtin* b = findBuiltin(name, k)) return b;
+  return nullptr;
+}
+
+// ---- Args
+
+std::string Args::describe(int i) const {
+  std::string what = builtin_.kind == BuiltinKind::Function ? std::string(builtin_.name) + "()"
+                                                            : std::string(builtin_.name);
+  return "argument " + std::to_string(i + 1) + " (" + std::string(builtin_.param(n_, i).name) +
+         ") of " + what;
+}
+
+double Args::num(int i) const {
+  const Value& v = v_[i];
+  if (v.isInt()) return static_cast<double>(v.i());
+  if (v.isNum()) return v.d();
+  throw RuntimeError(describe(i) + " must be a number, not " +
+                     (v.isStr() ? "a string" : v.isArr() ? "an array" : "nothing"));
+}
+
+int64_t Args::integer(int i) const {
+  const Value& v = v_[i];
+  if (v.isInt()) return v.i();
+  double d = std::trunc(num(i));
+  if (!(d >= -9.2e18 && d <= 9.2e18)) throw RuntimeError(describe(i) + " is too large");
+  return static_cast<int64_t>(d);
+}
+
+uint32_t Args::colour(int i) const {
+  int64_t c = integer(i);
+  if (c < 0 || c > 0xFFFFFF) throw RuntimeError(describe(i) + " must be a colour: 0..15 or an RGB() value");
+  return static_cast<uint32_t>(c);
+}
+
+int Args::coordinate(int i) const {
+  double v = std::round(num(i));
+  if (v < -1e6) v = -1e6;
+  if (v > 1e6) v = 1e6;
+  return static_cast<int>(v);
+}
+
+const std::string& Args::str(int i) const {
+  const Value& v = v_[i];
+  if (v.isStr()) return v.str();
+  throw RuntimeError(describe(i) + " must be a string, not " +
+                     (v.isNumeric() ? "a number" : v.isArr() ? "an array" : "nothing"));
+}
+
+}  // namespace rb

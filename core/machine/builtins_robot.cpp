@@ -1,0 +1,182 @@
+// Robot built-ins: rLocate, rForward, rTurn, the sensors. They act on the simulated robot
+// (SimRobot) and report what they did to the Machine's observer for `rb trace`.
+#include <cmath>
+#include <functional>
+
+#include "machine/builtins_impl.h"
+#include "base/runtime_error.h"
+#include "robot/sim_constants.h"
+
+namespace rb::builtins {
+
+namespace {
+
+using K = BuiltinKind;
+
+std::string argText(Args& a) {
+  std::string s;
+  for (int i = 0; i < a.size(); ++i) {
+    if (i) s += ',';
+    s += formatValue(a[i]);
+  }
+  return s;
+}
+
+/// Tells the observer (rb trace, a live view) what the built-in did; formats its arguments only
+/// when someone is listening.
+void report(Machine& m, RobotEvent::Kind kind, Args& a, std::optional<double> value = std::nullopt) {
+  if (m.observed()) m.emit(kind, a.builtin().name, argText(a), value);
+}
+
+/// Every sensor reads a whole number.
+Value sensor(Machine& m, Args& a, double v) {
+  report(m, RobotEvent::Sensor, a, v);
+  return Value::integer(static_cast<int64_t>(v));
+}
+
+Value rLocate(Machine& m, Args& a) {
+  double heading = a.numOr(2, 0);
+  double radius = a.numOr(3, sim::kDefaultRadius);
+  Colour colour = a.has(4) ? a.colour(4) : static_cast<Colour>(sim::kDefaultColour);
+  if (RealRobot* r = m.realRobot()) r->locate(a.num(0), a.num(1), heading);
+  else m.robot().locate(a.num(0), a.num(1), heading, radius, colour);
+  report(m, RobotEvent::Locate, a);
+  return {};
+}
+
+/// The per-step callback of a move: only when rSpeed paces it (a live view then animates each
+/// step); at rSpeed 0 a move is instantaneous.
+std::function<void()> stepper(Machine& m) {
+  if (m.robotSpeed <= 0) return nullptr;
+  return [&m] { m.robotStepped(); };
+}
+
+Value rForward(Machine& m, Args& a) {
+  try {
+    if (RealRobot* r = m.realRobot()) r->forward(a.num(0));
+    else m.robot().forward(a.num(0), stepper(m));
+  } catch (const RuntimeError&) {
+    report(m, RobotEvent::Crash, a);
+    throw;
+  }
+  report(m, RobotEvent::Move, a);
+  return {};
+}
+
+Value rTurn(Machine& m, Args& a) {
+  if (RealRobot* r = m.realRobot()) r->turn(a.num(0));
+  else m.robot().turn(a.num(0), stepper(m));
+  report(m, RobotEvent::Turn, a);
+  return {};
+}
+
+Value rSpeed(Machine& m, Args& a) {
+  double s = a.num(0);
+  if (s < 0) throw RuntimeError(a.describe(0) + " must not be negative");
+  m.robotSpeed = s;
+  if (RealRobot* r = m.realRobot()) r->speed(s);
+  report(m, RobotEvent::Setting, a);
+  return {};
+}
+
+Value rPen(Machine& m, Args& a) {
+  if (RealRobot* r = m.realRobot()) r->pen(a.num(0) != 0);
+  else m.robot().setPen(a.num(0) != 0);
+  report(m, RobotEvent::Pen, a);
+  return {};
+}
+
+Value rInvisible(Machine& m, Args& a) {
+  std::vector<Colour> list;
+  for (int i = 0; i < a.size(); ++i) list.push_back(a.colour(i));
+  m.canvas().setInvisible(std::move(list));
+  report(m, RobotEvent::Setting, a);
+  return {};
+}
+
+Value rSlip(Machine& m, Args& a) {
+  double p = a.num(0);
+  if (p < 0 || p > 100) throw RuntimeError(a.describe(0) + " must be a percentage from 0 to 100");
+  m.robot().setSlip(p);
+  report(m, RobotEvent::Setting, a);
+  return {};
+}
+
+Value rCommPort(Machine& m, Args& a) {
+  m.useCommPort(a.integer(0));
+  report(m, RobotEvent::Setting, a);
+  return {};
+}
+
+Value rCommand(Machine& m, Args& a) {
+  int64_t code = a.integer(0), param = a.integer(1);
+  RealRobot* r = m.realRobot();
+  return sensor(m, a, r ? static_cast<double>(r->command(code, param)) : 0);  // 0 in the simulator
+}
+
+// Each sensor reads the real robot when one is connected, else the simulator.
+#define RB_SENSOR(name, expr)                                      \
+  Value name(Machine& m, Args& a) {                                \
+    RealRobot* real = m.realRobot();                               \
+    auto& robot = m.robot();                                       \
+    return sensor(m, a, real ? (double)real->expr : (double)robot.expr); \
+  }
+RB_SENSOR(rBumper, bumper())
+RB_SENSOR(rFeel, feel())
+RB_SENSOR(rSense, sense())
+RB_SENSOR(rRange, range(a.numOr(0, 0)))
+RB_SENSOR(rLook, look(a.numOr(0, 0)))
+RB_SENSOR(rBeacon, beacon(a.colour(0)))
+RB_SENSOR(rCompass, compass())
+RB_SENSOR(rGPSX, gpsX())
+RB_SENSOR(rGPSY, gpsY())
+#undef RB_SENSOR
+
+Value rChargeLevel(Machine& m, Args& a) {
+  RealRobot* r = m.realRobot();
+  return sensor(m, a, std::floor(r ? r->chargeLevel() : m.robot().chargeLevel()));
+}
+
+}  // namespace
+
+void appendRobotBuiltins(std::vector<Builtin>& t) {
+  t.insert(t.end(), {
+      {"rLocate", K::Command, "robot", "x, y [, heading [, radius [, colour]]]", rLocate, 0,
+       "places the robot's centre at (x, y), heading 0 = up (radius 20, colour Blue by default)"},
+      {"rForward", K::Command, "robot", "distance", rForward, 0,
+       "moves the robot forward (negative: backward), pixel by pixel; a crash stops the program"},
+      {"rTurn", K::Command, "robot", "degrees", rTurn, 0, "turns the robot (positive: clockwise)"},
+      {"rSpeed", K::Command, "robot", "delay", rSpeed, 0,
+       "milliseconds per pixel or degree of motion (bigger is slower)"},
+      {"rPen", K::Command, "robot", "state", rPen, 0,
+       "Down (or non-zero) draws the robot's path, Up (0) stops"},
+      {"rInvisible", K::Command, "robot", "[colour...]", rInvisible, 0,
+       "colours the robot ignores (replaces the list); the pen draws in the first"},
+      {"rSlip", K::Command, "robot", "percent", rSlip, 0,
+       "random error of up to percent in every move and turn (seeded by --seed)"},
+      {"rCommPort", K::Command, "robot", "port", rCommPort, 0,
+       "0: use the simulator; n: drive a real robot on serial port n"},
+      {"rCommand", K::Function, "robot", "code, parameter", rCommand, 0,
+       "sends a raw command to a real robot and returns its 16-bit result (0 in the simulator)"},
+      {"rBumper", K::Function, "robot", "", rBumper, 0,
+       "bumpers touching something: 1 rear, 2 right, 4 front, 8 left"},
+      {"rFeel", K::Function, "robot", "", rFeel, 0,
+       "infrared sensors seeing something within 20 pixels: 1 right, 2 front-right, 4 front, "
+       "8 front-left, 16 left"},
+      {"rSense", K::Function, "robot", "", rSense, 0,
+       "floor line sensors over a drawn line: 4 left, 2 middle, 1 right"},
+      {"rRange", K::Function, "robot", "[angle]", rRange, 0,
+       "pixels from the robot's edge to the first obstacle in the direction heading + angle"},
+      {"rLook", K::Function, "robot", "[angle]", rLook, 0,
+       "colour of the first obstacle in the direction heading + angle (0 at the screen edge)"},
+      {"rBeacon", K::Function, "robot", "colour", rBeacon, 0,
+       "distance to a beacon of that colour straight ahead if nothing hides it, else 0"},
+      {"rCompass", K::Function, "robot", "", rCompass, 0, "the robot's heading, 0..359 degrees"},
+      {"rGPSX", K::Function, "robot", "", rGPSX, 0, "x of the robot's centre"},
+      {"rGPSY", K::Function, "robot", "", rGPSY, 0, "y of the robot's centre"},
+      {"rChargeLevel", K::Function, "robot", "", rChargeLevel, 0,
+       "battery charge in percent: 100 at the start, 1 less per 1000 pixels driven"},
+  });
+}
+
+}  // namespace rb::builtins

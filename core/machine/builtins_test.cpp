@@ -1,0 +1,42 @@
+#include <catch2/catch.hpp>
+
+#include <set>
+
+#include "lang/builtins.h"
+#include "lang/suggest.h"
+
+using namespace rb;
+
+TEST_CASE("signatures give arity and output parameters", "[builtins]") {
+  const Builtin* mid = findBuiltin("MID", BuiltinKind::Function);
+  REQUIRE(mid);
+  CHECK(mid->minArgs == 2);
+  CHECK(mid->maxArgs == 3);
+  CHECK(mid->arityText() == "2 to 3");
+  CHECK(mid->param(3, 2).name == "count");
+  const Builtin* mn = findBuiltin("min", BuiltinKind::Function);
+  CHECK(mn->maxArgs == -1);
+  CHECK(mn->param(7, 6).name == "b");
+}
+
+TEST_CASE("every built-in has a unique name per kind, a group and help", "[builtins]") {
+  std::set<std::string> seen;
+  for (const Builtin& b : builtinTable()) {
+    std::string key = std::to_string(static_cast<int>(b.kind)) + ":";
+    for (char c : b.name) key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    CHECK(seen.insert(key).second);
+    CHECK_FALSE(b.help.empty());
+    CHECK_FALSE(b.group.empty());
+    if (b.kind != BuiltinKind::Constant) CHECK(b.fn != nullptr);
+  }
+}
+
+TEST_CASE("edit distance and suggestions", "[suggest]") {
+  CHECK(editDistance("prit", "print", false) == 1);
+  CHECK(editDistance("pirnt", "print", false) == 1);  // a swap counts once
+  CHECK(editDistance("Real", "real", true) == 0);
+  CHECK(suggestCommand("prit") == "print");
+  CHECK(suggestCommand("xyzzy").empty());
+  CHECK(closestMatch("InitializeRobot", {"InitializeSimulator", "DrawSquare", "Main"}, false) ==
+        "InitializeSimulator");
+}

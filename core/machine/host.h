@@ -1,0 +1,76 @@
+#pragma once
+// Everything a running program does to the outside world goes through a Host: output, typed
+// input, keys, the mouse and dialogs, the clock, waiting, and the hooks a live view or a tracer
+// needs. rb's commands build a Host for the terminal, for headless runs and for tests; core/
+// never touches stdin, stdout or the system clock itself.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "input/input.h"
+#include "robot/robot_link.h"
+#include "base/runtime_error.h"
+#include "base/source.h"
+
+namespace rb {
+
+class Host {
+ public:
+  virtual ~Host() = default;
+
+  /// Text the program prints (already formatted; "\n" ends lines).
+  virtual void output(std::string_view text) = 0;
+  /// One line typed in answer to `input` (without its line end); nullopt when input is over.
+  virtual std::optional<std::string> inputLine(std::string_view prompt) = 0;
+  /// Milliseconds since the run started, on the run's clock (virtual when headless).
+  virtual double clockMs() = 0;
+  /// Lets `ms` milliseconds pass on the run's clock (a headless run only advances its clock).
+  virtual void wait(double ms) = 0;
+  /// Seconds of real time since the run started, for --timeout.
+  virtual double wallSeconds() = 0;
+  /// Called regularly while the program runs; a live view redraws and reads keys here.
+  /// Returning false stops the program (the user quit).
+  virtual bool poll() { return true; }
+  /// Called before each statement when the program was compiled for line tracing.
+  virtual void onLine(SourceLoc /*loc*/) {}
+  /// Called after each pixel or degree the robot moves, so a live view can animate it.
+  virtual void animate() {}
+
+  // ---- keyboard, mouse and dialogs (core/input/input.h). `who` names the built-in that asks, for
+  // messages. The defaults are a run without keyboard or mouse: reads that do not block see
+  // nothing, and waiting for input is a runtime error rather than a hang.
+
+  /// The code of the key held down now (see keys::), 0 when none. Never blocks.
+  virtual int64_t heldKey(std::string_view /*who*/) { return 0; }
+  /// Waits until a key is down and returns its code; returns at once when one is held already.
+  virtual int64_t waitKey(std::string_view who) { throw noInput(who, "a key"); }
+  /// The mouse pointer (screen pixels) and buttons now. Never blocks.
+  virtual MouseState mouse(std::string_view /*who*/) { return {}; }
+  /// Waits until a mouse button goes down (a press not yet taken by an earlier waitClick
+  /// counts); returns the mouse at that press.
+  virtual MouseState waitClick(std::string_view who) { throw noInput(who, "a mouse click"); }
+  /// Called before GetButton reads the program's controls: the host records button presses in
+  /// `controls.pressed` (and may type into the edit boxes' text). Never blocks.
+  virtual void updateControls(Controls& /*controls*/, std::string_view /*who*/) {}
+  /// Shows a message box and waits until it is answered (OK).
+  virtual void messageBox(std::string_view /*text*/, std::string_view /*title*/) {
+    throw noInput("MsgBox", "an answer to the message box");
+  }
+
+  /// `rCommPort port` with port != 0: opens the link to a real robot. Hosts without a serial
+  /// driver refuse.
+  virtual std::unique_ptr<RobotLink> openRobot(int64_t port) {
+    throw RuntimeError("rCommPort " + std::to_string(port) +
+                       ": no serial driver is available here; use the simulator (rCommPort 0)");
+  }
+
+ protected:
+  static RuntimeError noInput(std::string_view who, std::string_view what) {
+    return RuntimeError(std::string(who) + ": cannot wait for " + std::string(what) +
+                        ": this run has no keyboard or mouse");
+  }
+};
+
+}  // namespace rb

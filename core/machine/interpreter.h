@@ -1,0 +1,91 @@
+#pragma once
+// Runs a compiled Program on a Machine. Runtime errors stop the run and come back as a
+// Diagnostic at the failing instruction's source position.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "lang/bytecode.h"
+#include "base/diagnostic.h"
+#include "machine/machine.h"
+
+namespace rb {
+
+struct RunLimits {
+  uint64_t maxSteps = 0;        ///< statements to run at most (0: no limit)
+  double timeoutSeconds = 0;    ///< real seconds at most (0: no limit)
+  uint32_t maxCallDepth = 100000;  ///< nested gosub/call frames at most
+};
+
+enum class RunStatus {
+  Finished,      ///< reached `end` or the end of the program
+  RuntimeError,  ///< a runtime error (diagnostic set)
+  StepLimit,     ///< --max-steps reached (diagnostic set)
+  Timeout,       ///< --timeout reached (diagnostic set)
+  Stopped,       ///< the host asked to stop (the user quit a live view)
+};
+
+struct RunResult {
+  RunStatus status = RunStatus::Finished;
+  std::optional<Diagnostic> error;
+  uint64_t steps = 0;  ///< statements executed
+};
+
+class Interpreter {
+ public:
+  Interpreter(const Program& program, Machine& machine);
+
+  /// Runs the program from its first instruction.
+  RunResult run(const RunLimits& limits);
+
+ private:
+  struct Frame {
+    uint32_t returnPc;
+    uint32_t base;       ///< the caller's frame base
+    uint32_t dest;       ///< sub calls: where the result goes (kNoOperand: nowhere)
+    int32_t sub;         ///< the sub this frame runs (-1: a gosub)
+    int32_t callerSub;   ///< the sub the caller ran (-1: main code)
+  };
+
+  /// A runtime error to report at another instruction than the current one.
+  struct ReturnAtCall {
+    uint32_t pc;
+    std::string message;
+  };
+
+  void execute(uint32_t& pc);
+  uint32_t doReturn(const Instr& in);
+  void doCallBuiltin(const Instr& in, uint32_t pc);
+  void doDim(const Instr& in);
+  void doPrint(const Instr& in);
+  void doFormat(const Instr& in);
+  void doInput(const Instr& in);
+  bool checkpoint(uint32_t pc);
+  void ensureStack(size_t size);
+  [[noreturn]] void undefined(uint32_t op) const;
+  std::string slotName(uint32_t op) const;
+  Value& arrayOperand(uint32_t op);
+  size_t elementOffset(ArrObj& a, uint32_t arrOp, const Value* idx, uint32_t n);
+
+  const Program& prog_;
+  Machine& m_;
+  std::vector<Value> globals_;
+  std::vector<Value> stack_;
+  std::vector<Frame> frames_;
+  uint32_t base_ = 0;
+  int32_t sub_ = -1;
+  Value* bases_[3] = {nullptr, nullptr, nullptr};
+
+  RunLimits limits_;
+  uint64_t stepsDone_ = 0;   ///< steps counted before the current chunk
+  int64_t chunk_ = 0;        ///< size of the current chunk
+  int64_t stepsLeft_ = 0;    ///< steps left in the current chunk
+  RunStatus stopStatus_ = RunStatus::Finished;
+};
+
+/// Formats print items with their separators: ',' joins, ';' puts a tab between items.
+/// Returns true in `newline` unless the list ends with a separator.
+std::string formatItems(const Value* items, uint32_t n, const std::vector<Tok>& seps, bool& newline);
+
+}  // namespace rb

@@ -1,0 +1,86 @@
+#include <catch2/catch.hpp>
+
+#include "base/diagnostic.h"
+#include "machine/test_support.h"
+
+using namespace rb;
+using rb::test::runProgram;
+
+TEST_CASE("diagnostics print file:line:col, the line and a caret", "[diagnostic]") {
+  SourceSet s;
+  s.add("prog.bas", "x = 1\n  prit \"a\"\n");
+  Diagnostic d{Severity::Error, {0, 2, 3}, "unknown command 'prit'; did you mean 'print'?"};
+  CHECK(formatDiagnostic(s, d) ==
+        "prog.bas:2:3: error: unknown command 'prit'; did you mean 'print'?\n"
+        "   prit \"a\"\n"
+        "   ^\n");
+  CHECK(formatDiagnosticJson(s, d) ==
+        "{\"file\":\"prog.bas\",\"line\":2,\"column\":3,\"severity\":\"error\","
+        "\"message\":\"unknown command 'prit'; did you mean 'print'?\"}");
+}
+
+TEST_CASE("the caret keeps tabs so it lines up", "[diagnostic]") {
+  SourceSet s;
+  s.add("p.bas", "\tx = y\n");
+  Diagnostic d{Severity::Warning, {0, 1, 6}, "w"};
+  CHECK(formatDiagnostic(s, d) == "p.bas:1:6: warning: w\n \tx = y\n \t    ^\n");
+}
+
+TEST_CASE("a program runs in-process with a test host", "[interpreter]") {
+  auto o = runProgram("for i = 1 to 3\n  s = s + i\nnext\n");
+  CHECK(o.loaded);
+  CHECK(o.diagnostics ==
+        "test.bas:2:9: error: variable 's' is used before it is given a value\n"
+        "   s = s + i\n"
+        "         ^\n");
+  auto ok = runProgram("s = 0\nfor i = 1 to 3\n  s = s + i\nnext\nprint s\n");
+  CHECK(ok.out == "6\n");
+  CHECK(ok.result.status == RunStatus::Finished);
+}
+
+TEST_CASE("load errors stop the program before anything runs", "[interpreter]") {
+  auto o = runProgram("print 1\ngoto Nowhere\n");
+  CHECK_FALSE(o.loaded);
+  CHECK(o.out.empty());
+  CHECK(o.diagnostics.find("test.bas:2:6: error: undefined label 'Nowhere'") == 0);
+}
+
+TEST_CASE("statements are counted exactly for --max-steps", "[interpreter]") {
+  // Each pass runs 3 statements (the while test, x = x + 1, wend); the limit falls mid-loop.
+  RunLimits limits;
+  limits.maxSteps = 10;
+  auto o = runProgram("x = 0\nwhile x < 100\n  x = x + 1\nwend\n", {}, {}, limits);
+  CHECK(o.result.status == RunStatus::StepLimit);
+  CHECK(o.result.steps == 10);
+  auto full = runProgram("x = 0\nfor i = 1 to 4\n  if i = 2 then x = 1\nnext\nprint x\n");
+  // 1 (x = 0) + 1 (for) + 4 * (if + next) + 1 (print) = 11
+  CHECK(full.result.steps == 11);
+}
+
+TEST_CASE("includes come from the reader and errors name their file", "[interpreter]") {
+  test::MemoryReader files;
+  files.files["lib.bas"] = "sub Two()\n  return 2\n";
+  auto o = runProgram("#include \"lib.bas\"\nprint Two() + 1\n", files);
+  CHECK(o.out == "3\n");
+  files.files["bad.bas"] = "\n  frob 1\n";
+  auto b = runProgram("#include \"bad.bas\"\n", files);
+  CHECK(b.diagnostics.find("bad.bas:2:3: error: unknown command 'frob'") == 0);
+}
+
+TEST_CASE("input gives numbers for numeric lines, strings otherwise", "[interpreter]") {
+  auto o = runProgram("input \"n? \", n\ninput s\nprint n * 2, s\n", {}, {"21", "abc"});
+  CHECK(o.out == "n? 42abc\n");
+}
+
+TEST_CASE("gosub from inside a sub keeps the sub's locals", "[interpreter]") {
+  auto o = runProgram(
+      "call F(5)\nend\nsub F(a)\n  b = a * 2\n  gosub G\n  print a, b\nreturn\n"
+      "G:\n  t = 1 + 2 * 3\nreturn\n");
+  CHECK(o.diagnostics == "");
+  CHECK(o.out == "510\n");
+}
+
+TEST_CASE("deep recursion in subs grows the stack safely", "[interpreter]") {
+  auto o = runProgram("print Sum(20000)\nend\nsub Sum(n)\n  if n = 0 then return 0\n  return n + Sum(n - 1)\n");
+  CHECK(o.out == "200010000\n");
+}

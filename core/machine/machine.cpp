@@ -1,0 +1,52 @@
+#include "machine/machine.h"
+
+#include "base/runtime_error.h"
+
+namespace rb {
+
+void Machine::print(std::string_view text, bool newline) {
+  ++prints_;
+  std::string line(text);
+  canvas_.print(line, newline);
+  if (newline) line += '\n';
+  host_.output(line);
+}
+
+std::string Machine::input(std::string_view prompt) {
+  ++prints_;  // the prompt and the typed line are printed too
+  if (!prompt.empty()) canvas_.print(std::string(prompt), false);
+  std::optional<std::string> line = host_.inputLine(prompt);
+  if (!line) throw RuntimeError("input: no more input to read (end of input)");
+  canvas_.print(*line, true);
+  return *line;
+}
+
+void Machine::delay(double ms) {
+  if (ms > 0) host_.wait(ms);
+}
+
+void Machine::robotStepped() {
+  if (robotSpeed > 0) host_.wait(robotSpeed);
+  host_.animate();
+}
+
+void Machine::printPrompt(std::string_view prompt) {
+  if (prompt.empty() || (prompt == lastPrompt_ && prints_ == promptPrintedAt_)) return;
+  print(prompt, false);
+  lastPrompt_ = prompt;
+  promptPrintedAt_ = prints_;
+}
+
+void Machine::useCommPort(int64_t port) {
+  real_.reset();  // closes the previous port, if any
+  if (port != 0) real_ = std::make_unique<RealRobot>(host_.openRobot(port));
+}
+
+void Machine::emit(RobotEvent::Kind kind, std::string_view command, std::string args,
+                   std::optional<double> value) {
+  if (!observer_) return;
+  RobotEvent e{kind, command, location_, std::move(args), robotPose(), robotPenDown(), value};
+  observer_->robotEvent(e);
+}
+
+}  // namespace rb

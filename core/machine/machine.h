@@ -1,0 +1,112 @@
+#pragma once
+// The state a running program changes besides its variables: the host it talks to, the random
+// generator, the screen and the robot. Built-in handlers receive the Machine; the interpreter
+// owns none of this.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "screen/canvas.h"
+#include "machine/host.h"
+#include "input/input.h"
+#include "robot/real_robot.h"
+#include "base/rng.h"
+#include "robot/robot_sim.h"
+
+namespace rb {
+
+/// Something the robot did, for `rb trace` and live views.
+struct RobotEvent {
+  enum Kind { Locate, Move, Turn, Pen, Crash, Sensor, Setting } kind;
+  std::string_view command;   ///< the built-in's name, e.g. "rForward"
+  SourceLoc loc;              ///< the statement that did it
+  std::string args;           ///< its arguments as text ("120", "GREEN" as a number)
+  Pose pose;                  ///< the robot's pose after the event
+  bool pen = false;
+  std::optional<double> value;  ///< a sensor's reading
+};
+
+class RobotObserver {
+ public:
+  virtual ~RobotObserver() = default;
+  virtual void robotEvent(const RobotEvent& e) = 0;
+};
+
+class Machine {
+ public:
+  Machine(Host& host, uint64_t seed)
+      : host_(host), rng_(seed), robot_(canvas_, rng_) {}
+  Machine(const Machine&) = delete;
+  Machine& operator=(const Machine&) = delete;
+
+  Host& host() { return host_; }
+  /// The random generator; using it marks the run as depending on the seed.
+  Rng& rng() {
+    rngUsed_ = true;
+    return rng_;
+  }
+  bool rngUsed() const { return rngUsed_ || robot_.slipPercent() > 0; }
+  Canvas& canvas() { return canvas_; }
+  const Canvas& canvas() const { return canvas_; }
+  SimRobot& robot() { return robot_; }
+  const SimRobot& robot() const { return robot_; }
+
+  /// The real robot robot commands go to, or nullptr when they go to the simulator.
+  RealRobot* realRobot() { return real_.get(); }
+  /// rCommPort n: opens port n through the host (n = 0: back to the simulator, closing it).
+  void useCommPort(int64_t port);
+  /// The pose and pen a trace or a live view should show: the real robot's dead-reckoned one
+  /// when connected, else the simulator's.
+  const Pose& robotPose() const { return real_ ? real_->pose() : robot_.pose(); }
+  bool robotPenDown() const { return real_ ? real_->penDown() : robot_.penDown(); }
+
+  /// The statement running now (the interpreter sets it before calling a built-in).
+  SourceLoc location() const { return location_; }
+  void setLocation(SourceLoc loc) { location_ = loc; }
+
+  void setObserver(RobotObserver* o) { observer_ = o; }
+  bool observed() const { return observer_ != nullptr; }
+  /// Reports a robot event to the observer, if any, filling in pose, pen and location.
+  void emit(RobotEvent::Kind kind, std::string_view command, std::string args,
+            std::optional<double> value = std::nullopt);
+
+  /// `print`: writes the text to the host and onto the screen, then a line end unless
+  /// `newline` is false.
+  void print(std::string_view text, bool newline);
+  /// `input`: shows the prompt and reads a line; a RuntimeError when input is over.
+  std::string input(std::string_view prompt);
+  /// `delay`: lets time pass on the run's clock.
+  void delay(double ms);
+  /// After each pixel or degree of robot motion: paces it at rSpeed and lets a live view draw.
+  void robotStepped();
+  /// waitKey's prompt: printed like `print` without a line end, except when the same prompt is
+  /// still the last thing printed (a loop that waits for a held key would fill the screen).
+  void printPrompt(std::string_view prompt);
+
+  double robotSpeed = 0;  ///< rSpeed: milliseconds per pixel or degree
+
+  // flip on/off: while on, a live view shows the screen as it was at the last flip.
+  bool flipMode = false;
+  std::vector<Colour> flipped;  ///< the screen at the last flip
+
+  /// AddButton, AddEdit: the program's dialog controls. Live views draw them; they are never
+  /// drawn into the canvas, so the robot does not sense them.
+  Controls controls;
+
+ private:
+  Host& host_;
+  Rng rng_;
+  bool rngUsed_ = false;
+  Canvas canvas_;
+  SimRobot robot_;
+  std::unique_ptr<RealRobot> real_;
+  SourceLoc location_;
+  RobotObserver* observer_ = nullptr;
+  uint64_t prints_ = 0;           ///< print calls so far
+  uint64_t promptPrintedAt_ = 0;  ///< prints_ right after printPrompt last printed
+  std::string lastPrompt_;
+};
+
+}  // namespace rb

@@ -1,0 +1,80 @@
+#pragma once
+// A real robot driven through a RobotLink with RobotBASIC's wire protocol: each robot command
+// of a program becomes one or more two-byte commands, and sensor functions read the robot's
+// replies. The robot's pose is dead-reckoned from the commands sent, so traces and live views
+// can show where it should be. No serial port here: drivers/ opens one and hands over a link.
+
+#include <memory>
+#include <string>
+
+#include "screen/canvas.h"
+#include "robot/robot_link.h"
+#include "robot/robot_sim.h"
+
+namespace rb {
+
+/// Where a real robot is assumed to start, and where the protocol's rLocate command (which
+/// carries no coordinates) puts the emulated robot: the screen centre facing up, the start of
+/// the seed document's programs. The robot emulator uses the same numbers.
+constexpr double kRealStartX = 400;
+constexpr double kRealStartY = 300;
+constexpr double kRealStartHeading = 0;
+
+/// The robot statements of a program, carried out by a robot at the other end of a link.
+class RealRobot {
+ public:
+  /// Takes over the link; destroying the RealRobot closes it (rCommPort 0, errors, exit).
+  explicit RealRobot(std::unique_ptr<RobotLink> link);
+
+  /// The port, for messages.
+  std::string name() const { return link_->name(); }
+  /// The dead-reckoned pose.
+  const Pose& pose() const { return pose_; }
+  /// Whether the last rPen sent put the pen down.
+  bool penDown() const { return penDown_; }
+
+  /// rLocate: sends the initialise command; the dead-reckoned pose becomes (x, y, heading).
+  void locate(double x, double y, double heading);
+  /// rForward: one command per 255 pixels (backward for a negative distance); 0 sends one
+  /// move of 0, which refreshes the sensors.
+  void forward(double distance);
+  /// rTurn: one command per 255 degrees, right for positive, left for negative.
+  void turn(double degrees);
+  /// rSpeed: the delay, clamped to a byte.
+  void speed(double delay);
+  /// rPen: 1 down, 0 up.
+  void pen(bool down);
+  /// rBumper(), rFeel(), rSense(): from the latest reply (a status command first if none yet).
+  int bumper();
+  int feel();
+  int sense();
+  /// rRange(a) and rLook(a): the angle relative to the heading, normalised to -180..180; the
+  /// sign picks the right or left command.
+  double range(double relativeAngle);
+  Colour look(double relativeAngle);
+  /// rBeacon(c): the colour travels as the parameter when it fits a byte.
+  double beacon(Colour colour);
+  int compass();
+  int gpsX();
+  int gpsY();
+  /// rChargeLevel(): the protocol has no battery command, so this is a runtime error.
+  double chargeLevel();
+  /// rCommand: a raw command; returns the reply's 16-bit result.
+  int64_t command(int64_t code, int64_t param);
+
+ private:
+  RobotReply send(uint8_t code, uint8_t param);
+  /// Sends `amount` (a move or a turn) as commands of at most 255; `apply` updates the pose
+  /// after each command the robot acknowledged.
+  template <typename Apply>
+  void sendSplit(const char* what, double amount, uint8_t positiveCode, uint8_t negativeCode,
+                 Apply apply);
+
+  std::unique_ptr<RobotLink> link_;
+  Pose pose_{Eigen::Vector2d(kRealStartX, kRealStartY), kRealStartHeading};
+  bool penDown_ = false;
+  bool haveReply_ = false;
+  RobotReply last_;
+};
+
+}  // namespace rb

@@ -1,0 +1,346 @@
+#include "robot/robot_sim.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "base/runtime_error.h"
+#include "robot/sim_constants.h"
+
+namespace rb {
+
+namespace {
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+/// The largest distance between a point and the centre of the pixel it rounds to.
+constexpr double kRounding = 0.7072;
+/// Nearest pixel of a coordinate.
+int pixelOf(double v) { return static_cast<int>(std::floor(v + 0.5)); }
+/// For a distance-sorted list: where each whole distance 0, 1, 2, ... starts.
+template <typename Index, typename List>
+std::vector<Index> startsOf(const List& list, double reach) {
+  std::vector<Index> starts;
+  size_t i = 0;
+  for (int k = 0; k <= static_cast<int>(std::ceil(reach)) + 1; ++k) {
+    while (i < list.size() && list[i].dist < k) ++i;
+    starts.push_back(static_cast<Index>(i));
+  }
+  return starts;
+}
+/// First offset at least `d` from the centre, using the whole-distance starts to skip ahead.
+template <typename List, typename Index>
+size_t fromDistance(const List& list, const std::vector<Index>& starts, double d) {
+  if (d <= 0) return 0;
+  size_t k = std::min(static_cast<size_t>(d), starts.size() - 1);
+  size_t i = starts[k];
+  while (i < list.size() && list[i].dist < d - 1e-4) ++i;
+  return i;
+}
+}  // namespace
+
+double normalizeDegrees(double d) {
+  double r = std::fmod(d, 360.0);
+  if (r < 0) r += 360.0;
+  if (r >= 360.0) r = 0;
+  return r;
+}
+
+Eigen::Vector2d headingVector(double degrees) {
+  // Heading 0 points up (-y); the rotation is clockwise on screen, where y grows downward.
+  return Eigen::Rotation2Dd(degrees * kDegToRad) * Eigen::Vector2d(0, -1);
+}
+
+SimRobot::SimRobot(Canvas& canvas, Rng& rng) : canvas_(canvas), rng_(rng), field_(canvas) {}
+
+void SimRobot::requireLocated() const {
+  if (!located_) throw RuntimeError("the robot has not been placed: use rLocate x, y first");
+}
+
+Eigen::Vector2i SimRobot::centrePixel() const {
+  return {pixelOf(pose_.pos.x()), pixelOf(pose_.pos.y())};
+}
+
+void SimRobot::prepareOffsets() {
+  if (offsetsRadius_ == radius_) return;
+  offsetsRadius_ = radius_;
+  offsetsReach_ = radius_ + std::max({sim::kFeelReach, sim::kBumperReach, kRounding});
+  byDistance_.clear();
+  for (auto& b : byBearing_) b.clear();
+  int r = static_cast<int>(std::ceil(offsetsReach_)) + 1;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      double d = std::hypot(dx, dy);
+      if (d > offsetsReach_ || d == 0) continue;
+      double bearing = normalizeDegrees(std::atan2(dx, -dy) / kDegToRad);
+      byDistance_.push_back({dx, dy, static_cast<float>(d), static_cast<float>(bearing)});
+    }
+  auto nearer = [](const Offset& a, const Offset& b) { return a.dist < b.dist; };
+  std::stable_sort(byDistance_.begin(), byDistance_.end(), nearer);
+  for (const Offset& o : byDistance_) byBearing_[static_cast<int>(o.bearing) % 360].push_back(o);
+  distanceStart_ = startsOf<uint32_t>(byDistance_, offsetsReach_);
+  for (int b = 0; b < 360; ++b) bearingStart_[b] = startsOf<uint16_t>(byBearing_[b], offsetsReach_);
+}
+
+bool SimRobot::collides(const Eigen::Vector2d& pos) {
+  prepareOffsets();
+  int cx = pixelOf(pos.x()), cy = pixelOf(pos.y());
+  // Every obstacle pixel is at least `clear` from the centre pixel; far from everything, one
+  // lookup in the distance field decides.
+  double clear = Canvas::inside(cx, cy) ? field_.distance(cx, cy) : 0;
+  if (clear - kRounding > radius_) return false;
+  if (field_.obstacle(cx, cy)) return true;
+  double r2 = radius_ * radius_;
+  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, clear));
+       it != byDistance_.end() && it->dist <= radius_ + kRounding; ++it) {
+    int x = cx + it->dx, y = cy + it->dy;
+    double dx = x - pos.x(), dy = y - pos.y();
+    if (dx * dx + dy * dy <= r2 && field_.obstacle(x, y)) return true;
+  }
+  return false;
+}
+
+void SimRobot::locate(double x, double y, double heading, double radius, Colour colour) {
+  if (radius < sim::kMinRadius || radius > sim::kMaxRadius)
+    throw RuntimeError("rLocate: the robot's radius must be between " +
+                       std::to_string(static_cast<int>(sim::kMinRadius)) + " and " +
+                       std::to_string(static_cast<int>(sim::kMaxRadius)));
+  double oldRadius = radius_;
+  radius_ = radius;
+  if (collides({x, y})) {
+    radius_ = oldRadius;
+    throw RuntimeError("rLocate: the robot at (" + std::to_string(std::lround(x)) + ", " +
+                       std::to_string(std::lround(y)) + ") would overlap an obstacle");
+  }
+  pose_.pos = {x, y};
+  pose_.heading = normalizeDegrees(heading);
+  colour_ = colour;
+  located_ = true;
+  canvas_.trailEnd();
+  if (penDown_) extendTrail();
+}
+
+double SimRobot::applySlip(double amount) {
+  if (slip_ <= 0) return amount;
+  double u = (rng_.unit() * 2 - 1) * slip_ / 100.0;
+  return amount * (1 + u);
+}
+
+void SimRobot::extendTrail() {
+  // The pen draws in the first invisible colour (so the robot does not see its own trail), or
+  // in the current drawing colour when no colour is invisible.
+  Colour c = trailColour();
+  const auto& ops = canvas_.displayList();
+  bool open = !ops.empty() && ops.back().kind == DrawOp::Trail && ops.back().colour == c &&
+              ops.back().width == canvas_.lineWidth;
+  if (open) {
+    canvas_.trailTo(pose_.pos.x(), pose_.pos.y());
+  } else {
+    canvas_.trailStart(pose_.pos.x(), pose_.pos.y(), canvas_.lineWidth, c);
+    canvas_.trailTo(pose_.pos.x(), pose_.pos.y());
+  }
+}
+
+void SimRobot::setPen(bool down) {
+  penDown_ = down;
+  if (!down) canvas_.trailEnd();
+  if (down && located_) extendTrail();
+}
+
+Colour SimRobot::trailColour() const {
+  const auto& inv = canvas_.invisible();
+  return inv.empty() ? canvas_.foreground : inv.front();
+}
+
+double SimRobot::forward(double distance, const std::function<void()>& onStep) {
+  requireLocated();
+  distance = applySlip(distance);
+  if (!std::isfinite(distance)) throw RuntimeError("rForward: the distance is not a number");
+  double length = std::abs(distance);
+  int steps = static_cast<int>(std::ceil(length / sim::kMaxStep));
+  if (steps == 0) return distance;
+  Eigen::Vector2d step = headingVector(pose_.heading) * (distance / steps);
+  // The pen draws as the robot goes when someone watches, or when its trail is an obstacle the
+  // robot itself must run into; otherwise the whole segment is drawn once at the end.
+  bool trailEachStep = penDown_ && (onStep || canvas_.isObstacleColour(trailColour()));
+  prepareOffsets();
+  int cx = pixelOf(pose_.pos.x()), cy = pixelOf(pose_.pos.y());
+  // When the nearest obstacle is farther than the whole move plus the radius, no step can
+  // touch it.
+  double clear = Canvas::inside(cx, cy) ? field_.distance(cx, cy) : 0;
+  bool freeRun = !trailEachStep && clear - 2 * kRounding - radius_ > length;
+  for (int i = 0; i < steps; ++i) {
+    Eigen::Vector2d next = pose_.pos + step;
+    if (!freeRun && collides(next)) {
+      if (penDown_ && !trailEachStep) extendTrail();
+      throw RuntimeError("robot crashed into an obstacle");
+    }
+    pose_.pos = next;
+    if (trailEachStep) extendTrail();
+    if (onStep) onStep();
+  }
+  travelled_ += length;
+  if (penDown_ && !trailEachStep) extendTrail();
+  return distance;
+}
+
+double SimRobot::turn(double degrees, const std::function<void()>& onStep) {
+  requireLocated();
+  degrees = applySlip(degrees);
+  if (!std::isfinite(degrees)) throw RuntimeError("rTurn: the angle is not a number");
+  turned_ += std::abs(degrees);
+  if (!onStep) {
+    pose_.heading = normalizeDegrees(pose_.heading + degrees);
+    return degrees;
+  }
+  int steps = static_cast<int>(std::ceil(std::abs(degrees)));
+  if (steps == 0) return degrees;
+  double each = degrees / steps;
+  double start = pose_.heading;
+  for (int i = 1; i <= steps; ++i) {
+    pose_.heading = normalizeDegrees(start + each * i);
+    onStep();
+  }
+  return degrees;
+}
+
+int SimRobot::bumper() {
+  requireLocated();
+  prepareOffsets();
+  double reach = radius_ + sim::kBumperReach;
+  Eigen::Vector2i c = centrePixel();
+  double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
+  if (clear > reach) return 0;
+  int bits = 0;
+  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, clear));
+       it != byDistance_.end() && it->dist <= reach; ++it) {
+    if (!field_.obstacle(c.x() + it->dx, c.y() + it->dy)) continue;
+    double rel = normalizeDegrees(it->bearing - pose_.heading);
+    if (rel > 180) rel -= 360;  // (-180, 180]
+    if (rel >= -45 && rel <= 45) bits |= sim::kBumperFront;
+    else if (rel > 45 && rel < 135) bits |= sim::kBumperRight;
+    else if (rel < -45 && rel > -135) bits |= sim::kBumperLeft;
+    else bits |= sim::kBumperRear;
+    if (bits == 15) break;
+  }
+  return bits;
+}
+
+int SimRobot::feel() {
+  requireLocated();
+  prepareOffsets();
+  double reach = radius_ + sim::kFeelReach;
+  Eigen::Vector2i c = centrePixel();
+  double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
+  if (clear > reach) return 0;
+  int bits = 0;
+  for (int k = 0; k < 5; ++k) {
+    double lo = normalizeDegrees(pose_.heading + sim::kFeelAngles[k] - sim::kFeelHalfAngle);
+    double width = 2 * sim::kFeelHalfAngle;
+    // The cone covers whole-degree buckets from lo's to lo + width's; edge buckets hold pixels
+    // outside it, so each pixel's bearing is checked too.
+    int first = static_cast<int>(lo);
+    int count = static_cast<int>(std::floor(lo + width)) - first + 1;
+    bool hit = false;
+    for (int b = 0; b < count && !hit; ++b) {
+      int index = (first + b) % 360;
+      const std::vector<Offset>& bucket = byBearing_[index];
+      bool edge = b == 0 || b == count - 1;
+      for (auto it = bucket.begin() + static_cast<long>(fromDistance(bucket, bearingStart_[index], clear));
+           it != bucket.end() && it->dist <= reach; ++it) {
+        if (edge) {
+          double rel = it->bearing - lo;  // in (-360, 360): one wrap is enough
+          if (rel < 0) rel += 360;
+          if (rel > width) continue;
+        }
+        if (field_.obstacle(c.x() + it->dx, c.y() + it->dy)) {
+          hit = true;
+          break;
+        }
+      }
+    }
+    if (hit) bits |= sim::kFeelBits[k];
+  }
+  return bits;
+}
+
+int SimRobot::sense() {
+  requireLocated();
+  Eigen::Vector2d fwd = headingVector(pose_.heading);
+  Eigen::Vector2d right = headingVector(pose_.heading + 90);
+  Eigen::Vector2d mid = pose_.pos + fwd * (radius_ * sim::kSenseAhead);
+  Eigen::Vector2d side = right * (radius_ * sim::kSenseSide);
+  auto onLine = [&](const Eigen::Vector2d& p) {
+    int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    return Canvas::inside(x, y) && canvas_.at(x, y) != canvas_.background();
+  };
+  int bits = 0;
+  if (onLine(mid - side)) bits |= sim::kSenseLeft;
+  if (onLine(mid)) bits |= sim::kSenseMiddle;
+  if (onLine(mid + side)) bits |= sim::kSenseRight;
+  return bits;
+}
+
+SimRobot::RayHit SimRobot::castRay(double absoluteAngle) {
+  Eigen::Vector2d dir = headingVector(absoluteAngle);
+  double t = radius_;
+  const double limit = radius_ + 2000;  // longer than the screen's diagonal
+  while (t < limit) {
+    Eigen::Vector2d p = pose_.pos + dir * t;
+    int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    if (!Canvas::inside(x, y)) return {t, static_cast<Colour>(sim::kEdgeColour), true};
+    if (canvas_.isObstacleColour(canvas_.at(x, y))) return {t, canvas_.at(x, y), false};
+    // Open space: jump ahead by whole pixels the distance field guarantees are free, so the
+    // result is the same as marching one pixel at a time.
+    double clear = std::floor(field_.distance(x, y) - 1.5);
+    t += clear > 1 ? clear : 1;
+  }
+  return {limit, static_cast<Colour>(sim::kEdgeColour), true};
+}
+
+double SimRobot::range(double relativeAngle) {
+  requireLocated();
+  return std::floor(castRay(pose_.heading + relativeAngle).distance - radius_);
+}
+
+Colour SimRobot::look(double relativeAngle) {
+  requireLocated();
+  return castRay(pose_.heading + relativeAngle).colour;
+}
+
+double SimRobot::beacon(Colour colour) {
+  requireLocated();
+  // Invisible colours are looked through, the beacon colour is seen even if invisible, and
+  // anything else opaque in front of it hides it.
+  Eigen::Vector2d dir = headingVector(pose_.heading);
+  for (double t = radius_; t < radius_ + 2000; t += 1) {
+    Eigen::Vector2d p = pose_.pos + dir * t;
+    int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    if (!Canvas::inside(x, y)) return 0;
+    Colour c = canvas_.at(x, y);
+    if (c == colour) return std::floor(t - radius_) + 1;
+    if (canvas_.isObstacleColour(c)) return 0;
+  }
+  return 0;
+}
+
+int SimRobot::compass() const {
+  requireLocated();
+  return static_cast<int>(std::lround(pose_.heading)) % 360;
+}
+
+int SimRobot::gpsX() const {
+  requireLocated();
+  return static_cast<int>(std::lround(pose_.pos.x()));
+}
+
+int SimRobot::gpsY() const {
+  requireLocated();
+  return static_cast<int>(std::lround(pose_.pos.y()));
+}
+
+double SimRobot::chargeLevel() const {
+  double used = travelled_ / sim::kChargePixelsPerPercent + turned_ / sim::kChargeDegreesPerPercent;
+  return std::max(0.0, sim::kChargeFull - used);
+}
+
+}  // namespace rb

@@ -1,0 +1,112 @@
+#pragma once
+// The simulated robot: a disc on the canvas that moves pixel by pixel, crashes into
+// obstacles, and reads its sensors from the canvas's pixels. Geometry constants live in
+// sim_constants.h; docs/robot.md describes the model.
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+#include "screen/canvas.h"
+#include "robot/obstacle_field.h"
+#include "base/rng.h"
+
+namespace rb {
+
+/// Position (pixels, y down) and heading (degrees, 0 = up, clockwise positive).
+struct Pose {
+  Eigen::Vector2d pos{0, 0};
+  double heading = 0;
+};
+
+class SimRobot {
+ public:
+  SimRobot(Canvas& canvas, Rng& rng);
+
+  bool located() const { return located_; }
+  const Pose& pose() const { return pose_; }
+  double radius() const { return radius_; }
+  Colour colour() const { return colour_; }
+  bool penDown() const { return penDown_; }
+  double slipPercent() const { return slip_; }
+
+  /// rLocate. Throws RuntimeError when the robot would overlap an obstacle.
+  void locate(double x, double y, double heading, double radius, Colour colour);
+  /// rForward: moves in steps of at most one pixel, checking for a crash at each. On a crash the
+  /// robot stays where it last was free and RuntimeError("robot crashed into an obstacle") is
+  /// thrown. `onStep`, when given, is called after each step (a live view animates the move;
+  /// without it the pen draws the whole segment at once). Returns the distance after slip.
+  double forward(double distance, const std::function<void()>& onStep);
+  /// rTurn: with `onStep` it turns in steps of one degree, calling it after each; a disc cannot
+  /// crash by turning.
+  double turn(double degrees, const std::function<void()>& onStep);
+  void setPen(bool down);
+  void setSlip(double percent) { slip_ = percent; }
+
+  // Sensors (see sim_constants.h for the geometry).
+  int bumper();
+  int feel();
+  int sense();
+  double range(double relativeAngle);
+  Colour look(double relativeAngle);
+  double beacon(Colour colour);
+  int compass() const;
+  int gpsX() const;
+  int gpsY() const;
+  double chargeLevel() const;
+
+  /// True when the disc at `pos` overlaps an obstacle pixel.
+  bool collides(const Eigen::Vector2d& pos);
+
+ private:
+  /// A pixel near the robot, relative to its centre pixel.
+  struct Offset {
+    int dx, dy;
+    float dist;     ///< from the centre pixel
+    float bearing;  ///< degrees, 0 = up, clockwise, in [0, 360)
+  };
+  struct RayHit {
+    double distance;  ///< from the centre
+    Colour colour;
+    bool edge;        ///< the ray left the screen
+  };
+
+  void requireLocated() const;
+  Eigen::Vector2i centrePixel() const;
+  /// Rebuilds the offset tables when the radius changed.
+  void prepareOffsets();
+  RayHit castRay(double absoluteAngle);
+  double applySlip(double amount);
+  void extendTrail();
+  Colour trailColour() const;
+
+  Canvas& canvas_;
+  Rng& rng_;
+  ObstacleField field_;
+  Pose pose_;
+  double radius_ = 20;
+  Colour colour_ = 1;
+  bool located_ = false;
+  bool penDown_ = false;
+  double slip_ = 0;
+  double travelled_ = 0;
+  double turned_ = 0;
+  // Every pixel within the farthest sensor's reach, sorted by distance, and the same pixels
+  // bucketed by whole degrees of bearing (each bucket sorted by distance). With the distance
+  // to the nearest obstacle known, a sensor visits only pixels at least that far away.
+  double offsetsRadius_ = -1;
+  double offsetsReach_ = 0;
+  std::vector<Offset> byDistance_;
+  std::vector<Offset> byBearing_[360];
+  /// distanceStart_[k]: the first index in byDistance_ at distance >= k; bearingStart_[b][k] the
+  /// same in bucket b. They replace binary searches in the sensors' inner loops.
+  std::vector<uint32_t> distanceStart_;
+  std::vector<uint16_t> bearingStart_[360];
+};
+
+/// Degrees normalised to [0, 360).
+double normalizeDegrees(double d);
+/// The unit vector of a heading (0 = up, clockwise; y grows downward).
+Eigen::Vector2d headingVector(double degrees);
+
+}  // namespace rb
