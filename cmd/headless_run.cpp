@@ -1,5 +1,6 @@
 #include "headless_run.h"
 
+#include <filesystem>
 #include <iostream>
 #include <random>
 
@@ -62,6 +63,11 @@ RunLimits runLimits(const RunOptions& opts) {
   return limits;
 }
 
+std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts) {
+  std::string home = opts.file == "-" ? "." : std::filesystem::path(opts.file).parent_path().string();
+  return std::make_unique<Sandbox>(home.empty() ? "." : home, opts.allowFiles, opts.allowSpawn);
+}
+
 std::string connectRealRobot(const RunOptions& opts, Machine& machine) {
   if (!opts.real) return "";
   try {
@@ -90,6 +96,8 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   run.host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
   run.host->lineHook = std::move(onLine);
   run.host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
+  run.sandbox = runSandbox(opts);
+  run.host->setSystem(run.sandbox.get());
   run.machine = std::make_unique<Machine>(*run.host, run.seed);
   run.machine->setObserver(observer);
   if (std::string why = connectRealRobot(opts, *run.machine); !why.empty()) {

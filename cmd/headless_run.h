@@ -11,11 +11,13 @@
 #include "machine/machine.h"
 #include "program_loader.h"
 #include "run_command.h"
+#include "sandbox.h"
 
 namespace rb::cli {
 
 struct HeadlessRun {
   LoadedFile loaded;
+  std::unique_ptr<Sandbox> sandbox;
   std::unique_ptr<HeadlessHost> host;
   std::unique_ptr<Machine> machine;
   RunResult result;
@@ -39,6 +41,8 @@ int loadForRun(const char* command, const RunOptions& opts, const CompileOptions
                LoadedFile& loaded);
 /// --seed, or a random seed.
 uint64_t runSeed(const RunOptions& opts);
+/// What the program may reach (--allow-files, --allow-spawn), its folder being FILE's.
+std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts);
 /// --max-steps and --timeout.
 RunLimits runLimits(const RunOptions& opts);
 /// With --real: connects the robot on --port before the program starts. Returns "" or why it

@@ -31,6 +31,12 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
   app.add_option("--events", opts.eventsFile,
                  "Feed keys, mouse and dialog answers from a script file (see man rb-run)");
   app.add_option("--keys", opts.keys, "Feed these keys, one after another, as if typed");
+  app.add_option("--allow-files", opts.allowFiles,
+                 "Let the program's file built-ins reach DIR too (default: only the program's "
+                 "own folder); repeatable")
+      ->type_name("DIR");
+  app.add_flag("--allow-spawn", opts.allowSpawn,
+               "Let the program run other programs with Spawn (refused by default)");
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rb::cli {
 
@@ -24,6 +25,10 @@ struct RunOptions {
   // Scripted input for headless runs (--events FILE, --keys TEXT).
   std::string eventsFile;
   std::string keys;
+  // What the program may reach: files in its own folder and these (--allow-files DIR); other
+  // programs only with --allow-spawn.
+  std::vector<std::string> allowFiles;
+  bool allowSpawn = false;
   // rb run only: the live terminal view and its cell mode (ascii, half or braille; empty: the
   // best the terminal can show).
   bool tui = false;

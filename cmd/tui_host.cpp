@@ -236,6 +236,35 @@ void TuiHost::updateControls(Controls& controls, std::string_view) {
   }
 }
 
+namespace {
+std::string base64(std::string_view in) {
+  static constexpr char kDigits[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  size_t i = 0;
+  for (; i + 2 < in.size(); i += 3) {
+    uint32_t v = (uint32_t(uint8_t(in[i])) << 16) | (uint32_t(uint8_t(in[i + 1])) << 8) |
+                 uint8_t(in[i + 2]);
+    for (int k = 18; k >= 0; k -= 6) out += kDigits[(v >> k) & 63];
+  }
+  if (size_t left = in.size() - i; left > 0) {
+    uint32_t v = uint32_t(uint8_t(in[i])) << 16;
+    if (left == 2) v |= uint32_t(uint8_t(in[i + 1])) << 8;
+    out += kDigits[(v >> 18) & 63];
+    out += kDigits[(v >> 12) & 63];
+    out += left == 2 ? kDigits[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+}  // namespace
+
+void TuiHost::clipboardChanged(std::string_view text) {
+  std::string seq = "\033]52;c;" + base64(text) + "\a";
+  std::fwrite(seq.data(), 1, seq.size(), stdout);
+  std::fflush(stdout);
+}
+
 void TuiHost::messageBox(std::string_view text, std::string_view title) {
   box_ = Box{std::string(title), std::string(text)};
   boxAnswered_ = false;

@@ -47,6 +47,9 @@ class TuiHost : public Host, public RobotObserver {
   MouseState waitClick(std::string_view who) override;
   void updateControls(Controls& controls, std::string_view who) override;
   void messageBox(std::string_view text, std::string_view title) override;
+  /// SetCBtext: also hands the text to the terminal's clipboard (OSC 52; terminals that do not
+  /// support it ignore the sequence).
+  void clipboardChanged(std::string_view text) override;
   std::unique_ptr<RobotLink> openRobot(int64_t port) override {
     if (robotOpener) return robotOpener(port);
     return Host::openRobot(port);

@@ -63,6 +63,8 @@ int runTui(const RunOptions& opts) {
   uint64_t seed = runSeed(opts);
   TuiHost host(*screen, baseName(opts.file), startMode(*screen, opts.cells));
   host.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
+  std::unique_ptr<Sandbox> sandbox = runSandbox(opts);
+  host.setSystem(sandbox.get());
   Machine machine(host, seed);
   host.attach(machine);
   machine.setObserver(&host);

@@ -17,6 +17,8 @@ GROUPS = [
     ("robot", "The robot"),
     ("graphics", "Graphics"),
     ("input", "Keyboard, mouse and dialogs"),
+    ("array", "Arrays"),
+    ("system", "Clipboard, files and other programs"),
 ]
 
 

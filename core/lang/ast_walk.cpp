@@ -96,4 +96,26 @@ void forEachName(const Stmt& s, const Visit& visit,
   }
 }
 
+namespace {
+void indexedNames(const Expr* e, std::unordered_set<std::string_view>& out) {
+  if (!e) return;
+  if (e->kind == ExprKind::Index) out.insert(e->text);
+  for (const Expr* a : e->args) indexedNames(a, out);
+}
+
+void arrayNamesOf(const Stmt& s, std::unordered_set<std::string_view>& out) {
+  if (s.kind == StmtKind::Data) out.insert(s.name);
+  indexedNames(s.target, out);
+  indexedNames(s.value, out);
+  for (const Expr* e : s.exprs) indexedNames(e, out);
+  for (const Stmt* b : s.body) arrayNamesOf(*b, out);
+}
+}  // namespace
+
+std::unordered_set<std::string_view> arrayNames(const std::vector<Stmt*>& stmts) {
+  std::unordered_set<std::string_view> out;
+  for (const Stmt* s : stmts) arrayNamesOf(*s, out);
+  return out;
+}
+
 }  // namespace rb::ast

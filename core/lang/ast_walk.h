@@ -5,6 +5,8 @@
 
 #include <functional>
 #include <string_view>
+#include <unordered_set>
+#include <vector>
 
 #include "lang/ast.h"
 
@@ -19,5 +21,11 @@ enum class NameUse { Read, Write, ReadWrite, ArrayWrite };
 void forEachName(const Stmt& s,
                  const std::function<void(std::string_view, SourceLoc, NameUse)>& visit,
                  const std::function<bool(std::string_view, size_t)>& isByRefArg);
+
+/// The names a program uses as arrays anywhere: `dim name[...]`, `data name; ...` and indexed
+/// `name[i]`. Arrays are global (a program by RobotBASIC's authors dims arrays in one sub and
+/// reads them in the main program and in another sub): inside a sub, such a name is the global
+/// array unless it is one of the sub's parameters.
+std::unordered_set<std::string_view> arrayNames(const std::vector<Stmt*>& stmts);
 
 }  // namespace rb::ast

@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "lang/ast_walk.h"
 #include "lang/builtins.h"
@@ -42,18 +43,24 @@ void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
   std::vector<ScopeUse> subs;
   ScopeUse* local = nullptr;
   uint32_t subFile = 0;
+  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
+  std::unordered_set<std::string_view> arrays = ast::arrayNames(program.stmts);
+  std::unordered_set<std::string_view> params;
   for (const ast::Stmt* s : program.stmts) {
     if (local && s->loc.file != subFile) local = nullptr;  // a sub ends with its file
     if (s->kind == ast::StmtKind::Sub && !s->broken) {
       subFile = s->loc.file;
       subs.emplace_back();
       local = &subs.back();
+      params.clear();
+      for (const ast::Param& p : s->params) params.insert(p.name);
     } else if (s->kind == ast::StmtKind::EndSub) {
       local = nullptr;
       continue;
     }
     ast::forEachName(*s, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
-      ScopeUse* scope = local && !isGlobalRef(name) ? local : &global;
+      bool globalName = isGlobalRef(name) || (arrays.count(name) && !params.count(name));
+      ScopeUse* scope = local && !globalName ? local : &global;
       if (isGlobalRef(name)) name.remove_prefix(1);
       if (use != ast::NameUse::Read) scope->written.insert(name);
       if (use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) scope->firstRead.try_emplace(name, loc);

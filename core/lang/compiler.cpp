@@ -111,6 +111,7 @@ class Compiler {
 
   /// Finds labels and subs before compiling, so that forward references resolve.
   void declare() {
+    arrays_ = ast::arrayNames(lp_.stmts);
     for (const Stmt* s : lp_.stmts) {
       if (s->kind == StmtKind::Label) {
         auto [it, fresh] = labels_.try_emplace(s->name, LabelInfo{s->loc, Target{}, false});
@@ -183,7 +184,7 @@ class Compiler {
       const Stmt* b = lp_.stmts[i];
       if (b->kind == StmtKind::Sub || b->kind == StmtKind::EndSub || b->loc.file != s.loc.file) break;
       ast::forEachName(*b, [&](std::string_view name, SourceLoc, ast::NameUse) {
-        if (!isGlobalRef(name)) addLocal(name);
+        if (!isGlobalRef(name) && !arrays_.count(name)) addLocal(name);  // arrays are global
       }, byRef);
       if (b->kind == StmtKind::For) {
         subScope_.forSlots[b] = subScope_.localCount;
@@ -1074,6 +1075,7 @@ class Compiler {
   std::vector<LabelFixup> labelFixups_;
   std::unordered_map<std::string_view, uint32_t> subIndex_;
   std::unordered_map<std::string_view, uint32_t> globals_;
+  std::unordered_set<std::string_view> arrays_;  ///< names used as arrays: global in every sub
   std::unordered_map<std::string, uint32_t> constIndex_;
 };
 

@@ -158,23 +158,33 @@ class Lexer {
     out.push_back(t);
     ++pos_;
   }
+  /// A literal with a two-character prefix (0x, 0%) in the given base, at pos_.
+  template <class IsDigit>
+  void radixNumber(std::vector<Token>& out, Token t, int base, IsDigit isDigit, const char* what) {
+    size_t start = pos_;
+    pos_ += 2;
+    size_t digits = pos_;
+    while (pos_ < text_.size() && isDigit(text_[pos_])) ++pos_;
+    uint64_t v = 0;
+    auto r = std::from_chars(text_.data() + digits, text_.data() + pos_, v, base);
+    if (r.ec != std::errc()) diags_.error(t.loc, std::string(what) + " number too large");
+    t.kind = Tok::Int;
+    t.intValue = static_cast<int64_t>(v);
+    t.text = std::string_view(text_).substr(start, pos_ - start);
+    out.push_back(t);
+  }
   void number(std::vector<Token>& out) {
     size_t start = pos_;
     Token t;
     t.loc = loc(start);
-    if (text_[pos_] == '0' && (peek(1) == 'x' || peek(1) == 'X') && std::isxdigit(static_cast<unsigned char>(peek(2)))) {
-      pos_ += 2;
-      size_t digits = pos_;
-      while (pos_ < text_.size() && std::isxdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
-      uint64_t v = 0;
-      auto r = std::from_chars(text_.data() + digits, text_.data() + pos_, v, 16);
-      if (r.ec != std::errc()) diags_.error(t.loc, "hexadecimal number too large");
-      t.kind = Tok::Int;
-      t.intValue = static_cast<int64_t>(v);
-      t.text = std::string_view(text_).substr(start, pos_ - start);
-      out.push_back(t);
-      return;
-    }
+    // Hexadecimal 0x1F; binary 0%110101 = 53 (RobotBASIC's course slides). `0 % 2` with
+    // spaces, or `x%5`, stays modulo.
+    auto isBin = [](char c) { return c == '0' || c == '1'; };
+    auto isHex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+    if (text_[pos_] == '0' && (peek(1) == 'x' || peek(1) == 'X') && isHex(peek(2)))
+      return radixNumber(out, t, 16, isHex, "hexadecimal");
+    if (text_[pos_] == '0' && peek(1) == '%' && isBin(peek(2)))
+      return radixNumber(out, t, 2, isBin, "binary");
     bool isFloat = false;
     while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
     if (pos_ < text_.size() && text_[pos_] == '.' ) {

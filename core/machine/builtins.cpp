@@ -115,6 +115,7 @@ std::vector<Builtin> makeTable() {
   appendRobotBuiltins(t);
   appendGraphicsBuiltins(t);
   appendInputBuiltins(t);
+  appendSystemBuiltins(t);
   return t;
 }
 

@@ -75,6 +75,10 @@ Value timeDelay(Machine&, Args&);
 void appendRobotBuiltins(std::vector<Builtin>& table);
 void appendGraphicsBuiltins(std::vector<Builtin>& table);
 void appendInputBuiltins(std::vector<Builtin>& table);
+void appendSystemBuiltins(std::vector<Builtin>& table);
+
+/// P_NOWAIT, Spawn's mode that returns at once (the value C's process.h gives it).
+constexpr int64_t kSpawnNoWait = 1;
 
 /// A double result, as an integer when it is integral and small enough (so that print shows
 /// "3", not "3.0", and later integer arithmetic stays exact).

@@ -74,10 +74,22 @@ Value waitClick(Machine& m, Args& a) {
   return {};
 }
 
+/// MsgBox's text: a value, or an array whose elements are its lines (a published program builds
+/// the text with `data IM; "line"` and shows it with `MsgBox(IM)`).
+std::string messageText(const Value& v) {
+  if (!v.isArr()) return formatValue(v);
+  std::string text;
+  for (const Value& line : v.arr().items) {
+    if (!text.empty()) text += '\n';
+    if (!line.isUndef()) text += formatValue(line);
+  }
+  return text;
+}
+
 Value msgBox(Machine& m, Args& a) {
   std::string title = a.has(1) ? formatValue(a[1]) : "RobotBASIC";
-  m.host().messageBox(formatValue(a[0]), title);
-  return {};
+  m.host().messageBox(messageText(a[0]), title);
+  return Value::integer(1);  // the button that closed it: OK
 }
 
 Value addButton(Machine& m, Args& a) {
@@ -172,7 +184,11 @@ void appendInputBuiltins(std::vector<Builtin>& t) {
        "waits for a mouse button to go down (a click made while the program was busy counts), "
        "then reads like readMouse"},
       {"MsgBox", K::Command, "input", "text [, title]", msgBox, 0,
-       "shows a message box and waits until it is answered with OK"},
+       "shows a message box and waits until it is answered with OK; text may be an array of "
+       "lines"},
+      {"MsgBox", K::Function, "input", "text [, title]", msgBox, 0,
+       "shows a message box like the MsgBox command and returns the button that closed it "
+       "(1: OK)"},
       {"AddButton", K::Command, "input", "name, x, y [, width [, height]]", addButton, 0,
        "adds a push button labelled name at (x, y) in screen pixels (the same name again moves it)"},
       {"GetButton", K::Command, "input", "&name", getButton, 0,

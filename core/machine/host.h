@@ -16,6 +16,22 @@
 
 namespace rb {
 
+/// Files and other programs a RobotBASIC program may reach (FileExists, FileRename, DirSet,
+/// Spawn). Student programs are untrusted: rb's commands give an implementation that confines
+/// files to the program's folder and refuses Spawn unless the user allows more
+/// (cmd/sandbox.h). Failures are RuntimeErrors whose message names what was refused and why.
+class SystemAccess {
+ public:
+  virtual ~SystemAccess() = default;
+  virtual bool fileExists(std::string_view who, const std::string& path) = 0;
+  virtual void renameFile(std::string_view who, const std::string& from, const std::string& to) = 0;
+  /// Makes `path` the folder that later relative names start from.
+  virtual void setDirectory(std::string_view who, const std::string& path) = 0;
+  /// Runs a command line; `wait`: until it ends (returns its exit status), else returns at once
+  /// (1 when it started).
+  virtual int64_t spawn(std::string_view who, const std::string& command, bool wait) = 0;
+};
+
 class Host {
  public:
   virtual ~Host() = default;
@@ -59,6 +75,13 @@ class Host {
     throw noInput("MsgBox", "an answer to the message box");
   }
 
+  /// Files and processes; nullptr: this run reaches none (the built-ins say so).
+  SystemAccess* system() const { return system_; }
+  void setSystem(SystemAccess* s) { system_ = s; }
+  /// SetCBtext: the run keeps the clipboard; a live view may also hand the text to the
+  /// terminal's clipboard.
+  virtual void clipboardChanged(std::string_view /*text*/) {}
+
   /// `rCommPort port` with port != 0: opens the link to a real robot. Hosts without a serial
   /// driver refuse.
   virtual std::unique_ptr<RobotLink> openRobot(int64_t port) {
@@ -67,6 +90,8 @@ class Host {
   }
 
  protected:
+  SystemAccess* system_ = nullptr;
+
   static RuntimeError noInput(std::string_view who, std::string_view what) {
     return RuntimeError(std::string(who) + ": cannot wait for " + std::string(what) +
                         ": this run has no keyboard or mouse");

@@ -95,6 +95,10 @@ class Machine {
   /// drawn into the canvas, so the robot does not sense them.
   Controls controls;
 
+  /// SetCBtext / GetCBtext: the clipboard belongs to the run (a live view may also copy it to
+  /// the terminal's clipboard).
+  std::string clipboard;
+
  private:
   Host& host_;
   Rng rng_;
