@@ -77,11 +77,12 @@ int executeCheck(const CheckOptions& opts) {
       missing = true;
       ++errors;
       if (json) {
-        std::printf("%s\n  {\"file\":\"%s\",\"line\":0,\"column\":0,\"severity\":\"error\",\"message\":\"no such file\"}",
-                    firstJson ? "" : ",", jsonEscape(file).c_str());
+        std::printf("%s\n  {\"file\":\"%s\",\"line\":0,\"column\":0,\"severity\":\"error\",\"message\":\"%s\"}",
+                    firstJson ? "" : ",", jsonEscape(file).c_str(), jsonEscape(loaded.readError).c_str());
         firstJson = false;
       } else {
-        std::printf("%s: error: no such file\n", file.c_str());
+        std::printf("%s: error: cannot read '%s': %s\n", file.c_str(), file.c_str(),
+                    loaded.readError.c_str());
       }
       continue;
     }

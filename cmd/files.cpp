@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -52,22 +51,41 @@ std::optional<std::string> FileSourceReader::read(const std::string& canonical) 
   return readFile(canonical);
 }
 
-std::optional<std::string> readFile(const std::string& path) {
+namespace {
+std::optional<std::string> readLimited(std::istream& in, std::string* why) {
+  std::string text;
+  char buf[1 << 16];
+  while (in) {
+    in.read(buf, sizeof buf);
+    text.append(buf, static_cast<size_t>(in.gcount()));
+    if (text.size() > kMaxInputBytes) {
+      if (why) *why = "larger than " + std::to_string(kMaxInputBytes >> 20) + " MiB, not a program";
+      return std::nullopt;
+    }
+  }
+  if (in.bad()) {
+    if (why) *why = "read error";
+    return std::nullopt;
+  }
+  return text;
+}
+}  // namespace
+
+std::optional<std::string> readFile(const std::string& path, std::string* why) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) return std::nullopt;
+  if (fs::is_directory(path, ec)) {
+    if (why) *why = "it is a folder";
+    return std::nullopt;
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return ss.str();
+  if (!in) {
+    if (why) *why = fs::exists(path, ec) ? "permission denied" : "no such file";
+    return std::nullopt;
+  }
+  return readLimited(in, why);
 }
 
-std::string readStdin() {
-  std::ostringstream ss;
-  ss << std::cin.rdbuf();
-  return ss.str();
-}
+std::optional<std::string> readStdin(std::string* why) { return readLimited(std::cin, why); }
 
 std::vector<std::string> libraryDirs() {
   std::vector<std::string> dirs;

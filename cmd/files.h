@@ -18,10 +18,15 @@ class FileSourceReader : public SourceReader {
   std::optional<std::string> read(const std::string& canonical) override;
 };
 
-/// Reads a whole file; nullopt when it cannot be read.
-std::optional<std::string> readFile(const std::string& path);
-/// Reads standard input to the end.
-std::string readStdin();
+/// The largest program, include or events file rb reads: programs are text, so anything larger
+/// is a mistake (`rb run /dev/zero`) that must not exhaust the machine.
+constexpr size_t kMaxInputBytes = 16u << 20;
+
+/// Reads a whole file of at most kMaxInputBytes; nullopt when it cannot be read, with the reason
+/// in `why` ("no such file", "it is a folder", "larger than 16 MiB", ...).
+std::optional<std::string> readFile(const std::string& path, std::string* why = nullptr);
+/// Reads standard input to the end (at most kMaxInputBytes; nullopt beyond, with the reason).
+std::optional<std::string> readStdin(std::string* why = nullptr);
 
 /// Folders searched for #include files after the including file's folder: $RB_LIB_PATH
 /// (colon-separated), the installed share/rb/lib beside the executable, and the source tree's lib/.

@@ -1,6 +1,10 @@
 #include "headless_host.h"
 
+#include <cerrno>
+#include <cstring>
 #include <string>
+
+#include "base/runtime_error.h"
 
 namespace rb::cli {
 
@@ -22,6 +26,9 @@ HeadlessHost::~HeadlessHost() { flush(); }
 void HeadlessHost::output(std::string_view text) {
   buffer_ += text;
   if (buffer_.size() >= kFlushAt) flush();
+  // Output that cannot be written stops the program at once (runHeadless reports it, exit 74).
+  if (writeError_ != 0)
+    throw RuntimeError(std::string("cannot write the program's output: ") + std::strerror(writeError_));
 }
 
 void HeadlessHost::flush() {
@@ -29,11 +36,15 @@ void HeadlessHost::flush() {
     buffer_.clear();
     return;
   }
-  if (!buffer_.empty()) {
-    std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+  if (writeError_ != 0) {  // output is lost already: the run stops at its next poll
     buffer_.clear();
+    return;
   }
-  std::fflush(out_);
+  errno = 0;
+  bool ok = buffer_.empty() || std::fwrite(buffer_.data(), 1, buffer_.size(), out_) == buffer_.size();
+  buffer_.clear();
+  ok = std::fflush(out_) == 0 && ok;
+  if (!ok) writeError_ = errno != 0 ? errno : EIO;
 }
 
 std::optional<std::string> HeadlessHost::inputLine(std::string_view prompt) {

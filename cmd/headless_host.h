@@ -38,6 +38,10 @@ class HeadlessHost : public Host {
     if (lineHook) lineHook(loc);
   }
   void flush();
+  /// A failed write of program output (a full disk, a closed pipe) stops the run: the output
+  /// is lost, so going on would only waste time. errno of the failure, 0 when none.
+  int writeError() const { return writeError_; }
+  bool poll() override { return writeError_ == 0; }
 
   std::unique_ptr<RobotLink> openRobot(int64_t port) override {
     if (robotOpener) return robotOpener(port);
@@ -53,6 +57,7 @@ class HeadlessHost : public Host {
   std::FILE* out_;
   std::istream& in_;
   std::string buffer_;
+  int writeError_ = 0;
   double virtualMs_ = 0;
   ScriptedInput script_;  ///< plays on virtualMs_
   std::chrono::steady_clock::time_point start_;

@@ -1,5 +1,6 @@
 #include "headless_run.h"
 
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <random>
@@ -19,9 +20,11 @@ int loadInputScript(const char* command, const RunOptions& opts, InputScript& sc
                   : events      ? "the --events script"
                                 : "the --keys text";
   if (events) {
-    std::optional<std::string> text = readFile(opts.eventsFile);
+    std::string why;
+    std::optional<std::string> text = readFile(opts.eventsFile, &why);
     if (!text) {
-      std::fprintf(stderr, "%s: cannot read events file '%s'\n", command, opts.eventsFile.c_str());
+      std::fprintf(stderr, "%s: cannot read events file '%s': %s\n", command,
+                   opts.eventsFile.c_str(), why.c_str());
       return exitcode::kNoInput;
     }
     script.eventsFile = opts.eventsFile;
@@ -47,7 +50,8 @@ int loadForRun(const char* command, const RunOptions& opts, const CompileOptions
                LoadedFile& loaded) {
   loaded = loadFile(opts.file, compile, false);
   if (loaded.exitCode == exitcode::kNoInput) {
-    std::fprintf(stderr, "%s: cannot read '%s': no such file\n", command, opts.file.c_str());
+    std::fprintf(stderr, "%s: cannot read '%s': %s\n", command, opts.file.c_str(),
+                 loaded.readError.c_str());
     return exitcode::kNoInput;
   }
   printDiagnostics(stderr, loaded.program->sources, loaded.diags, true);
@@ -108,6 +112,10 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   run.result = interp.run(runLimits(opts));
   run.ran = true;
   run.host->flush();
+  if (int err = run.host->writeError()) {
+    std::fprintf(stderr, "%s: cannot write the program's output: %s\n", command, std::strerror(err));
+    return exitcode::kIoError;
+  }
   reportSeed(command, opts, run.seed, *run.machine);
   if (run.result.status == RunStatus::StepLimit && !run.stepLimitIsError) return exitcode::kOk;
   if (run.result.error) {

@@ -10,18 +10,15 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
   LoadedFile out;
   std::string text;
   std::string name = file;
-  if (file == "-") {
-    text = readStdin();
-    name = "<stdin>";
-  } else {
-    std::optional<std::string> t = readFile(file);
-    if (!t) {
-      out.diags.error({}, "cannot read '" + file + "': no such file");
-      out.exitCode = exitcode::kNoInput;
-      return out;
-    }
-    text = std::move(*t);
+  std::string why;
+  std::optional<std::string> t = file == "-" ? readStdin(&why) : readFile(file, &why);
+  if (file == "-") name = "<stdin>";
+  if (!t) {
+    out.readError = why;
+    out.exitCode = exitcode::kNoInput;
+    return out;
   }
+  text = std::move(*t);
   FileSourceReader reader;
   LoadOptions loadOptions;
   loadOptions.libraryDirs = libraryDirs();

@@ -17,7 +17,8 @@ struct LoadedFile {
   std::unique_ptr<LoadedProgram> program;  ///< null when the file could not be read
   std::unique_ptr<Program> compiled;       ///< null when there are errors
   DiagnosticList diags;
-  int exitCode = 0;                        ///< kNoInput when the file is missing, else 0
+  int exitCode = 0;                        ///< kNoInput when the file cannot be read, else 0
+  std::string readError;                   ///< why it cannot be read ("no such file", ...)
 };
 
 /// Reads FILE ("-": standard input), loads its includes and compiles it.

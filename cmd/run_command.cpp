@@ -1,10 +1,43 @@
 #include "run_command.h"
 
+#include <cmath>
+#include <string>
+
 #include "exit_codes.h"
 #include "headless_run.h"
 #include "tui_run.h"
 
 namespace rb::cli {
+
+namespace {
+/// A number of seconds: finite and not negative (CLI11's NonNegativeNumber lets nan through
+/// and prints its range as 300 digits).
+const CLI::Validator kSeconds(
+    [](std::string& text) -> std::string {
+      double v = 0;
+      try {
+        size_t used = 0;
+        v = std::stod(text, &used);
+        if (used != text.size()) return "'" + text + "' is not a number of seconds";
+      } catch (const std::exception&) {
+        return "'" + text + "' is not a number of seconds";
+      }
+      if (!std::isfinite(v) || v < 0) return "'" + text + "' must be a number of seconds, 0 or more";
+      return "";
+    },
+    "SECONDS");
+
+const CLI::Validator kPositiveSeconds(
+    [](std::string& text) -> std::string {
+      if (std::string why = kSeconds(text); !why.empty()) return why;
+      if (std::stod(text) <= 0) return "'" + text + "' must be more than 0 seconds";
+      return "";
+    },
+    "SECONDS");
+
+const CLI::Validator kNotEmpty(
+    [](std::string& text) -> std::string { return text.empty() ? "must not be empty" : ""; }, "");
+}  // namespace
 
 void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
   app.add_option("--seed", opts.seed,
@@ -15,11 +48,12 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--timeout", opts.timeoutSeconds,
                  "Stop the program after SECONDS of real time (0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kSeconds);
   CLI::Option* port = app.add_option(
       "--port", opts.port,
       "Serial port of the real robot: a number N (see man rb-run) or a device path; also used "
-      "by the program's rCommPort");
+      "by the program's rCommPort")
+      ->check(kNotEmpty);
   app.add_flag("--real", opts.real,
                "Drive a real robot on --port instead of the simulator (see man rb-run)")
       ->needs(port);
@@ -27,7 +61,7 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
       ->check(CLI::PositiveNumber);
   app.add_option("--robot-timeout", opts.robotTimeoutSeconds,
                  "Seconds to wait for each answer of the real robot (default 2)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveSeconds);
   app.add_option("--events", opts.eventsFile,
                  "Feed keys, mouse and dialog answers from a script file (see man rb-run)");
   app.add_option("--keys", opts.keys, "Feed these keys, one after another, as if typed");

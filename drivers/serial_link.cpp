@@ -9,6 +9,12 @@
 
 namespace rb::drivers {
 
+namespace {
+/// How many bytes of a too-long reply rb reads before giving up on it, and how many it shows.
+constexpr size_t kMaxShownReply = 256;
+constexpr size_t kShownBytes = 16;
+}  // namespace
+
 std::string secondsText(double seconds) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", seconds);
@@ -50,10 +56,14 @@ RobotReply SerialLink::transact(uint8_t code, uint8_t param) {
           std::to_string(protocol::kReplySize) + " bytes" + within + " (" +
           protocol::hexBytes(got.data(), got.size()) + ")");
   }
-  port_.readWaiting(got);  // a reply longer than five bytes that arrived at once
+  // A reply longer than five bytes that arrived at once (read up to a bound: a port that
+  // floods bytes must not keep rb reading).
+  port_.readWaiting(got, kMaxShownReply);
   if (got.size() > static_cast<size_t>(protocol::kReplySize))
-    fault(who + " sent a malformed reply: " + std::to_string(got.size()) + " bytes instead of " +
-          std::to_string(protocol::kReplySize) + " (" + protocol::hexBytes(got.data(), got.size()) + ")");
+    fault(who + " sent a malformed reply: " +
+          (got.size() >= kMaxShownReply ? "at least " : "") + std::to_string(got.size()) +
+          " bytes instead of " + std::to_string(protocol::kReplySize) + " (" +
+          protocol::hexBytes(got.data(), got.size(), kShownBytes) + ")");
   std::array<uint8_t, protocol::kReplySize> bytes{};
   std::copy(got.begin(), got.end(), bytes.begin());
   if (!protocol::plausibleReply(bytes))

@@ -223,9 +223,9 @@ IoStatus SerialPort::readAtLeast(std::vector<uint8_t>& into, size_t want, Deadli
   return IoStatus::Done;
 }
 
-void SerialPort::readWaiting(std::vector<uint8_t>& into) {
+void SerialPort::readWaiting(std::vector<uint8_t>& into, size_t limit) {
   uint8_t buf[64];
-  for (;;) {
+  while (into.size() < limit) {
     ssize_t n = ::read(fd_, buf, sizeof buf);
     if (n > 0) {
       into.insert(into.end(), buf, buf + n);
@@ -234,6 +234,7 @@ void SerialPort::readWaiting(std::vector<uint8_t>& into) {
     if (n < 0 && errno == EINTR) continue;
     return;  // nothing more waiting, or a hang-up the next command will report
   }
+  // A device that keeps sending is read no further: `limit` bytes already prove it wrong.
 }
 
 }  // namespace rb::drivers

@@ -52,8 +52,9 @@ class SerialPort {
   /// hangs up. Bytes are read in blocks, so a reply longer than `want` that arrived at once is
   /// kept whole. Data that arrived before a hang-up is returned first (status Done).
   IoStatus readAtLeast(std::vector<uint8_t>& into, size_t want, Deadline deadline);
-  /// Appends whatever bytes are already waiting, without waiting for more.
-  void readWaiting(std::vector<uint8_t>& into);
+  /// Appends whatever bytes are already waiting, without waiting for more, until `into` holds
+  /// `limit` bytes (a device that floods the line is not read forever).
+  void readWaiting(std::vector<uint8_t>& into, size_t limit);
 
  private:
   [[noreturn]] void fail(const std::string& what, int error);

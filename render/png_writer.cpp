@@ -9,6 +9,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "robot/robot_sim.h"
 
 namespace rb::render {
@@ -126,9 +129,25 @@ std::vector<uint8_t> encodePng(const RgbImage& image) {
 }
 
 bool writeFileBytes(const std::string& path, const void* bytes, size_t size, std::string& error) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
+  // Written beside the target under a temporary name, then renamed over it: an interrupted
+  // write never leaves a truncated picture, and a symbolic link at `path` is replaced rather
+  // than followed onto another file.
+  std::string tmp = path + ".tmp-XXXXXX";
+  int fd = ::mkstemp(tmp.data());
+  if (fd < 0) {
+    error = "cannot write '" + path + "': " + std::strerror(errno);
+    return false;
+  }
+  mode_t mask = ::umask(0);  // mkstemp makes 0600; give the picture the usual 0666 & ~umask
+  ::umask(mask);
+  if (::fchmod(fd, 0666 & ~mask) != 0) {
+    // Keeping 0600 is harmless.
+  }
+  std::FILE* f = ::fdopen(fd, "wb");
   if (!f) {
     error = "cannot write '" + path + "': " + std::strerror(errno);
+    ::close(fd);
+    ::unlink(tmp.c_str());
     return false;
   }
   bool ok = std::fwrite(bytes, 1, size, f) == size;
@@ -138,7 +157,14 @@ bool writeFileBytes(const std::string& path, const void* bytes, size_t size, std
     ok = false;
     writeErrno = errno;
   }
-  if (!ok) error = "cannot write '" + path + "': " + std::strerror(writeErrno);
+  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ok = false;
+    writeErrno = errno;
+  }
+  if (!ok) {
+    ::unlink(tmp.c_str());
+    error = "cannot write '" + path + "': " + std::strerror(writeErrno);
+  }
   return ok;
 }
 

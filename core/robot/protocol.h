@@ -70,14 +70,16 @@ constexpr std::string_view commandName(uint8_t code) {
 }
 
 /// Bytes as lower-case hex pairs separated by spaces ("06 ff"), for messages and logs.
-inline std::string hexBytes(const uint8_t* data, size_t n) {
+/// The bytes in hex ("06 ff 5a"), at most `shown` of them, then " ..." when there were more.
+inline std::string hexBytes(const uint8_t* data, size_t n, size_t shown = SIZE_MAX) {
   static constexpr char kDigits[] = "0123456789abcdef";
   std::string s;
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = 0; i < n && i < shown; ++i) {
     if (i) s += ' ';
     s += kDigits[data[i] >> 4];
     s += kDigits[data[i] & 0xf];
   }
+  if (n > shown) s += " ...";
   return s;
 }
 
