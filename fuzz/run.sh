@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer target and fuzzes rb's lexer, parser, checker and compiler.
-# Usage: fuzz/run.sh [seconds]   (default 60)
-# Extra arguments after [seconds] are passed to libFuzzer (e.g. -jobs=4, -seed=1).
-# Exit status: 0 when nothing was found, libFuzzer's non-zero status when it found a crash,
-# leak, sanitizer error or timeout (the input is saved under build-fuzz/fuzz/artifacts/).
+# Builds the libFuzzer targets and runs each for a bounded time:
+#   rb_fuzz      the front end (lexer, parser, checker, compiler, diagnostics), inputs <= 4 KiB
+#   rb_fuzz_run  whole runs (screen, robot, picture writers) under limits, inputs <= 64 KiB
+# Usage: fuzz/run.sh [seconds] [libFuzzer options...]   (seconds per target, default 60)
+# RB_FUZZ_TARGETS="rb_fuzz_run" picks targets. Exit status: 0 when nothing was found, else
+# libFuzzer's non-zero status (the input is saved under build-fuzz/fuzz/artifacts/).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 seconds=${1:-60}
@@ -12,44 +13,61 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]]; then
   echo "usage: $0 [seconds] [libFuzzer options...]" >&2
   exit 64
 fi
+targets=${RB_FUZZ_TARGETS:-"rb_fuzz rb_fuzz_run"}
 
 "$root/scripts/build.sh" --fuzz
 
 # A fresh corpus from the test programs, the examples and the saved reproducers (outside the
 # source tree; the fuzzer adds the inputs it finds interesting to it, so it is thrown away
 # afterwards).
-corpus="$(mktemp -d "${TMPDIR:-/tmp}/rb-fuzz-corpus.XXXXXX")"
-trap 'rm -rf "$corpus"' EXIT
+work="$(mktemp -d "${TMPDIR:-/tmp}/rb-fuzz.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+seeds="$work/seeds"
+mkdir -p "$seeds"
 n=0
 while IFS= read -r -d '' f; do
   # Flatten the path into a unique file name: testdata/lang/include/main.bas -> testdata_lang_include_main.bas
   rel="${f#"$root"/}"
-  cp "$f" "$corpus/${rel//\//_}"
+  cp "$f" "$seeds/${rel//\//_}"
   n=$((n + 1))
 done < <(find "$root/testdata" "$root/examples" "$root/fuzz/repro" -name '*.bas' -type f -print0 2>/dev/null)
-echo "run.sh: $n seed programs in $corpus"
+echo "run.sh: $n seed programs"
+
+# The dictionary: fuzz/bas.dict (keywords, operators, awkward numbers) plus every built-in name
+# from rb's own table, so the fuzzer reaches every command and function.
+dict="$work/rb.dict"
+cp "$root/fuzz/bas.dict" "$dict"
+"$root/build-fuzz/cmd/rb" check --list-builtins --format json |
+  python3 -c 'import json,sys; [print("\"%s\"" % b["name"]) for b in json.load(sys.stdin)]' >> "$dict"
 
 artifacts="$root/build-fuzz/fuzz/artifacts"
 mkdir -p "$artifacts"
-log="$root/build-fuzz/fuzz/last-run.log"
-
-status=0
-"$root/build-fuzz/fuzz/rb_fuzz" \
-  -max_total_time="$seconds" \
-  -max_len=4096 \
-  -timeout=10 \
-  -dict="$root/fuzz/bas.dict" \
-  -artifact_prefix="$artifacts/" \
-  -print_final_stats=1 \
-  "$@" \
-  "$corpus" 2>&1 | tee "$log" || status=${PIPESTATUS[0]}
-
-if [[ $status -ne 0 ]]; then
-  echo >&2
-  echo "run.sh: the fuzzer failed (exit status $status); log in $log" >&2
-  grep -E "^(artifact_prefix|Test unit written to)" "$log" >&2 || true
-  echo "run.sh: reproduce with: $root/build-fuzz/fuzz/rb_fuzz <crash file>" >&2
-  echo "run.sh: minimize with:  $root/build-fuzz/fuzz/rb_fuzz -minimize_crash=1 -runs=10000 <crash file>" >&2
-  exit "$status"
-fi
-echo "run.sh: no crash in ${seconds}s"
+for target in $targets; do
+  case "$target" in
+    rb_fuzz) maxlen=4096 ;;
+    rb_fuzz_run) maxlen=65536 ;;
+    *) echo "run.sh: unknown target $target" >&2; exit 64 ;;
+  esac
+  corpus="$work/corpus-$target"
+  mkdir -p "$corpus"
+  log="$root/build-fuzz/fuzz/last-run-$target.log"
+  status=0
+  "$root/build-fuzz/fuzz/$target" \
+    -max_total_time="$seconds" \
+    -max_len="$maxlen" \
+    -timeout=10 \
+    -rss_limit_mb=2048 \
+    -dict="$dict" \
+    -artifact_prefix="$artifacts/$target-" \
+    -print_final_stats=1 \
+    "$@" \
+    "$corpus" "$seeds" 2>&1 | tee "$log" || status=${PIPESTATUS[0]}
+  if [[ $status -ne 0 ]]; then
+    echo >&2
+    echo "run.sh: $target failed (exit status $status); log in $log" >&2
+    grep -E "^(artifact_prefix|Test unit written to)" "$log" >&2 || true
+    echo "run.sh: reproduce with: $root/build-fuzz/fuzz/$target <crash file>" >&2
+    exit "$status"
+  fi
+  echo "run.sh: $target: no crash in ${seconds}s ($(grep -Eo 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -Eo '[0-9]+$') executions)"
+done
