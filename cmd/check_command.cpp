@@ -7,6 +7,7 @@
 #include "lang/builtins.h"
 #include "lang/checker.h"
 #include "exit_codes.h"
+#include "files.h"
 #include "program_loader.h"
 
 namespace rb::cli {
@@ -63,11 +64,16 @@ int executeCheck(const CheckOptions& opts) {
     std::fprintf(stderr, "rb check: no files given (see rb check --help)\n");
     return exitcode::kUsage;
   }
+  std::vector<std::string> files = expandProgramPaths(opts.files);
+  if (files.empty()) {
+    std::fprintf(stderr, "rb check: error: no .bas files in %s\n", opts.files.front().c_str());
+    return exitcode::kNoInput;
+  }
   size_t errors = 0, warnings = 0;
   bool missing = false;
   bool firstJson = true;
   if (json) std::printf("[");
-  for (const std::string& file : opts.files) {
+  for (const std::string& file : files) {
     LoadedFile loaded = loadFile(file, CompileOptions{}, true);
     if (opts.target == "rb9" && loaded.program) {
       checkRb9Target(*loaded.program, loaded.diags);
@@ -110,7 +116,7 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   auto opts = std::make_shared<CheckOptions>();
   CLI::App* check = app.add_subcommand(
       "check", "Find errors in programs without running them (compiler-style diagnostics)");
-  check->add_option("files", opts->files, "Program files to check");
+  check->add_option("files", opts->files, "Program files, or folders whose *.bas files (and below) are checked");
   check->add_option("--format", opts->format, "Output format: text (file:line:col: ...) or json")
       ->check(CLI::IsMember({"text", "json"}));
   check->add_flag("--werror", opts->werror, "Treat warnings as errors (exit 65 when there are any)");

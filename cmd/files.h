@@ -28,6 +28,10 @@ std::optional<std::string> readFile(const std::string& path, std::string* why = 
 /// Reads standard input to the end (at most kMaxInputBytes; nullopt beyond, with the reason).
 std::optional<std::string> readStdin(std::string* why = nullptr);
 
+/// The program files PATHS name: a file as it is, a folder as every *.bas in it and below
+/// (sorted, so a class folder is always checked in the same order).
+std::vector<std::string> expandProgramPaths(const std::vector<std::string>& paths);
+
 /// Folders searched for #include files after the including file's folder: $RB_LIB_PATH
 /// (colon-separated), the installed share/rb/lib beside the executable, and the source tree's lib/.
 std::vector<std::string> libraryDirs();

@@ -2,8 +2,10 @@
 // to exit codes; each subcommand lives in its own *_command.cpp.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <optional>
 
 #include "check_command.h"
+#include "cli_errors.h"
 #include "exit_codes.h"
 #include "render_command.h"
 #include "robot_command.h"
@@ -20,7 +22,10 @@ int main(int argc, char** argv) {
   rb::cli::addTraceCommand(app, exitCode);
   rb::cli::addRenderCommand(app, exitCode);
   rb::cli::addRobotCommand(app, exitCode);
-  app.footer("Run 'rb SUBCOMMAND --help' for the options of a subcommand. Manual: man rb.");
+  app.footer("Run 'rb COMMAND --help' (or 'rb help COMMAND') for the options of a command. "
+             "Manual: man rb.");
+  rb::cli::useRbFailureMessages(app);
+  if (std::optional<int> code = rb::cli::precheckCommandLine(app, argc, argv)) return *code;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
