@@ -269,22 +269,26 @@ double SimRobot::turn(double degrees, const std::function<void()>& onStep) {
 int SimRobot::bumper() {
   requireLocated();
   prepareOffsets();
-  // Measured from the exact centre, so that a step that crashes always had the bumper of its
-  // leading quadrant pressed before it (docs/robot.md, "Collisions").
-  const double reach = radius_ + sim::kBumperReach;
+  // The bumpers sit on the rim: they feel obstacle pixels within kBumperReach of the edge,
+  // inside or outside it (not what lies deep under the robot), measured from the exact centre,
+  // so that a step that crashes always had the bumper of its leading quadrant pressed before
+  // it (docs/robot.md, "Collisions").
+  const double reach = radius_ + sim::kBumperReach, inner = radius_ - sim::kBumperReach;
   Eigen::Vector2i c = centrePixel();
   double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
   if (clear - kRounding > reach) return 0;
   const Eigen::Vector2d fwd = headingVector(pose_.heading), right(-fwd.y(), fwd.x());
   const Eigen::Vector2d off = pose_.pos - c.cast<double>();
-  const double reach2 = reach * reach;
+  const double reach2 = reach * reach, inner2 = inner > 0 ? inner * inner : -1;
   constexpr double kTie = 1e-9;  // both edges of the front and rear quadrants belong to them
   int bits = 0;
-  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, clear - kRounding));
+  double from = std::max(clear, inner) - kRounding;
+  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, from));
        it != byDistance_.end() && it->dist <= reach + kRounding; ++it) {
     if (!field_.obstacle(c.x() + it->dx, c.y() + it->dy)) continue;
     double vx = it->dx - off.x(), vy = it->dy - off.y();
-    if (vx * vx + vy * vy > reach2) continue;
+    double d2 = vx * vx + vy * vy;
+    if (d2 > reach2 || d2 < inner2) continue;
     double f = vx * fwd.x() + vy * fwd.y(), s = vx * right.x() + vy * right.y();
     if (f + kTie >= std::abs(s)) bits |= sim::kBumperFront;
     else if (-f + kTie >= std::abs(s)) bits |= sim::kBumperRear;
