@@ -275,16 +275,18 @@ int SimRobot::bumper() {
   // it (docs/robot.md, "Collisions").
   const double reach = radius_ + sim::kBumperReach, inner = radius_ - sim::kBumperReach;
   Eigen::Vector2i c = centrePixel();
-  double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
-  if (clear - kRounding > reach) return 0;
-  const Eigen::Vector2d fwd = headingVector(pose_.heading), right(-fwd.y(), fwd.x());
   const Eigen::Vector2d off = pose_.pos - c.cast<double>();
+  // Distances from the centre pixel differ from those from the exact centre by at most this.
+  const double slack = off.norm() + 1e-9;
+  double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
+  if (clear - slack > reach) return 0;
+  const Eigen::Vector2d fwd = headingVector(pose_.heading), right(-fwd.y(), fwd.x());
   const double reach2 = reach * reach, inner2 = inner > 0 ? inner * inner : -1;
   constexpr double kTie = 1e-9;  // both edges of the front and rear quadrants belong to them
   int bits = 0;
-  double from = std::max(clear, inner) - kRounding;
+  double from = std::max(clear, inner) - slack;
   for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, from));
-       it != byDistance_.end() && it->dist <= reach + kRounding; ++it) {
+       it != byDistance_.end() && it->dist <= reach + slack; ++it) {
     if (!field_.obstacle(c.x() + it->dx, c.y() + it->dy)) continue;
     double vx = it->dx - off.x(), vy = it->dy - off.y();
     double d2 = vx * vx + vy * vy;
