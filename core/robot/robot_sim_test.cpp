@@ -179,6 +179,30 @@ TEST_CASE("sim: the trail drawn step by step matches a trail drawn per move", "[
   }
 }
 
+TEST_CASE("sim: the front bumper fires first into corners and walls from every heading", "[sim]") {
+  // From one place, every heading in half-degree steps: into the screen's corners and walls, a
+  // box's convex corners and an L-shaped concave corner, with whole steps and with 0.7 px ones.
+  for (double step : {1.0, 0.7}) {
+    World w;
+    w.canvas.rectangle({150, 120}, {260, 200}, 1, colours::kBlack, colours::kBlack);
+    w.canvas.rectangle({520, 380}, {700, 400}, 1, colours::kBlack, colours::kBlack);
+    w.canvas.rectangle({680, 250}, {700, 400}, 1, colours::kBlack, colours::kBlack);
+    w.canvas.line({300, 500}, {560, 520}, 4, colours::kBlack);
+    for (double h = 0; h < 360; h += 0.5) {
+      w.robot.locate(400, 300, h, 20, colours::kBlue);
+      int steps = 0;
+      INFO("heading " << h << " step " << step);
+      REQUIRE_NOTHROW([&] {
+        while ((w.robot.bumper() & sim::kBumperFront) == 0 && steps < 2000) {
+          w.robot.forward(step, nullptr);
+          ++steps;
+        }
+      }());
+      CHECK(steps < 2000);
+    }
+  }
+}
+
 TEST_CASE("sim: the front bumper fires before any forward crash, in random arenas", "[sim]") {
   // Random walks that check the bumper of the leading quadrant before every step: forward and
   // backward, whole and partial steps, random turns (large and tiny, so the robot grazes walls
