@@ -88,6 +88,28 @@ TEST_CASE("svg: Figure 1.7's trail is one green polyline through the square's co
   CHECK(svg.find("<image") == std::string::npos);
 }
 
+TEST_CASE("svg: a trail broken by other drawing is polylines that join end to end", "[render][svg]") {
+  // Status text between the moves: the trail goes on after each text in a new polyline that
+  // starts where the last one ended, so the picture shows one continuous line.
+  std::string svg = svgOf(
+      "rLocate 400, 300\nrInvisible GREEN\nLineWidth 4\nrPen DOWN\n"
+      "for i = 1 to 30\n  xyString 10, 10, i\n  rForward 2\nnext\n"
+      "rTurn 90\nfor i = 1 to 20\n  xyString 10, 10, i\n  rForward 3\nnext\n");
+  std::vector<std::string> lines = elements(svg, "polyline");
+  REQUIRE(lines.size() == 50);
+  auto ends = [](const std::string& points) {
+    return std::make_pair(points.substr(0, points.find(' ')), points.substr(points.rfind(' ') + 1));
+  };
+  CHECK(ends(attribute(lines.front(), "points")).first == "400,300");
+  CHECK(ends(attribute(lines.back(), "points")).second == "460,240");
+  for (size_t i = 1; i < lines.size(); ++i) {
+    INFO("polyline " << i);
+    CHECK(ends(attribute(lines[i], "points")).first == ends(attribute(lines[i - 1], "points")).second);
+    CHECK(attribute(lines[i], "stroke") == attribute(lines[0], "stroke"));
+    CHECK(attribute(lines[i], "stroke-width") == "4");
+  }
+}
+
 TEST_CASE("svg: the same program and seed give byte-identical SVG", "[render][svg]") {
   std::string program = test::readText(test::sourceRoot() / "examples" / "fig_1_7.bas") +
                         "circle 10, 10, 90, 50, RED, YELLOW\nxyText 100, 500, \"same\", \"Arial\", 20\n"

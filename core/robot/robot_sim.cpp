@@ -79,6 +79,20 @@ void SimRobot::prepareOffsets() {
   for (const Offset& o : byDistance_) byBearing_[static_cast<int>(o.bearing) % 360].push_back(o);
   distanceStart_ = startsOf<uint32_t>(byDistance_, offsetsReach_);
   for (int b = 0; b < 360; ++b) bearingStart_[b] = startsOf<uint16_t>(byBearing_[b], offsetsReach_);
+  // A pixel a step sweeps the rim over is within (r - step, r] of the exact centre, so within
+  // rounding of that from the centre pixel.
+  const double inner = radius_ - sim::kMaxStep - kRounding - 1e-6, outer = radius_ + kRounding + 1e-6;
+  rim_.clear();
+  for (const Offset& o : byDistance_)
+    if (o.dist >= inner && o.dist <= outer) rim_.push_back(o);
+  std::stable_sort(rim_.begin(), rim_.end(), [](const Offset& a, const Offset& b) { return a.bearing < b.bearing; });
+  rimStart_.assign(361, 0);
+  size_t i = 0;
+  for (int b = 0; b <= 360; ++b) {
+    while (i < rim_.size() && rim_[i].bearing < b) ++i;
+    rimStart_[static_cast<size_t>(b)] = static_cast<uint32_t>(i);
+  }
+  rimSlack_ = std::asin(std::min(1.0, kRounding / (radius_ - sim::kMaxStep))) / kDegToRad + 1e-3;
 }
 
 bool SimRobot::collides(const Eigen::Vector2d& pos) {
@@ -99,23 +113,61 @@ bool SimRobot::collides(const Eigen::Vector2d& pos) {
   return false;
 }
 
+bool SimRobot::stepCrashes(const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& dir) {
+  prepareOffsets();
+  int cx = pixelOf(to.x()), cy = pixelOf(to.y());
+  double clear = Canvas::inside(cx, cy) ? field_.distance(cx, cy) : 0;
+  if (clear - kRounding > radius_) return false;
+  const double r2 = radius_ * radius_;
+  const Eigen::Vector2d side(-dir.y(), dir.x());
+  // The leading quadrant spans 45 degrees either side of the motion; seen from the centre
+  // pixel a pixel's bearing may differ by rimSlack_, so the scan is that much wider and the
+  // exact test decides.
+  double mid = normalizeDegrees(std::atan2(dir.x(), -dir.y()) / kDegToRad);
+  double lo = mid - 45 - rimSlack_, hi = mid + 45 + rimSlack_;
+  int first = static_cast<int>(std::floor(lo)), last = static_cast<int>(std::floor(hi));
+  for (int b = first; b <= last; ++b) {
+    size_t bucket = static_cast<size_t>(((b % 360) + 360) % 360);
+    for (uint32_t i = rimStart_[bucket]; i < rimStart_[bucket + 1]; ++i) {
+      const Offset& o = rim_[i];
+      int x = cx + o.dx, y = cy + o.dy;
+      if (!field_.obstacle(x, y)) continue;
+      double ux = x - to.x(), uy = y - to.y();
+      if (ux * ux + uy * uy > r2) continue;                      // not inside after the step
+      double f = ux * dir.x() + uy * dir.y(), s = ux * side.x() + uy * side.y();
+      if (f < std::abs(s)) continue;                             // not in the leading quadrant
+      double wx = x - from.x(), wy = y - from.y();
+      if (wx * wx + wy * wy <= r2) continue;                     // already inside before it
+      return true;
+    }
+  }
+  return false;
+}
+
 void SimRobot::locate(double x, double y, double heading, double radius, Colour colour) {
   if (radius < sim::kMinRadius || radius > sim::kMaxRadius)
     throw RuntimeError("rLocate: the robot's radius must be between " +
                        std::to_string(static_cast<int>(sim::kMinRadius)) + " and " +
                        std::to_string(static_cast<int>(sim::kMaxRadius)));
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(heading))
+    throw RuntimeError("rLocate: the position or heading is not a number");
+  // A robot that would stick out of the screen goes just inside, touching the edge: its disc
+  // then covers the outermost pixels but not the wall beyond them (at -1 and 800 or 600).
+  double px = std::clamp(x, radius, Canvas::kWidth - 1 - radius);
+  double py = std::clamp(y, radius, Canvas::kHeight - 1 - radius);
   double oldRadius = radius_;
   radius_ = radius;
-  if (collides({x, y})) {
+  if (collides({px, py})) {
     radius_ = oldRadius;
     throw RuntimeError("rLocate: the robot at (" + std::to_string(std::lround(x)) + ", " +
                        std::to_string(std::lround(y)) + ") would overlap an obstacle");
   }
-  pose_.pos = {x, y};
+  pose_.pos = {px, py};
   pose_.heading = normalizeDegrees(heading);
   colour_ = colour;
   located_ = true;
   canvas_.trailEnd();
+  penAt_ = pose_.pos;
   if (penDown_) extendTrail();
 }
 
@@ -127,20 +179,28 @@ double SimRobot::applySlip(double amount) {
 
 void SimRobot::extendTrail() {
   // The pen draws in the first invisible colour (so the robot does not see its own trail), or
-  // in the current drawing colour when no colour is invisible.
+  // in the current drawing colour when no colour is invisible. The trail is one line: it goes
+  // on from where it ended, whatever was drawn in between; a new colour or width starts a new
+  // polyline at the same point.
   Colour c = trailColour();
-  const auto& ops = canvas_.displayList();
-  bool open = !ops.empty() && ops.back().kind == DrawOp::Trail && ops.back().colour == c &&
-              ops.back().width == canvas_.lineWidth;
-  if (open) {
-    canvas_.trailTo(pose_.pos.x(), pose_.pos.y());
-  } else {
-    canvas_.trailStart(pose_.pos.x(), pose_.pos.y(), canvas_.lineWidth, c);
-    canvas_.trailTo(pose_.pos.x(), pose_.pos.y());
+  int width = canvas_.lineWidth;
+  uint64_t before = canvas_.obstacleVersion();
+  if (!canvas_.trailOpen() || canvas_.trailColour() != c || canvas_.trailWidth() != width)
+    canvas_.trailStart(penAt_.x(), penAt_.y(), width, c);
+  canvas_.trailTo(pose_.pos.x(), pose_.pos.y());
+  if (canvas_.obstacleVersion() != before) {
+    // A trail in an obstacle colour changed a few pixels around the segment: the obstacle
+    // field catches up there instead of being rebuilt.
+    int pad = std::max(width, 1) / 2 + 2;
+    int x0 = pixelOf(std::min(penAt_.x(), pose_.pos.x())) - pad, x1 = pixelOf(std::max(penAt_.x(), pose_.pos.x())) + pad;
+    int y0 = pixelOf(std::min(penAt_.y(), pose_.pos.y())) - pad, y1 = pixelOf(std::max(penAt_.y(), pose_.pos.y())) + pad;
+    field_.changedWithin(x0, y0, x1, y1, before);
   }
+  penAt_ = pose_.pos;
 }
 
 void SimRobot::setPen(bool down) {
+  if (down && !penDown_) penAt_ = pose_.pos;
   penDown_ = down;
   if (!down) canvas_.trailEnd();
   if (down && located_) extendTrail();
@@ -158,9 +218,12 @@ double SimRobot::forward(double distance, const std::function<void()>& onStep) {
   double length = std::abs(distance);
   int steps = static_cast<int>(std::ceil(length / sim::kMaxStep));
   if (steps == 0) return distance;
-  Eigen::Vector2d step = headingVector(pose_.heading) * (distance / steps);
-  // The pen draws as the robot goes when someone watches, or when its trail is an obstacle the
-  // robot itself must run into; otherwise the whole segment is drawn once at the end.
+  // Forward the front quadrant of the rim leads, backing up the rear one.
+  const Eigen::Vector2d dir = headingVector(pose_.heading) * (distance < 0 ? -1.0 : 1.0);
+  Eigen::Vector2d step = dir * (length / steps);
+  // The pen draws as the robot goes when someone watches, or when its trail is an obstacle (the
+  // robot runs into it when it drives back over it); otherwise the whole segment is drawn once
+  // at the end.
   bool trailEachStep = penDown_ && (onStep || canvas_.isObstacleColour(trailColour()));
   prepareOffsets();
   int cx = pixelOf(pose_.pos.x()), cy = pixelOf(pose_.pos.y());
@@ -170,7 +233,7 @@ double SimRobot::forward(double distance, const std::function<void()>& onStep) {
   bool freeRun = !trailEachStep && clear - 2 * kRounding - radius_ > length;
   for (int i = 0; i < steps; ++i) {
     Eigen::Vector2d next = pose_.pos + step;
-    if (!freeRun && collides(next)) {
+    if (!freeRun && stepCrashes(pose_.pos, next, dir)) {
       if (penDown_ && !trailEachStep) extendTrail();
       throw RuntimeError("robot crashed into an obstacle");
     }
@@ -206,20 +269,32 @@ double SimRobot::turn(double degrees, const std::function<void()>& onStep) {
 int SimRobot::bumper() {
   requireLocated();
   prepareOffsets();
-  double reach = radius_ + sim::kBumperReach;
+  // The bumpers sit on the rim: they feel obstacle pixels within kBumperReach of the edge,
+  // inside or outside it (not what lies deep under the robot), measured from the exact centre,
+  // so that a step that crashes always had the bumper of its leading quadrant pressed before
+  // it (docs/robot.md, "Collisions").
+  const double reach = radius_ + sim::kBumperReach, inner = radius_ - sim::kBumperReach;
   Eigen::Vector2i c = centrePixel();
+  const Eigen::Vector2d off = pose_.pos - c.cast<double>();
+  // Distances from the centre pixel differ from those from the exact centre by at most this.
+  const double slack = off.norm() + 1e-9;
   double clear = Canvas::inside(c.x(), c.y()) ? field_.distance(c.x(), c.y()) : 0;
-  if (clear > reach) return 0;
+  if (clear - slack > reach) return 0;
+  const Eigen::Vector2d fwd = headingVector(pose_.heading), right(-fwd.y(), fwd.x());
+  const double reach2 = reach * reach, inner2 = inner > 0 ? inner * inner : -1;
+  constexpr double kTie = 1e-9;  // both edges of the front and rear quadrants belong to them
   int bits = 0;
-  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, clear));
-       it != byDistance_.end() && it->dist <= reach; ++it) {
+  double from = std::max(clear, inner) - slack;
+  for (auto it = byDistance_.begin() + static_cast<long>(fromDistance(byDistance_, distanceStart_, from));
+       it != byDistance_.end() && it->dist <= reach + slack; ++it) {
     if (!field_.obstacle(c.x() + it->dx, c.y() + it->dy)) continue;
-    double rel = normalizeDegrees(it->bearing - pose_.heading);
-    if (rel > 180) rel -= 360;  // (-180, 180]
-    if (rel >= -45 && rel <= 45) bits |= sim::kBumperFront;
-    else if (rel > 45 && rel < 135) bits |= sim::kBumperRight;
-    else if (rel < -45 && rel > -135) bits |= sim::kBumperLeft;
-    else bits |= sim::kBumperRear;
+    double vx = it->dx - off.x(), vy = it->dy - off.y();
+    double d2 = vx * vx + vy * vy;
+    if (d2 > reach2 || d2 < inner2) continue;
+    double f = vx * fwd.x() + vy * fwd.y(), s = vx * right.x() + vy * right.y();
+    if (f + kTie >= std::abs(s)) bits |= sim::kBumperFront;
+    else if (-f + kTie >= std::abs(s)) bits |= sim::kBumperRear;
+    else bits |= s > 0 ? sim::kBumperRight : sim::kBumperLeft;
     if (bits == 15) break;
   }
   return bits;

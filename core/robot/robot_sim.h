@@ -1,7 +1,7 @@
 #pragma once
-// The simulated robot: a disc on the canvas that moves pixel by pixel, crashes into
-// obstacles, and reads its sensors from the canvas's pixels. Geometry constants live in
-// sim_constants.h; docs/robot.md describes the model.
+// The simulated robot: a disc on the canvas that moves pixel by pixel, crashes when the part of
+// its rim that leads the motion touches an obstacle, and reads its sensors from the canvas's
+// pixels. Geometry constants live in sim_constants.h; docs/robot.md describes the model.
 
 #include <Eigen/Core>
 #include <functional>
@@ -30,15 +30,18 @@ class SimRobot {
   bool penDown() const { return penDown_; }
   double slipPercent() const { return slip_; }
 
-  /// rLocate. Throws RuntimeError when the robot would overlap an obstacle.
+  /// rLocate. A robot that would stick out of the screen is moved just inside, touching the
+  /// edge. Throws RuntimeError when the robot would then overlap a drawn obstacle.
   void locate(double x, double y, double heading, double radius, Colour colour);
-  /// rForward: moves in steps of at most one pixel, checking for a crash at each. On a crash the
-  /// robot stays where it last was free and RuntimeError("robot crashed into an obstacle") is
-  /// thrown. `onStep`, when given, is called after each step (a live view animates the move;
-  /// without it the pen draws the whole segment at once). Returns the distance after slip.
+  /// rForward: moves in steps of at most one pixel. A step crashes when the quadrant of the rim
+  /// that leads the motion (the front one going forward, the rear one backing up) sweeps over an
+  /// obstacle pixel: the robot stays where it last was and RuntimeError("robot crashed into an
+  /// obstacle") is thrown. `onStep`, when given, is called after each step (a live view animates
+  /// the move; without it the pen draws the whole segment at once). Returns the distance after
+  /// slip.
   double forward(double distance, const std::function<void()>& onStep);
-  /// rTurn: with `onStep` it turns in steps of one degree, calling it after each; a disc cannot
-  /// crash by turning.
+  /// rTurn: with `onStep` it turns in steps of one degree, calling it after each; turning in
+  /// place never crashes (a turning disc covers nothing new).
   double turn(double degrees, const std::function<void()>& onStep);
   void setPen(bool down);
   void setSlip(double percent) { slip_ = percent; }
@@ -55,8 +58,12 @@ class SimRobot {
   int gpsY() const;
   double chargeLevel() const;
 
-  /// True when the disc at `pos` overlaps an obstacle pixel.
+  /// True when the disc at `pos` overlaps an obstacle pixel (rLocate's test).
   bool collides(const Eigen::Vector2d& pos);
+  /// True when a step from `from` to `to` (at most kMaxStep long, in the unit direction `dir`)
+  /// crashes: an obstacle pixel outside the disc at `from` is inside the disc at `to`, in the
+  /// quadrant around `dir` (seen from `to`, both edges included).
+  bool stepCrashes(const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& dir);
 
  private:
   /// A pixel near the robot, relative to its centre pixel.
@@ -102,6 +109,15 @@ class SimRobot {
   /// same in bucket b. They replace binary searches in the sensors' inner loops.
   std::vector<uint32_t> distanceStart_;
   std::vector<uint16_t> bearingStart_[360];
+  /// The pixels a step can sweep the rim over (from r - kMaxStep - rounding to r + rounding),
+  /// sorted by bearing; rimStart_[b] is the first at bearing >= b degrees. rimSlack_ (degrees)
+  /// bounds how much a bearing seen from the centre pixel differs from one seen from the
+  /// exact centre, for those pixels.
+  std::vector<Offset> rim_;
+  std::vector<uint32_t> rimStart_;
+  double rimSlack_ = 0;
+  /// Where the pen's trail ends (the robot's centre when it last drew).
+  Eigen::Vector2d penAt_{0, 0};
 };
 
 /// Degrees normalised to [0, 360).

@@ -359,21 +359,29 @@ void Canvas::restore() {
 }
 
 void Canvas::trailStart(double x, double y, int width, Colour c) {
-  record(DrawOp{DrawOp::Trail, {{static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y))}}, c, std::nullopt, width});
-  trailOpen_ = ops_.back().kind == DrawOp::Trail;
+  trailAt_ = {static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y))};
+  trailWidth_ = width;
+  trailColour_ = c;
+  trailOpen_ = true;
+  record(DrawOp{DrawOp::Trail, {trailAt_}, c, std::nullopt, width});
+  trailOp_ = ops_.size() - 1;
 }
 
 void Canvas::trailTo(double x, double y) {
   Point to{static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y))};
-  if (!trailOpen_ || ops_.empty() || ops_.back().kind != DrawOp::Trail) return;
-  DrawOp& op = ops_.back();
-  Point from = op.points.back();
-  if (from == to) return;
+  if (!trailOpen_ || to == trailAt_) return;
   // Draw the segment without recording it: it is part of the trail's polyline.
   size_t saved = ops_.size();
-  line(from, to, op.width, op.colour);
+  line(trailAt_, to, trailWidth_, trailColour_);
   ops_.erase(ops_.begin() + static_cast<long>(saved), ops_.end());
-  ops_.back().points.push_back(to);
+  if (!ops_.empty() && trailOp_ == ops_.size() - 1 && ops_.back().kind == DrawOp::Trail) {
+    ops_.back().points.push_back(to);
+  } else {
+    // Something was drawn since: the trail goes on from where it ended.
+    record(DrawOp{DrawOp::Trail, {trailAt_, to}, trailColour_, std::nullopt, trailWidth_});
+    trailOp_ = ops_.size() - 1;
+  }
+  trailAt_ = to;
 }
 
 }  // namespace rb

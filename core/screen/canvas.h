@@ -109,10 +109,15 @@ class Canvas {
   void save();
   void restore();
 
-  // ---- the robot's pen trail: a polyline that grows while the pen is down
+  // ---- the robot's pen trail: a polyline that grows while the pen is down. It is one
+  // continuous line: when something else was drawn since the last trailTo, the trail goes on
+  // in a new display-list entry that starts where the last one ended.
   void trailStart(double x, double y, int width, Colour c);
   void trailTo(double x, double y);
   void trailEnd() { trailOpen_ = false; }
+  bool trailOpen() const { return trailOpen_; }
+  int trailWidth() const { return trailWidth_; }
+  Colour trailColour() const { return trailColour_; }
 
   // ---- obstacles: a pixel is an obstacle unless it has the background colour or an
   // invisible colour.
@@ -155,6 +160,10 @@ class Canvas {
   Point cursor_;  ///< text cursor in pixels (top-left of the next character)
   std::vector<DrawOp> ops_;
   bool trailOpen_ = false;
+  Point trailAt_;             ///< where the open trail ends
+  int trailWidth_ = 1;
+  Colour trailColour_ = 0;
+  size_t trailOp_ = 0;        ///< the display-list entry the open trail last grew
 };
 
 }  // namespace rb

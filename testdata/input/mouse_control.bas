@@ -47,6 +47,6 @@ return
 // expect: pen 1
 // expect: click 700,200 -> robot at 700,200
 // expect: click 700,400 -> robot at 699,400
-// expect: click 200,400 -> robot at 522,399
+// expect: click 200,400 -> robot at 521,399
 // expect: pen 0
-// expect: click 600,150 -> robot at 601,150
+// expect: click 600,150 -> robot at 601,151
