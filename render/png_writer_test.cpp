@@ -9,8 +9,8 @@
 namespace rb::render {
 namespace {
 
-constexpr uint32_t kGreenRgb = 0x00AA00;  // colour 2, the pen of Figure 1.7
-constexpr uint32_t kBlueRgb = 0x0000AA;   // colour 1, the robot's default colour
+constexpr uint32_t kGreenRgb = 0x008000;  // colour 2, the pen of Figure 1.7
+constexpr uint32_t kBlueRgb = 0x0000FF;   // colour 1, the robot's default colour
 constexpr uint32_t kWhiteRgb = 0xFFFFFF;
 
 std::unique_ptr<test::PictureRun> runFigure17() {
@@ -104,11 +104,11 @@ TEST_CASE("png: the robot's heading line follows headingVector (0 up, clockwise)
   robot.colour = colours::kRed;
   robot.heading = 90;  // right
   RgbImage img = composeImage(screen, robot, 1);
-  CHECK(img.pixel(215, 200) == 0xAA0000);
+  CHECK(img.pixel(215, 200) == 0xFF0000);
   CHECK(img.pixel(200, 185) == kWhiteRgb);
   robot.heading = 225;  // down-left
   img = composeImage(screen, robot, 1);
-  CHECK(img.pixel(190, 210) == 0xAA0000);
+  CHECK(img.pixel(190, 210) == 0xFF0000);
   CHECK(img.pixel(215, 200) == kWhiteRgb);
   robot.visible = false;
   img = composeImage(screen, robot, 1);

@@ -7,9 +7,28 @@
 namespace rb {
 
 namespace {
-constexpr uint32_t kPalette[16] = {0x000000, 0x0000AA, 0x00AA00, 0x00AAAA, 0xAA0000, 0xAA00AA,
-                                   0xAA5500, 0xAAAAAA, 0x555555, 0x5555FF, 0x55FF55, 0x55FFFF,
-                                   0xFF5555, 0xFF55FF, 0xFFFF55, 0xFFFFFF};
+// RobotBASIC 4.2's colours. Confirmed by screenshots: Blue, Cyan, Red, Gray, LightRed. The
+// others are rb's choice by the same pattern: a dark colour has each channel at 0, 128 or 255,
+// its light twin (colour + 8) adds 128 to every channel, capped at 255; Brown and Yellow are the
+// colours their names say. docs/graphics.md has the table.
+constexpr uint32_t kPalette[16] = {
+    0x000000,  //  0 Black
+    0x0000FF,  //  1 Blue          confirmed
+    0x008000,  //  2 Green
+    0x008080,  //  3 Cyan          confirmed
+    0xFF0000,  //  4 Red           confirmed
+    0xFF00FF,  //  5 Magenta
+    0x804000,  //  6 Brown
+    0xC0C0C0,  //  7 Gray          confirmed
+    0x808080,  //  8 DarkGray      = Black + 128
+    0x8080FF,  //  9 LightBlue     = Blue + 128
+    0x80FF80,  // 10 LightGreen    = Green + 128
+    0x80FFFF,  // 11 LightCyan     = Cyan + 128
+    0xFF8080,  // 12 LightRed      = Red + 128, confirmed
+    0xFF80FF,  // 13 LightMagenta  = Magenta + 128
+    0xFFFF00,  // 14 Yellow
+    0xFFFFFF,  // 15 White         = Gray + 128, capped
+};
 constexpr int kTabColumns = 8;
 constexpr size_t kMaxDisplayOps = 2'000'000;
 }  // namespace

@@ -26,7 +26,7 @@ constexpr Colour kBlack = 0, kBlue = 1, kGreen = 2, kCyan = 3, kRed = 4, kMagent
                  kLightCyan = 11, kLightRed = 12, kLightMagenta = 13, kYellow = 14, kWhite = 15;
 }  // namespace colours
 
-/// 0xRRGGBB for a colour number (the 16 palette colours are the VGA ones).
+/// 0xRRGGBB for a colour number (the 16 palette colours are RobotBASIC 4.2's; docs/graphics.md).
 uint32_t colourToRgb(Colour c);
 /// The colour number RGB(r, g, b) gives.
 Colour rgbColour(int r, int g, int b);
