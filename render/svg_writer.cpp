@@ -8,7 +8,7 @@
 
 #include "screen/font.h"
 #include "png_writer.h"
-#include "robot/robot_sim.h"
+#include "robot_image.h"
 
 namespace rb::render {
 
@@ -274,17 +274,23 @@ class SvgBuilder {
 };
 
 void robotElements(std::string& out, const RobotView& robot) {
-  if (!robot.visible || !std::isfinite(robot.x) || !std::isfinite(robot.y) || !std::isfinite(robot.radius))
-    return;
-  const double cx = robot.x + 0.5, cy = robot.y + 0.5;
-  const Eigen::Vector2d dir = headingVector(std::isfinite(robot.heading) ? robot.heading : 0.0);
+  const RobotImage shape(robot);
+  if (shape.empty()) return;
+  // Pixel (x, y) is the unit square from (x, y): the robot's centre pixel's centre is x + 0.5.
+  const double cx = shape.centreX() + 0.5, cy = shape.centreY() + 0.5;
+  // The stroke lies inside the rim: a circle through the middle of the ring, and the heading
+  // line (butt ends) from the centre to that circle, where it meets the ring.
+  // A robot smaller than the stroke is a disc.
+  const double stroke = std::min(kRobotStroke, shape.radius());
+  const double mid = shape.radius() - stroke / 2;
   const std::string colour = hexColour(robot.colour);
+  const std::string width = num(stroke);
   put(out, "<!-- the robot: its outline and a line toward its heading -->\n");
-  put(out, "<circle cx=\"", num(cx), "\" cy=\"", num(cy), "\" r=\"", num(robot.radius),
-      "\" fill=\"none\" stroke=\"", colour, "\" stroke-width=\"1\"/>\n");
-  put(out, "<line x1=\"", num(cx), "\" y1=\"", num(cy), "\" x2=\"", num(cx + dir.x() * robot.radius),
-      "\" y2=\"", num(cy + dir.y() * robot.radius), "\" stroke=\"", colour,
-      "\" stroke-width=\"1\" stroke-linecap=\"round\"/>\n");
+  put(out, "<circle cx=\"", num(cx), "\" cy=\"", num(cy), "\" r=\"", num(mid),
+      "\" fill=\"none\" stroke=\"", colour, "\" stroke-width=\"", width, "\"/>\n");
+  put(out, "<line x1=\"", num(cx), "\" y1=\"", num(cy), "\" x2=\"", num(cx + shape.headingX() * mid),
+      "\" y2=\"", num(cy + shape.headingY() * mid), "\" stroke=\"", colour, "\" stroke-width=\"", width,
+      "\"/>\n");
 }
 
 }  // namespace

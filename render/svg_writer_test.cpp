@@ -75,16 +75,18 @@ TEST_CASE("svg: Figure 1.7's trail is one green polyline through the square's co
   CHECK(attribute(trail, "stroke") == "#008000");
   CHECK(attribute(trail, "stroke-width") == "4");
   CHECK(attribute(trail, "fill") == "none");
-  // The white background first, the robot last: a circle and its heading line, in blue.
+  // The white background first, the robot last: a circle and its heading line, in blue, 3 pixels
+  // wide inside its rim (radius 20: the stroke covers 17 to 20 from the centre).
   std::vector<std::string> rects = elements(svg, "rect");
   REQUIRE_FALSE(rects.empty());
   CHECK(rects[0] == "<rect x=\"0\" y=\"0\" width=\"800\" height=\"600\" fill=\"#ffffff\"/>");
   std::vector<std::string> circles = elements(svg, "circle");
   REQUIRE(circles.size() == 1);
   CHECK(circles[0] ==
-        "<circle cx=\"400.5\" cy=\"300.5\" r=\"20\" fill=\"none\" stroke=\"#0000ff\" stroke-width=\"1\"/>");
+        "<circle cx=\"400.5\" cy=\"300.5\" r=\"18.5\" fill=\"none\" stroke=\"#0000ff\" stroke-width=\"3\"/>");
   CHECK(svg.find("<circle") > svg.find("<polyline"));
-  CHECK_THAT(svg, Catch::Contains("<line x1=\"400.5\" y1=\"300.5\" x2=\"400.5\" y2=\"280.5\" stroke=\"#0000ff\""));
+  CHECK_THAT(svg, Catch::Contains("<line x1=\"400.5\" y1=\"300.5\" x2=\"400.5\" y2=\"282\" stroke=\"#0000ff\" "
+                                  "stroke-width=\"3\"/>"));
   CHECK(svg.find("<image") == std::string::npos);
 }
 
