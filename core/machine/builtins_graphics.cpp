@@ -68,37 +68,32 @@ Value line(Machine& m, Args& a) {
   return {};
 }
 
-/// How a shape command gives its box: two corners, a top-left corner and a size, a centre and
-/// a size, or a centre and a radius.
-enum class Box { Corners, CornerSize, CentreSize, CentreRadius };
+/// How a shape command gives its box: two corners, or a top-left corner and a size.
+enum class Box { Corners, CornerSize };
 
-/// rectangle, rectangleWH, eRectangle, circle, circleWH, eCircle: the box from the first
-/// arguments, then the optional outline and fill colours.
+/// rectangle, rectangleWH, circle, circleWH: the box from the first four arguments, then the
+/// optional outline and fill colours.
 template <Box form, bool ellipse>
 Value shape(Machine& m, Args& a) {
-  Point p = point(a, 0), q;
-  int next = 4;
-  switch (form) {
-    case Box::Corners: q = point(a, 2); break;
-    case Box::CornerSize: q = {p.x + a.coordinate(2), p.y + a.coordinate(3)}; break;
-    case Box::CentreSize: {
-      int hw = a.coordinate(2) / 2, hh = a.coordinate(3) / 2;
-      q = {p.x + hw, p.y + hh};
-      p = {p.x - hw, p.y - hh};
-      break;
-    }
-    case Box::CentreRadius: {
-      int r = a.coordinate(2);
-      q = {p.x + r, p.y + r};
-      p = {p.x - r, p.y - r};
-      next = 3;
-      break;
-    }
-  }
-  auto [outline, fill] = shapeColours(m, a, next);
+  Point p = point(a, 0);
+  Point q = form == Box::Corners ? point(a, 2) : Point{p.x + a.coordinate(2), p.y + a.coordinate(3)};
+  auto [outline, fill] = shapeColours(m, a, 4);
   Canvas& c = m.canvas();
   if (ellipse) c.ellipse(p, q, c.lineWidth, outline, fill);
   else c.rectangle(p, q, c.lineWidth, outline, fill);
+  return {};
+}
+
+/// eRectangle, eCircle: the edge only of the shape in the box with corners (x1, y1), (x2, y2),
+/// in a width (default: the line width) and a colour (default: the current colour) of its own.
+template <bool ellipse>
+Value edgeShape(Machine& m, Args& a) {
+  Canvas& c = m.canvas();
+  Point p = point(a, 0), q = point(a, 2);
+  int w = a.has(4) ? widthArg(a, 4) : c.lineWidth;
+  Colour col = a.has(5) ? a.colour(5) : c.foreground;
+  if (ellipse) c.ellipse(p, q, w, col, std::nullopt);
+  else c.rectangle(p, q, w, col, std::nullopt);
   return {};
 }
 
@@ -241,14 +236,14 @@ void appendGraphicsBuiltins(std::vector<Builtin>& t) {
        "rectangle with corners (x1, y1) and (x2, y2); filled when fill is given"},
       {"rectangleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CornerSize, false>, 0,
        "rectangle from its top-left corner and size"},
-      {"eRectangle", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CentreSize, false>, 0,
-       "rectangle from its centre and size"},
+      {"eRectangle", K::Command, "graphics", "x1, y1, x2, y2 [, width [, colour]]", edgeShape<false>, 0,
+       "the edge of the rectangle with corners (x1, y1), (x2, y2), width pixels wide inward; no fill"},
       {"circle", K::Command, "graphics", "x1, y1, x2, y2 [, outline [, fill]]", shape<Box::Corners, true>, 0,
        "ellipse inside the box (x1, y1)-(x2, y2); filled when fill is given"},
       {"circleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CornerSize, true>, 0,
        "ellipse inside the box from its top-left corner and size"},
-      {"eCircle", K::Command, "graphics", "x, y, radius [, outline [, fill]]", shape<Box::CentreRadius, true>, 0,
-       "circle from its centre and radius"},
+      {"eCircle", K::Command, "graphics", "x1, y1, x2, y2 [, width [, colour]]", edgeShape<true>, 0,
+       "the edge of the ellipse in the box (x1, y1)-(x2, y2), width pixels wide inward; no fill"},
       {"polygon", K::Command, "graphics", "points [, outline [, fill]]", polygon, 0,
        "closed polygon through the points of a 1-D array x1, y1, x2, y2, ..."},
       {"mPolygon", K::Command, "graphics", "points [, outline [, fill]]", mPolygon, 0,
