@@ -1,6 +1,8 @@
 // Graphics built-ins: they draw on the Machine's canvas with its current colour and line width.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 #include "machine/builtins_impl.h"
 #include "base/runtime_error.h"
@@ -97,37 +99,90 @@ Value edgeShape(Machine& m, Args& a) {
   return {};
 }
 
-/// Points of polygon (a 1-D array x1, y1, x2, y2, ...) or mPolygon (an n x 2 array).
-std::vector<Point> polygonPoints(Args& a, bool matrix) {
-  if (!a[0].isArr()) throw RuntimeError(a.describe(0) + " must be an array of coordinates");
+/// The x, y pairs of an array of numbers (any shape, in storage order), rounded to pixels.
+std::vector<Point> arrayPairs(Args& a) {
   const ArrObj& arr = a[0].arr();
-  if (matrix && (arr.dims.size() != 2 || arr.dims[1] != 2))
-    throw RuntimeError(a.describe(0) + " must be an array with 2 columns (x, y)");
-  if (!matrix && arr.dims.size() != 1)
-    throw RuntimeError(a.describe(0) + " must be a one-dimensional array x1, y1, x2, y2, ...");
   if (arr.items.size() % 2 != 0 || arr.items.size() < 4)
     throw RuntimeError(a.describe(0) + " must hold at least two x, y pairs");
   std::vector<Point> pts;
+  pts.reserve(arr.items.size() / 2);
   for (size_t i = 0; i + 1 < arr.items.size(); i += 2) {
     const Value& x = arr.items[i];
     const Value& y = arr.items[i + 1];
     if (!x.isNumeric() || !y.isNumeric()) throw RuntimeError(a.describe(0) + " holds something that is not a number");
-    pts.push_back({static_cast<int>(std::lround(x.asDouble())), static_cast<int>(std::lround(y.asDouble()))});
+    // Kept within the range Args::coordinate allows, so no drawing arithmetic overflows.
+    auto pixel = [](double v) { return static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); };
+    pts.push_back({pixel(x.asDouble()), pixel(y.asDouble())});
   }
   return pts;
 }
 
+const ArrObj& coordinateArray(Args& a) {
+  if (!a[0].isArr()) throw RuntimeError(a.describe(0) + " must be an array of coordinates");
+  return a[0].arr();
+}
+
+/// polygon: a 1-D array x1, y1, x2, y2, ...; outline (default: the current colour) and fill.
 Value polygon(Machine& m, Args& a) {
-  auto pts = polygonPoints(a, false);
+  if (coordinateArray(a).dims.size() != 1)
+    throw RuntimeError(a.describe(0) + " must be a one-dimensional array x1, y1, x2, y2, ...");
+  auto pts = arrayPairs(a);
   auto [outline, fill] = shapeColours(m, a, 1);
   m.canvas().polygon(pts, m.canvas().lineWidth, outline, fill);
   return {};
 }
 
+/// One polygon of mPolygon's flat form: its vertices and the point to fill from, if any.
+struct FlatPolygon {
+  std::vector<Point> vertices;
+  std::optional<Point> fillPoint;
+};
+
+/// mPolygon's flat array as real programs write it with `data`: a pair whose x is negative
+/// starts a polygon at (-x, y); a pair whose y is negative is the fill point (|x|, -y) of the
+/// polygon before it, not a vertex; other pairs are vertices of the current polygon (the first
+/// pair starts one whatever its sign).
+std::vector<FlatPolygon> flatPolygons(Args& a, const std::vector<Point>& pairs) {
+  std::vector<FlatPolygon> polys;
+  for (const Point& p : pairs) {
+    if (p.y < 0) {
+      if (polys.empty() || polys.back().vertices.empty())
+        throw RuntimeError(a.describe(0) + " has a fill point (negative y) before any polygon");
+      polys.back().fillPoint = Point{std::abs(p.x), -p.y};
+    } else if (p.x < 0 || polys.empty()) {
+      polys.push_back({{{std::abs(p.x), p.y}}, std::nullopt});
+    } else {
+      polys.back().vertices.push_back(p);
+    }
+  }
+  return polys;
+}
+
+/// mPolygon: an n x 2 array of vertices (outline and fill colours as polygon), or a flat array
+/// of one or more polygons (flatPolygons) drawn in the current colour and line width, each
+/// flood-filled from its fill point with `colour` (without a fill point: its inside is filled).
 Value mPolygon(Machine& m, Args& a) {
-  auto pts = polygonPoints(a, true);
+  const ArrObj& arr = coordinateArray(a);
+  Canvas& c = m.canvas();
+  if (arr.dims.size() == 1) {
+    if (a.has(2)) throw RuntimeError("mPolygon with a flat array takes one colour, the fill: " + a.describe(2) + " is one too many");
+    std::optional<Colour> fill;
+    if (a.has(1)) fill = a.colour(1);
+    for (const FlatPolygon& poly : flatPolygons(a, arrayPairs(a))) {
+      if (fill && poly.fillPoint) {
+        c.polygon(poly.vertices, c.lineWidth, c.foreground, std::nullopt);
+        c.floodFill(poly.fillPoint->x, poly.fillPoint->y, *fill);
+      } else {
+        c.polygon(poly.vertices, c.lineWidth, c.foreground, fill);
+      }
+    }
+    return {};
+  }
+  if (arr.dims.size() != 2 || arr.dims[1] != 2)
+    throw RuntimeError(a.describe(0) + " must be a flat array of x, y pairs or an array with 2 columns (x, y)");
+  auto pts = arrayPairs(a);
   auto [outline, fill] = shapeColours(m, a, 1);
-  m.canvas().polygon(pts, m.canvas().lineWidth, outline, fill);
+  c.polygon(pts, c.lineWidth, outline, fill);
   return {};
 }
 
@@ -246,8 +301,10 @@ void appendGraphicsBuiltins(std::vector<Builtin>& t) {
        "the edge of the ellipse in the box (x1, y1)-(x2, y2), width pixels wide inward; no fill"},
       {"polygon", K::Command, "graphics", "points [, outline [, fill]]", polygon, 0,
        "closed polygon through the points of a 1-D array x1, y1, x2, y2, ..."},
-      {"mPolygon", K::Command, "graphics", "points [, outline [, fill]]", mPolygon, 0,
-       "closed polygon through the rows (x, y) of an n x 2 array"},
+      {"mPolygon", K::Command, "graphics", "points [, colour [, fill]]", mPolygon, 0,
+       "polygons of a flat array (a negative x starts one, a negative y gives its fill point; "
+       "outline in the current colour, filled with colour), or of the rows (x, y) of an n x 2 "
+       "array (colour: the outline)"},
       {"setPixel", K::Command, "graphics", "x, y [, colour]", setPixel, 0, "colours one pixel"},
       {"pixelClr", K::Function, "graphics", "x, y", pixelClr, 0,
        "the colour number of a pixel (-1 outside the screen)"},
