@@ -18,13 +18,6 @@ constexpr int kScreenW = Canvas::kWidth;
 constexpr int kScreenH = Canvas::kHeight;
 /// The canvas does not draw lines with a coordinate beyond this (see Canvas::line).
 constexpr int kFarCoordinate = 100000;
-/// Where a bitmap font's baseline sits, as a fraction of its cell height (VGA: row 12 of 16,
-/// plus a little for the descent of the SVG viewer's monospace font).
-constexpr double kBaseline = 0.8;
-/// A monospace font's advance is about 0.6 em. The font size is capped so that text is about
-/// as wide as the bitmap's even where a viewer ignores textLength (librsvg does).
-constexpr double kMonospaceAdvance = 0.6;
-
 /// Appends strings to the document. Appending piece by piece (instead of chains of operator+)
 /// avoids temporaries, and a false -Wrestrict of GCC 12 on `"literal" + std::string`.
 template <typename... Parts>
@@ -236,28 +229,26 @@ class SvgBuilder {
   }
 
   void text(const DrawOp& op) {
-    if (op.points.empty() || op.text.empty()) return;
-    const Point p = op.points[0];
-    // The same font choice as Canvas::text, so the text's box matches the bitmap's.
+    if (op.points.size() < 2 || op.text.empty()) return;
+    // The canvas measured the text's cells with the embedded font: the box, the baseline and
+    // the width are exact; the glyphs are the viewer's (Courier New, Liberation Mono, ...).
+    const Point p = op.points[0], q = op.points[1];
     const TextStyle& style = op.style;
-    const BitmapFont& font =
-        style.height == 16 && !style.bold ? consoleFont() : textFont(style.height, style.bold);
-    const int scale = std::max(1, style.height / font.height());
-    const double cw = font.width() * scale, ch = font.height() * scale;
-    const double length = cw * static_cast<double>(op.text.size());
+    const double length = q.x - p.x, height = q.y - p.y;
     if (style.background) {
-      box("rect", p.x, p.y, length, ch);
+      box("rect", p.x, p.y, length, height);
       fill(style.background);
       put(out_, "/>\n");
     }
-    put(out_, "<text x=\"", num(p.x), "\" y=\"", num(p.y + ch * kBaseline),
-        "\" font-family=\"monospace\" font-size=\"", num(std::min(ch, cw / kMonospaceAdvance)),
-        "\" textLength=\"", num(length),
-        "\" lengthAdjust=\"spacingAndGlyphs\" xml:space=\"preserve\"");
+    put(out_, "<text x=\"", num(p.x), "\" y=\"", num(p.y + op.ascent), "\" font-family=\"",
+        cssFontFamily(style.font.face), "\" font-size=\"", num(style.font.pixelSize), "\" textLength=\"",
+        num(length), "\" lengthAdjust=\"spacingAndGlyphs\" xml:space=\"preserve\"");
     fill(op.colour);
-    if (style.bold) put(out_, " font-weight=\"bold\"");
-    if (style.italic) put(out_, " font-style=\"italic\"");
-    if (style.underline) put(out_, " text-decoration=\"underline\"");
+    if (style.font.bold) put(out_, " font-weight=\"bold\"");
+    if (style.font.italic) put(out_, " font-style=\"italic\"");
+    if (style.underline || style.strikeout)
+      put(out_, " text-decoration=\"", style.underline ? "underline" : "",
+          style.underline && style.strikeout ? " " : "", style.strikeout ? "line-through" : "", "\"");
     put(out_, ">", xmlText(op.text), "</text>\n");
   }
 

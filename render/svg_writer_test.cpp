@@ -119,16 +119,28 @@ TEST_CASE("svg: shapes keep the canvas's pixel geometry", "[render][svg]") {
                                     "stroke-width=\"3\""));
     CHECK_THAT(svg, Catch::Contains("<rect x=\"7\" y=\"8\" width=\"1\" height=\"1\" fill=\"#008080\"/>"));
   }
-  SECTION("text: monospace, escaped, Latin-1 as Unicode, with its background") {
-    std::string svg = svgOf("xyText 10, 20, \"a<b & \" + char(233), \"Courier\", 12, \"u\", RED, YELLOW\n");
+  SECTION("text: the named face, escaped, Latin-1 as Unicode, with its background") {
+    std::string svg = svgOf("xyText 10, 20, \"a<b & \" + char(233), \"Courier\", 12, \"u\", RED, YELLOW\n"
+                            "xyText 10, 100, \"Hi\", \"Times New Roman\", 10, fs_Bold + fs_Italic + fs_StrikeOut\n");
     std::vector<std::string> texts = elements(svg, "text");
-    REQUIRE(texts.size() == 1);
-    CHECK(attribute(texts[0], "font-family") == "monospace");
+    REQUIRE(texts.size() == 2);
+    CHECK(attribute(texts[0], "font-family") == "'Courier New', 'Liberation Mono', monospace");
+    // 12 points are 16 pixels; Courier's cell is then 10 x 18 pixels, the baseline 13 down.
+    CHECK(attribute(texts[0], "font-size") == "16");
+    CHECK(attribute(texts[0], "x") == "10");
+    CHECK(attribute(texts[0], "y") == "33");
+    CHECK(attribute(texts[0], "textLength") == "70");
     CHECK(attribute(texts[0], "fill") == "#ff0000");
     CHECK(attribute(texts[0], "text-decoration") == "underline");
     CHECK_THAT(svg, Catch::Contains(">a&lt;b &amp; &#233;</text>"));
-    // The yellow box behind the text comes first.
+    // The yellow box behind the text comes first, as large as its cells.
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"10\" y=\"20\" width=\"70\" height=\"18\" fill=\"#ffff00\"/>"));
     CHECK(svg.find("fill=\"#ffff00\"") < svg.find("<text"));
+    CHECK(attribute(texts[1], "font-family") == "'Times New Roman', 'Liberation Serif', serif");
+    CHECK(attribute(texts[1], "font-size") == "13");
+    CHECK(attribute(texts[1], "font-weight") == "bold");
+    CHECK(attribute(texts[1], "font-style") == "italic");
+    CHECK(attribute(texts[1], "text-decoration") == "line-through");
   }
   SECTION("RGB colours") {
     std::string svg = svgOf("line 1, 1, 100, 1, 1, RGB(18, 52, 86)\n");

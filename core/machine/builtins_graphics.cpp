@@ -209,20 +209,23 @@ Value xyString(Machine& m, Args& a) {
   return {};
 }
 
-/// xyText's style: a number (1 bold, 2 italic, 4 underline) or letters ("b", "i", "u").
+/// xyText's style: a number, the sum of fs_Bold (1), fs_Italic (2), fs_Underline (4) and
+/// fs_StrikeOut (8), or letters ("b", "i", "u", "s").
 void parseStyle(Args& a, int i, TextStyle& style) {
   if (a[i].isStr()) {
     for (char c : a.str(i)) {
       char l = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      if (l == 'b') style.bold = true;
-      else if (l == 'i') style.italic = true;
+      if (l == 'b') style.font.bold = true;
+      else if (l == 'i') style.font.italic = true;
       else if (l == 'u') style.underline = true;
+      else if (l == 's') style.strikeout = true;
     }
   } else {
     int64_t bits = a.integer(i);
-    style.bold = bits & 1;
-    style.italic = bits & 2;
-    style.underline = bits & 4;
+    style.font.bold = bits & kFsBold;
+    style.font.italic = bits & kFsItalic;
+    style.underline = bits & kFsUnderline;
+    style.strikeout = bits & kFsStrikeOut;
   }
 }
 
@@ -230,13 +233,17 @@ Value xyText(Machine& m, Args& a) {
   TextStyle style;
   const Value& text = a[2];
   std::string s = formatValue(text);
-  // argument 3 names a font; rb has one family of fonts and draws every name with it.
-  if (a.has(3) && !a[3].isStr() && !a[3].isNumeric()) (void)a.str(3);
+  // Argument 3 names a font: Courier New, Arial, Times New Roman and their kin map to the
+  // Liberation face with the same widths; "" (or a number) is the default face.
+  if (a.has(3)) {
+    if (a[3].isStr()) style.font.face = typefaceForName(a.str(3));
+    else if (!a[3].isNumeric()) (void)a.str(3);
+  }
   if (a.has(4)) {
     // Size in points at 96 dpi: pixels = points * 4 / 3.
     double pts = a.num(4);
     if (pts < 1 || pts > 200) throw RuntimeError(a.describe(4) + " must be a font size from 1 to 200");
-    style.height = static_cast<int>(std::lround(pts * 4.0 / 3.0));
+    style.font.pixelSize = pixelSizeForPoints(pts);
   }
   if (a.has(5)) parseStyle(a, 5, style);
   Colour c = a.has(6) ? a.colour(6) : m.canvas().foreground;
@@ -314,7 +321,8 @@ void appendGraphicsBuiltins(std::vector<Builtin>& t) {
        "prints items (separated as in print) with the top-left corner at (x, y)"},
       {"xyText", K::Command, "graphics",
        "x, y, text [, font [, size [, style [, colour [, background]]]]]", xyText, 0,
-       "text at (x, y): size in points, style 1/\"b\" bold, 2/\"i\" italic, 4/\"u\" underline"},
+       "text at (x, y): font \"Courier New\", \"Arial\", \"Times New Roman\"... (\"\": the print font), "
+       "size in points, style fs_Bold + fs_Italic + fs_Underline + fs_StrikeOut (or \"bius\")"},
       {"saveScr", K::Command, "graphics", "", saveScr, 0, "remembers the screen"},
       {"restoreScr", K::Command, "graphics", "", restoreScr, 0, "puts back the screen saveScr remembered"},
       {"flip", K::Command, "graphics", "[mode]", flip, 0,

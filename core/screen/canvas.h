@@ -9,6 +9,7 @@
 // obstacle map must be rebuilt.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,11 +37,16 @@ struct Point {
   friend bool operator==(const Point&, const Point&) = default;
 };
 
-/// Text options of xyText.
+/// xyText's style bits, the constants fs_Bold, fs_Italic, fs_Underline, fs_StrikeOut (the
+/// names are confirmed by a published program, the values are rb's choice).
+constexpr int kFsBold = 1, kFsItalic = 2, kFsUnderline = 4, kFsStrikeOut = 8;
+
+/// Text options of xyText. The default is the font of print and xyString: Mono (Courier New's
+/// twin) at 10 points, 8 x 15 pixels a character.
 struct TextStyle {
-  int height = 16;            ///< pixel height of the font
-  bool bold = false, italic = false, underline = false;
-  std::optional<Colour> background;  ///< opaque background behind the characters
+  FontKey font;               ///< face, bold, italic, size in pixels
+  bool underline = false, strikeout = false;
+  std::optional<Colour> background;  ///< opaque background behind the characters' cells
 };
 
 /// One entry of the display list.
@@ -52,7 +58,8 @@ struct DrawOp {
     Ellipse,   ///< bounding box like Rect
     Polygon,   ///< points, width, colour, fill
     Pixel,     ///< points[0], colour
-    Text,      ///< points[0] top-left, text, style, colour
+    Text,      ///< points[0] top-left, points[1] bottom-right (exclusive) of its cells, text,
+               ///< style, colour, ascent (from the top to the baseline)
     Trail,     ///< a polyline the robot's pen drew: points, width, colour
     Raster,    ///< something with no vector form happened (flood fill, scrolling, restoreScr)
   };
@@ -69,6 +76,7 @@ struct DrawOp {
   int width = 1;
   std::string text;
   TextStyle style;
+  int ascent = 0;
 };
 
 class Canvas {
@@ -99,9 +107,13 @@ class Canvas {
   void polygon(const std::vector<Point>& pts, int width, std::optional<Colour> outline,
                std::optional<Colour> fill);
   void floodFill(int x, int y, Colour c);
-  /// Draws text with its top-left corner at (x, y); returns its width in pixels.
+  /// Draws text with the top-left corner of its first cell at (x, y); returns its width in
+  /// pixels (the sum of the characters' advances).
   int text(int x, int y, const std::string& s, const TextStyle& style, Colour c);
-  /// `print`: text at the text cursor, wrapping at the right edge and scrolling at the bottom.
+  /// The fonts this screen draws with (created when text is first drawn).
+  FontRenderer& fonts();
+  /// `print`: text at the text cursor in the print font (TextStyle's default: 100 columns of
+  /// 8 pixels, 40 lines of 15), wrapping at the right edge and scrolling at the bottom.
   void print(const std::string& s, bool newline);
   Point textCursor() const { return cursor_; }
 
@@ -155,6 +167,7 @@ class Canvas {
   Point cursor_;  ///< text cursor in pixels (top-left of the next character)
   std::vector<DrawOp> ops_;
   bool trailOpen_ = false;
+  std::unique_ptr<FontRenderer> fonts_;
 };
 
 }  // namespace rb
