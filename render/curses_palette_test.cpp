@@ -30,4 +30,10 @@ TEST_CASE("terminal colours: RobotBASIC's palette lands on the matching terminal
   CHECK(nearestAnsi(0x008080, 8) == 6);     // Cyan
   CHECK(nearestAnsi(0xC0C0C0, 16) == 7);    // Gray: the ANSI "white" (light grey)
   CHECK(nearestAnsi(0xFF8080, 16) == 9);    // LightRed
+  // On 8 colours the light colours keep their hue (they are nearest their bright twins).
+  CHECK(nearestAnsi(0xFFFF00, 8) == 3);     // Yellow
+  CHECK(nearestAnsi(0x8080FF, 8) == 4);     // LightBlue
+  CHECK(nearestAnsi(0x80FF80, 8) == 2);     // LightGreen
+  CHECK(nearestAnsi(0xFF8080, 8) == 1);     // LightRed
+  CHECK(nearestAnsi(0xFFFFFF, 8) == 7);     // White
 }
