@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "robot/robot_sim.h"
+#include "robot_image.h"
 
 namespace rb::render {
 
@@ -164,8 +165,19 @@ void placeRobotGlyph(ArenaFrame& frame, uint32_t backgroundRgb, const RobotView&
 
 }  // namespace
 
-ArenaFrame renderArena(const std::vector<Colour>& pixels, Colour background, const RobotView& robot,
+ArenaFrame renderArena(const std::vector<Colour>& screenPixels, Colour background, const RobotView& robot,
                        const ArenaOptions& options) {
+  // The robot's image (robot_image.h) is drawn into a copy of the screen at scale 1, so its
+  // ring and heading line fill cells like any drawing; its heading glyph goes on top at the end.
+  const RobotImage robotImage(robot);
+  std::vector<Colour> withRobot;
+  if (!robotImage.empty() && screenPixels.size() >= static_cast<size_t>(kScreenW) * kScreenH) {
+    withRobot = screenPixels;
+    robotImage.rasterize(1, kScreenW, kScreenH, [&](int x, int y) {
+      withRobot[static_cast<size_t>(y) * kScreenW + static_cast<size_t>(x)] = robot.colour;
+    });
+  }
+  const std::vector<Colour>& pixels = withRobot.empty() ? screenPixels : withRobot;
   ArenaFrame frame;
   frame.cols = std::max(options.cols, 0);
   frame.rows = std::max(options.rows, 0);

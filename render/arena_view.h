@@ -42,8 +42,9 @@ struct ArenaOptions {
   CellMode mode = CellMode::Ascii;
 };
 
-/// Scales the 800 x 600 screen (`pixels`, row-major colour numbers) into cols x rows cells and
-/// draws the robot on top as a glyph showing its heading.
+/// Scales the 800 x 600 screen (`pixels`, row-major colour numbers) into cols x rows cells with
+/// the robot's image (its 3-pixel ring and heading line, robot_image.h) drawn in, and puts a
+/// glyph showing its heading in the cell of its centre.
 ArenaFrame renderArena(const std::vector<Colour>& pixels, Colour background, const RobotView& robot,
                        const ArenaOptions& options);
 

@@ -151,7 +151,7 @@ TEST_CASE("renderArena: the foreground is the block's dominant colour", "[render
     for (int x = 0; x < 8; ++x) screen[static_cast<size_t>(y) * Canvas::kWidth + x] = colours::kRed;
   for (int x = 0; x < 8; ++x) screen[static_cast<size_t>(10) * Canvas::kWidth + x] = colours::kBlue;
   ArenaFrame f = renderArena(screen, colours::kWhite, RobotView{}, ArenaOptions{});
-  CHECK(f.at(0, 0).fg == 0xAA0000);
+  CHECK(f.at(0, 0).fg == 0xFF0000);
 
   SECTION("half blocks: the top and the bottom keep their own colours") {
     ArenaOptions opts;
@@ -159,8 +159,8 @@ TEST_CASE("renderArena: the foreground is the block's dominant colour", "[render
     f = renderArena(screen, colours::kWhite, RobotView{}, opts);
     // The upper half (rows 0..7) is red, the lower (8..15) blue: two colours in one cell.
     CHECK(f.at(0, 0).glyph == "\u2580");
-    CHECK(f.at(0, 0).fg == 0xAA0000);
-    CHECK(f.at(0, 0).bg == 0x0000AA);
+    CHECK(f.at(0, 0).fg == 0xFF0000);
+    CHECK(f.at(0, 0).bg == 0x0000FF);
   }
   SECTION("braille: dots where drawn, coloured by the whole cell's dominant colour") {
     ArenaOptions opts;
@@ -169,7 +169,7 @@ TEST_CASE("renderArena: the foreground is the block's dominant colour", "[render
     // Dot rows are 4 pixels: 0..3 and 4..7 hold red (dots 1, 4, 2, 5), 8..11 blue (3, 6),
     // 12..15 nothing (7, 8).
     CHECK(f.at(0, 0).glyph == "\u283F");
-    CHECK(f.at(0, 0).fg == 0xAA0000);
+    CHECK(f.at(0, 0).fg == 0xFF0000);
   }
 }
 
@@ -190,7 +190,7 @@ TEST_CASE("renderArena: half blocks show upper, lower and full cells", "[render]
   CHECK(f.at(2, 0).glyph == "\u2588");
   CHECK(f.at(3, 0).glyph == " ");
   for (int col = 0; col < 3; ++col) {
-    CHECK(f.at(col, 0).fg == 0x00AA00);
+    CHECK(f.at(col, 0).fg == 0x008000);
     CHECK(f.at(col, 0).bg == 0xFFFFFF);
   }
 }
@@ -215,7 +215,7 @@ TEST_CASE("renderArena: the robot is one glyph showing its heading", "[render][a
       ArenaFrame f = renderArena(screen, colours::kWhite, robot, asciiOpts);
       // 400 / 8 = column 50; row 300 * 37 / 600 = 18.5: row 18.
       CHECK(f.at(50, 18).glyph == ascii[i]);
-      CHECK(f.at(50, 18).fg == 0xAA0000);
+      CHECK(f.at(50, 18).fg == 0xFF0000);
       CHECK(renderArena(screen, colours::kWhite, robot, halfOpts).at(50, 18).glyph == arrows[i]);
       CHECK(renderArena(screen, colours::kWhite, robot, brailleOpts).at(50, 18).glyph == arrows[i]);
     }

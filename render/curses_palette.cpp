@@ -48,14 +48,16 @@ int nearestXterm256(uint32_t rgb) {
 int nearestAnsi(uint32_t rgb, int count) {
   int r = red(rgb), g = green(rgb), b = blue(rgb);
   int best = 0, bestDist = 1 << 30;
-  for (int i = 0; i < count && i < 16; ++i) {
+  // Always among all sixteen: a light colour is nearest its bright ANSI twin, which an
+  // 8-colour terminal shows as the base colour (yellow, not the grey "white").
+  for (int i = 0; i < 16; ++i) {
     int d = distance(r, g, b, red(kAnsi[i]), green(kAnsi[i]), blue(kAnsi[i]));
     if (d < bestDist) {
       bestDist = d;
       best = i;
     }
   }
-  return best;
+  return count >= 16 ? best : best % 8;
 }
 
 }  // namespace rb::render

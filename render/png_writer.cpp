@@ -12,7 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "robot/robot_sim.h"
+#include "robot_image.h"
 
 namespace rb::render {
 
@@ -20,19 +20,6 @@ namespace {
 
 constexpr int kScreenW = Canvas::kWidth;
 constexpr int kScreenH = Canvas::kHeight;
-
-/// Half the thickness of the robot's outline and heading line, in screen pixels: one screen
-/// pixel thick at every scale, like the drawing under it.
-constexpr double kRobotHalfStroke = 0.5;
-
-/// Squared distance from p to the segment a-b.
-double segmentDistance2(double px, double py, double ax, double ay, double bx, double by) {
-  double dx = bx - ax, dy = by - ay;
-  double len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
-  double ex = px - (ax + t * dx), ey = py - (ay + t * dy);
-  return ex * ex + ey * ey;
-}
 
 }  // namespace
 
@@ -69,31 +56,11 @@ RgbImage screenImage(const std::vector<Colour>& pixels, int scale) {
 }
 
 void drawRobot(RgbImage& image, const RobotView& robot, int scale) {
-  if (!robot.visible) return;
-  scale = std::clamp(scale, 1, kMaxScale);
-  const double cx = robot.x, cy = robot.y, r = robot.radius;
-  if (!std::isfinite(cx) || !std::isfinite(cy) || !std::isfinite(r) || r < 0) return;
-  const double heading = std::isfinite(robot.heading) ? robot.heading : 0.0;
-  const Eigen::Vector2d dir = headingVector(heading);
-  const double ex = cx + dir.x() * r, ey = cy + dir.y() * r;
+  const RobotImage shape(robot);
+  if (shape.empty()) return;
   const uint32_t colour = colourToRgb(robot.colour);
-  const double reach = r + 1;
-  // Work in screen coordinates: image pixel p covers screen pixel p / scale, whose centre is
-  // the screen pixel's integer coordinate (the canvas and the robot share that convention).
-  auto toImage = [scale](double v) { return static_cast<long>(std::floor((v + 0.5) * scale)); };
-  long x0 = std::max(0L, toImage(cx - reach)), x1 = std::min<long>(image.width - 1, toImage(cx + reach));
-  long y0 = std::max(0L, toImage(cy - reach)), y1 = std::min<long>(image.height - 1, toImage(cy + reach));
-  const double h2 = kRobotHalfStroke * kRobotHalfStroke;
-  for (long py = y0; py <= y1; ++py) {
-    double v = (static_cast<double>(py) + 0.5) / scale - 0.5;
-    for (long px = x0; px <= x1; ++px) {
-      double u = (static_cast<double>(px) + 0.5) / scale - 0.5;
-      double d = std::hypot(u - cx, v - cy);
-      bool ring = std::abs(d - r) <= kRobotHalfStroke;
-      if (ring || segmentDistance2(u, v, cx, cy, ex, ey) <= h2)
-        image.set(static_cast<int>(px), static_cast<int>(py), colour);
-    }
-  }
+  shape.rasterize(std::clamp(scale, 1, kMaxScale), image.width, image.height,
+                  [&](int x, int y) { image.set(x, y, colour); });
 }
 
 RgbImage composeImage(const std::vector<Colour>& pixels, const RobotView& robot, int scale) {

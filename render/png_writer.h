@@ -1,7 +1,8 @@
 #pragma once
 // The screen as an RGB image: scaled by a whole factor (nearest neighbour) with the robot drawn
 // on top, encoded as PNG with libpng. The robot is never part of the screen's pixels, so it is
-// drawn here as a circle outline of its radius with a line from the centre toward its heading.
+// drawn here (robot_image.h): a 3-pixel circle outline inside its rim and a 3-pixel line from
+// the centre to the rim toward its heading.
 
 #include <cstdint>
 #include <optional>
@@ -39,9 +40,10 @@ constexpr int kMaxScale = 8;
 /// clamped), nearest neighbour, without the robot.
 RgbImage screenImage(const std::vector<Colour>& pixels, int scale);
 
-/// Draws the robot onto an image of the screen made with `scale`: a one-screen-pixel circle
-/// outline of its radius and a line from its centre to the edge in the heading direction, both
-/// in the robot's colour. Nothing is drawn when the robot is not visible.
+/// Draws the robot onto an image of the screen made with `scale`: a circle outline 3 screen
+/// pixels thick just inside its rim and a line as thick from its centre to the rim in the
+/// heading direction, both in the robot's colour (robot_image.h). Nothing is drawn when the
+/// robot is not visible.
 void drawRobot(RgbImage& image, const RobotView& robot, int scale);
 
 /// screenImage() with drawRobot() on top: the picture `rb render` writes.

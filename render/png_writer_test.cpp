@@ -9,8 +9,8 @@
 namespace rb::render {
 namespace {
 
-constexpr uint32_t kGreenRgb = 0x00AA00;  // colour 2, the pen of Figure 1.7
-constexpr uint32_t kBlueRgb = 0x0000AA;   // colour 1, the robot's default colour
+constexpr uint32_t kGreenRgb = 0x008000;  // colour 2, the pen of Figure 1.7
+constexpr uint32_t kBlueRgb = 0x0000FF;   // colour 1, the robot's default colour
 constexpr uint32_t kWhiteRgb = 0xFFFFFF;
 
 std::unique_ptr<test::PictureRun> runFigure17() {
@@ -30,7 +30,7 @@ void checkSquare(const RgbImage& img, bool robotOnTop) {
   REQUIRE(img.height == 600);
   // The four corners.
   if (!robotOnTop) CHECK(img.pixel(400, 300) == kGreenRgb);
-  CHECK(img.pixel(399, 301) == kGreenRgb);  // the same corner's round brush, off the robot's lines
+  CHECK(img.pixel(398, 300) == kGreenRgb);  // the same corner's round brush, off the robot's lines
   CHECK(img.pixel(400, 180) == kGreenRgb);
   CHECK(img.pixel(520, 180) == kGreenRgb);
   CHECK(img.pixel(520, 300) == kGreenRgb);
@@ -82,14 +82,25 @@ TEST_CASE("png: Figure 1.7 draws a green square with 4-pixel sides", "[render][p
     CHECK(decoded->rgb == composed.rgb);
     checkSquare(*decoded, true);
     // The robot ends where it started, at (400, 300) heading up, radius 20, blue: its heading
-    // line runs up from the centre, its outline crosses the axes 20 pixels away.
+    // line runs up from the centre, 3 pixels wide (x 399..401); its outline is the ring of
+    // pixels 17 to 20 pixels from the centre (3 pixels: 18, 19, 20 on the axes).
     CHECK(decoded->pixel(400, 300) == kBlueRgb);
     CHECK(decoded->pixel(400, 290) == kBlueRgb);
+    CHECK(decoded->pixel(399, 290) == kBlueRgb);
+    CHECK(decoded->pixel(401, 290) == kBlueRgb);
+    CHECK(decoded->pixel(402, 290) == kWhiteRgb);  // beside the heading line (x 398 is the square's side)
     CHECK(decoded->pixel(400, 281) == kBlueRgb);
-    CHECK(decoded->pixel(380, 300) == kBlueRgb);
-    CHECK(decoded->pixel(400, 320) == kBlueRgb);
-    CHECK(decoded->pixel(420, 300) == kBlueRgb);
-    CHECK(decoded->pixel(390, 300) == kWhiteRgb);  // inside the outline, off the heading line
+    for (int d = 18; d <= 20; ++d) {
+      INFO("d = " << d);
+      CHECK(decoded->pixel(400 - d, 300) == kBlueRgb);
+      CHECK(decoded->pixel(400, 300 + d) == kBlueRgb);
+      CHECK(decoded->pixel(400 + d, 300) == kBlueRgb);
+    }
+    CHECK(decoded->pixel(383, 300) == kWhiteRgb);  // inside the ring, off the heading line
+    CHECK(decoded->pixel(379, 300) == kWhiteRgb);  // outside the rim
+    CHECK(decoded->pixel(400, 316) == kWhiteRgb);
+    CHECK(decoded->pixel(400, 321) == kWhiteRgb);
+    CHECK(decoded->pixel(390, 300) == kWhiteRgb);
     CHECK(decoded->pixel(410, 310) == kWhiteRgb);
   }
 }
@@ -104,11 +115,14 @@ TEST_CASE("png: the robot's heading line follows headingVector (0 up, clockwise)
   robot.colour = colours::kRed;
   robot.heading = 90;  // right
   RgbImage img = composeImage(screen, robot, 1);
-  CHECK(img.pixel(215, 200) == 0xAA0000);
+  CHECK(img.pixel(215, 200) == 0xFF0000);
+  CHECK(img.pixel(215, 199) == 0xFF0000);  // 3 pixels wide
+  CHECK(img.pixel(215, 201) == 0xFF0000);
+  CHECK(img.pixel(215, 202) == kWhiteRgb);
   CHECK(img.pixel(200, 185) == kWhiteRgb);
   robot.heading = 225;  // down-left
   img = composeImage(screen, robot, 1);
-  CHECK(img.pixel(190, 210) == 0xAA0000);
+  CHECK(img.pixel(190, 210) == 0xFF0000);
   CHECK(img.pixel(215, 200) == kWhiteRgb);
   robot.visible = false;
   img = composeImage(screen, robot, 1);
@@ -136,13 +150,14 @@ TEST_CASE("png: --scale 2 doubles the picture, nearest neighbour", "[render][png
   REQUIRE(decoded);
   CHECK(decoded->width == 1600);
   CHECK(decoded->height == 1200);
-  // The 4-pixel side is 8 pixels wide now; the robot's outline is still one screen pixel
-  // (two image pixels) thick.
+  // The 4-pixel side is 8 pixels wide now; the robot's outline is still 3 screen pixels (6
+  // image pixels) thick: screen x 380..383 minus the ring's inner edge, image x 761..766.
   for (int x = 796; x <= 803; ++x) CHECK(decoded->pixel(x, 480) == kGreenRgb);
   CHECK(decoded->pixel(795, 480) == kWhiteRgb);
   CHECK(decoded->pixel(804, 480) == kWhiteRgb);
-  CHECK(decoded->pixel(760, 600) == kBlueRgb);
-  CHECK(decoded->pixel(761, 601) == kBlueRgb);
+  for (int x = 761; x <= 766; ++x) CHECK(decoded->pixel(x, 601) == kBlueRgb);
+  CHECK(decoded->pixel(760, 601) == kWhiteRgb);
+  CHECK(decoded->pixel(767, 601) == kWhiteRgb);
 }
 
 TEST_CASE("png: the same screen always encodes to the same bytes", "[render][png]") {

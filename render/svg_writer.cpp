@@ -8,7 +8,7 @@
 
 #include "screen/font.h"
 #include "png_writer.h"
-#include "robot/robot_sim.h"
+#include "robot_image.h"
 
 namespace rb::render {
 
@@ -18,13 +18,6 @@ constexpr int kScreenW = Canvas::kWidth;
 constexpr int kScreenH = Canvas::kHeight;
 /// The canvas does not draw lines with a coordinate beyond this (see Canvas::line).
 constexpr int kFarCoordinate = 100000;
-/// Where a bitmap font's baseline sits, as a fraction of its cell height (VGA: row 12 of 16,
-/// plus a little for the descent of the SVG viewer's monospace font).
-constexpr double kBaseline = 0.8;
-/// A monospace font's advance is about 0.6 em. The font size is capped so that text is about
-/// as wide as the bitmap's even where a viewer ignores textLength (librsvg does).
-constexpr double kMonospaceAdvance = 0.6;
-
 /// Appends strings to the document. Appending piece by piece (instead of chains of operator+)
 /// avoids temporaries, and a false -Wrestrict of GCC 12 on `"literal" + std::string`.
 template <typename... Parts>
@@ -236,28 +229,26 @@ class SvgBuilder {
   }
 
   void text(const DrawOp& op) {
-    if (op.points.empty() || op.text.empty()) return;
-    const Point p = op.points[0];
-    // The same font choice as Canvas::text, so the text's box matches the bitmap's.
+    if (op.points.size() < 2 || op.text.empty()) return;
+    // The canvas measured the text's cells with the embedded font: the box, the baseline and
+    // the width are exact; the glyphs are the viewer's (Courier New, Liberation Mono, ...).
+    const Point p = op.points[0], q = op.points[1];
     const TextStyle& style = op.style;
-    const BitmapFont& font =
-        style.height == 16 && !style.bold ? consoleFont() : textFont(style.height, style.bold);
-    const int scale = std::max(1, style.height / font.height());
-    const double cw = font.width() * scale, ch = font.height() * scale;
-    const double length = cw * static_cast<double>(op.text.size());
+    const double length = q.x - p.x, height = q.y - p.y;
     if (style.background) {
-      box("rect", p.x, p.y, length, ch);
+      box("rect", p.x, p.y, length, height);
       fill(style.background);
       put(out_, "/>\n");
     }
-    put(out_, "<text x=\"", num(p.x), "\" y=\"", num(p.y + ch * kBaseline),
-        "\" font-family=\"monospace\" font-size=\"", num(std::min(ch, cw / kMonospaceAdvance)),
-        "\" textLength=\"", num(length),
-        "\" lengthAdjust=\"spacingAndGlyphs\" xml:space=\"preserve\"");
+    put(out_, "<text x=\"", num(p.x), "\" y=\"", num(p.y + op.ascent), "\" font-family=\"",
+        cssFontFamily(style.font.face), "\" font-size=\"", num(style.font.pixelSize), "\" textLength=\"",
+        num(length), "\" lengthAdjust=\"spacingAndGlyphs\" xml:space=\"preserve\"");
     fill(op.colour);
-    if (style.bold) put(out_, " font-weight=\"bold\"");
-    if (style.italic) put(out_, " font-style=\"italic\"");
-    if (style.underline) put(out_, " text-decoration=\"underline\"");
+    if (style.font.bold) put(out_, " font-weight=\"bold\"");
+    if (style.font.italic) put(out_, " font-style=\"italic\"");
+    if (style.underline || style.strikeout)
+      put(out_, " text-decoration=\"", style.underline ? "underline" : "",
+          style.underline && style.strikeout ? " " : "", style.strikeout ? "line-through" : "", "\"");
     put(out_, ">", xmlText(op.text), "</text>\n");
   }
 
@@ -274,17 +265,23 @@ class SvgBuilder {
 };
 
 void robotElements(std::string& out, const RobotView& robot) {
-  if (!robot.visible || !std::isfinite(robot.x) || !std::isfinite(robot.y) || !std::isfinite(robot.radius))
-    return;
-  const double cx = robot.x + 0.5, cy = robot.y + 0.5;
-  const Eigen::Vector2d dir = headingVector(std::isfinite(robot.heading) ? robot.heading : 0.0);
+  const RobotImage shape(robot);
+  if (shape.empty()) return;
+  // Pixel (x, y) is the unit square from (x, y): the robot's centre pixel's centre is x + 0.5.
+  const double cx = shape.centreX() + 0.5, cy = shape.centreY() + 0.5;
+  // The stroke lies inside the rim: a circle through the middle of the ring, and the heading
+  // line (butt ends) from the centre to that circle, where it meets the ring.
+  // A robot smaller than the stroke is a disc.
+  const double stroke = std::min(kRobotStroke, shape.radius());
+  const double mid = shape.radius() - stroke / 2;
   const std::string colour = hexColour(robot.colour);
+  const std::string width = num(stroke);
   put(out, "<!-- the robot: its outline and a line toward its heading -->\n");
-  put(out, "<circle cx=\"", num(cx), "\" cy=\"", num(cy), "\" r=\"", num(robot.radius),
-      "\" fill=\"none\" stroke=\"", colour, "\" stroke-width=\"1\"/>\n");
-  put(out, "<line x1=\"", num(cx), "\" y1=\"", num(cy), "\" x2=\"", num(cx + dir.x() * robot.radius),
-      "\" y2=\"", num(cy + dir.y() * robot.radius), "\" stroke=\"", colour,
-      "\" stroke-width=\"1\" stroke-linecap=\"round\"/>\n");
+  put(out, "<circle cx=\"", num(cx), "\" cy=\"", num(cy), "\" r=\"", num(mid),
+      "\" fill=\"none\" stroke=\"", colour, "\" stroke-width=\"", width, "\"/>\n");
+  put(out, "<line x1=\"", num(cx), "\" y1=\"", num(cy), "\" x2=\"", num(cx + shape.headingX() * mid),
+      "\" y2=\"", num(cy + shape.headingY() * mid), "\" stroke=\"", colour, "\" stroke-width=\"", width,
+      "\"/>\n");
 }
 
 }  // namespace

@@ -72,19 +72,21 @@ TEST_CASE("svg: Figure 1.7's trail is one green polyline through the square's co
   const std::string& trail = lines[0];
   // Even widths centre the brush on the pixel's corner, so the corners are whole numbers.
   CHECK(attribute(trail, "points") == "400,300 400,180 520,180 520,300 400,300");
-  CHECK(attribute(trail, "stroke") == "#00aa00");
+  CHECK(attribute(trail, "stroke") == "#008000");
   CHECK(attribute(trail, "stroke-width") == "4");
   CHECK(attribute(trail, "fill") == "none");
-  // The white background first, the robot last: a circle and its heading line, in blue.
+  // The white background first, the robot last: a circle and its heading line, in blue, 3 pixels
+  // wide inside its rim (radius 20: the stroke covers 17 to 20 from the centre).
   std::vector<std::string> rects = elements(svg, "rect");
   REQUIRE_FALSE(rects.empty());
   CHECK(rects[0] == "<rect x=\"0\" y=\"0\" width=\"800\" height=\"600\" fill=\"#ffffff\"/>");
   std::vector<std::string> circles = elements(svg, "circle");
   REQUIRE(circles.size() == 1);
   CHECK(circles[0] ==
-        "<circle cx=\"400.5\" cy=\"300.5\" r=\"20\" fill=\"none\" stroke=\"#0000aa\" stroke-width=\"1\"/>");
+        "<circle cx=\"400.5\" cy=\"300.5\" r=\"18.5\" fill=\"none\" stroke=\"#0000ff\" stroke-width=\"3\"/>");
   CHECK(svg.find("<circle") > svg.find("<polyline"));
-  CHECK_THAT(svg, Catch::Contains("<line x1=\"400.5\" y1=\"300.5\" x2=\"400.5\" y2=\"280.5\" stroke=\"#0000aa\""));
+  CHECK_THAT(svg, Catch::Contains("<line x1=\"400.5\" y1=\"300.5\" x2=\"400.5\" y2=\"282\" stroke=\"#0000ff\" "
+                                  "stroke-width=\"3\"/>"));
   CHECK(svg.find("<image") == std::string::npos);
 }
 
@@ -122,33 +124,45 @@ TEST_CASE("svg: shapes keep the canvas's pixel geometry", "[render][svg]") {
     std::string svg = svgOf("rectangle 10, 10, 50, 30\nlineWidth 4\nrectangle 100, 100, 199, 149, RED, YELLOW\n");
     CHECK_THAT(svg, Catch::Contains("<rect x=\"10.5\" y=\"10.5\" width=\"40\" height=\"20\" fill=\"none\" "
                                     "stroke=\"#000000\" stroke-width=\"1\"/>"));
-    CHECK_THAT(svg, Catch::Contains("<rect x=\"102\" y=\"102\" width=\"96\" height=\"46\" fill=\"#ffff55\" "
-                                    "stroke=\"#aa0000\" stroke-width=\"4\"/>"));
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"102\" y=\"102\" width=\"96\" height=\"46\" fill=\"#ffff00\" "
+                                    "stroke=\"#ff0000\" stroke-width=\"4\"/>"));
   }
   SECTION("a filled rectangle, and one whose outline is as wide as the box") {
     std::string svg = svgOf("rectangle 5, 6, 14, 25, GREEN, GREEN\nlineWidth 6\nrectangle 25, 6, 34, 25\n");
-    CHECK_THAT(svg, Catch::Contains("<rect x=\"5.5\" y=\"6.5\" width=\"9\" height=\"19\" fill=\"#00aa00\" "
-                                    "stroke=\"#00aa00\" stroke-width=\"1\"/>"));
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"5.5\" y=\"6.5\" width=\"9\" height=\"19\" fill=\"#008000\" "
+                                    "stroke=\"#008000\" stroke-width=\"1\"/>"));
     CHECK_THAT(svg, Catch::Contains("<rect x=\"25\" y=\"6\" width=\"10\" height=\"20\" fill=\"#000000\"/>"));
   }
   SECTION("an ellipse, a line, a pixel") {
     std::string svg = svgOf("circle 100, 100, 200, 150, BLUE\nline 0, 0, 10, 20, 3, RED\nsetPixel 7, 8, CYAN\n");
     CHECK_THAT(svg, Catch::Contains("<ellipse cx=\"150.5\" cy=\"125.5\" rx=\"50\" ry=\"25\" fill=\"none\" "
-                                    "stroke=\"#0000aa\" stroke-width=\"1\"/>"));
-    CHECK_THAT(svg, Catch::Contains("<line x1=\"0.5\" y1=\"0.5\" x2=\"10.5\" y2=\"20.5\" stroke=\"#aa0000\" "
+                                    "stroke=\"#0000ff\" stroke-width=\"1\"/>"));
+    CHECK_THAT(svg, Catch::Contains("<line x1=\"0.5\" y1=\"0.5\" x2=\"10.5\" y2=\"20.5\" stroke=\"#ff0000\" "
                                     "stroke-width=\"3\""));
-    CHECK_THAT(svg, Catch::Contains("<rect x=\"7\" y=\"8\" width=\"1\" height=\"1\" fill=\"#00aaaa\"/>"));
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"7\" y=\"8\" width=\"1\" height=\"1\" fill=\"#008080\"/>"));
   }
-  SECTION("text: monospace, escaped, Latin-1 as Unicode, with its background") {
-    std::string svg = svgOf("xyText 10, 20, \"a<b & \" + char(233), \"Courier\", 12, \"u\", RED, YELLOW\n");
+  SECTION("text: the named face, escaped, Latin-1 as Unicode, with its background") {
+    std::string svg = svgOf("xyText 10, 20, \"a<b & \" + char(233), \"Courier\", 12, \"u\", RED, YELLOW\n"
+                            "xyText 10, 100, \"Hi\", \"Times New Roman\", 10, fs_Bold + fs_Italic + fs_StrikeOut\n");
     std::vector<std::string> texts = elements(svg, "text");
-    REQUIRE(texts.size() == 1);
-    CHECK(attribute(texts[0], "font-family") == "monospace");
-    CHECK(attribute(texts[0], "fill") == "#aa0000");
+    REQUIRE(texts.size() == 2);
+    CHECK(attribute(texts[0], "font-family") == "'Courier New', 'Liberation Mono', monospace");
+    // 12 points are 16 pixels; Courier's cell is then 10 x 18 pixels, the baseline 13 down.
+    CHECK(attribute(texts[0], "font-size") == "16");
+    CHECK(attribute(texts[0], "x") == "10");
+    CHECK(attribute(texts[0], "y") == "33");
+    CHECK(attribute(texts[0], "textLength") == "70");
+    CHECK(attribute(texts[0], "fill") == "#ff0000");
     CHECK(attribute(texts[0], "text-decoration") == "underline");
     CHECK_THAT(svg, Catch::Contains(">a&lt;b &amp; &#233;</text>"));
-    // The yellow box behind the text comes first.
-    CHECK(svg.find("fill=\"#ffff55\"") < svg.find("<text"));
+    // The yellow box behind the text comes first, as large as its cells.
+    CHECK_THAT(svg, Catch::Contains("<rect x=\"10\" y=\"20\" width=\"70\" height=\"18\" fill=\"#ffff00\"/>"));
+    CHECK(svg.find("fill=\"#ffff00\"") < svg.find("<text"));
+    CHECK(attribute(texts[1], "font-family") == "'Times New Roman', 'Liberation Serif', serif");
+    CHECK(attribute(texts[1], "font-size") == "13");
+    CHECK(attribute(texts[1], "font-weight") == "bold");
+    CHECK(attribute(texts[1], "font-style") == "italic");
+    CHECK(attribute(texts[1], "text-decoration") == "line-through");
   }
   SECTION("RGB colours") {
     std::string svg = svgOf("line 1, 1, 100, 1, 1, RGB(18, 52, 86)\n");
@@ -158,7 +172,7 @@ TEST_CASE("svg: shapes keep the canvas's pixel geometry", "[render][svg]") {
     std::string svg = svgOf("line 1, 1, 100, 1\nclearScr GRAY\nline 5, 5, 9, 9, 1, RED\n");
     std::vector<std::string> rects = elements(svg, "rect");
     REQUIRE(rects.size() == 1);
-    CHECK(attribute(rects[0], "fill") == "#aaaaaa");
+    CHECK(attribute(rects[0], "fill") == "#c0c0c0");
     REQUIRE(elements(svg, "line").size() == 1);
   }
 }
@@ -190,7 +204,7 @@ TEST_CASE("svg: after floodFill the picture is the embedded raster", "[render][s
   INFO(error);
   REQUIRE(decoded);
   CHECK(decoded->width == 800);
-  CHECK(decoded->pixel(150, 150) == 0xAA0000);
+  CHECK(decoded->pixel(150, 150) == 0xFF0000);
   CHECK(decoded->pixel(100, 150) == 0x000000);
   CHECK(decoded->pixel(50, 50) == 0xFFFFFF);
   // The robot is not in the raster.

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libcli11-dev catch2 libeigen3-dev libpng-dev libncurses-dev
-  console-setup-linux   # PSF console fonts: the font compiled into the canvas
+  libfreetype-dev fonts-liberation2   # text: FreeType rasterizes the Liberation fonts compiled into rb
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks

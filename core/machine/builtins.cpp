@@ -43,6 +43,10 @@ std::vector<Builtin> makeTable() {
       {"LightMagenta", K::Constant, "colour", "", nullptr, 13, "colour 13"},
       {"Yellow", K::Constant, "colour", "", nullptr, 14, "colour 14"},
       {"White", K::Constant, "colour", "", nullptr, 15, "colour 15"},
+      {"fs_Bold", K::Constant, "constant", "", nullptr, kFsBold, "xyText style: bold (1); add the fs_ constants to combine them"},
+      {"fs_Italic", K::Constant, "constant", "", nullptr, kFsItalic, "xyText style: italic (2)"},
+      {"fs_Underline", K::Constant, "constant", "", nullptr, kFsUnderline, "xyText style: underlined (4)"},
+      {"fs_StrikeOut", K::Constant, "constant", "", nullptr, kFsStrikeOut, "xyText style: struck out (8)"},
 
       // ---- math
       {"abs", K::Function, "math", "x", mathAbs, 0, "absolute value"},

@@ -1,6 +1,8 @@
 // Graphics built-ins: they draw on the Machine's canvas with its current colour and line width.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 #include "machine/builtins_impl.h"
 #include "base/runtime_error.h"
@@ -68,71 +70,119 @@ Value line(Machine& m, Args& a) {
   return {};
 }
 
-/// How a shape command gives its box: two corners, a top-left corner and a size, a centre and
-/// a size, or a centre and a radius.
-enum class Box { Corners, CornerSize, CentreSize, CentreRadius };
+/// How a shape command gives its box: two corners, or a top-left corner and a size.
+enum class Box { Corners, CornerSize };
 
-/// rectangle, rectangleWH, eRectangle, circle, circleWH, eCircle: the box from the first
-/// arguments, then the optional outline and fill colours.
+/// rectangle, rectangleWH, circle, circleWH: the box from the first four arguments, then the
+/// optional outline and fill colours.
 template <Box form, bool ellipse>
 Value shape(Machine& m, Args& a) {
-  Point p = point(a, 0), q;
-  int next = 4;
-  switch (form) {
-    case Box::Corners: q = point(a, 2); break;
-    case Box::CornerSize: q = {p.x + a.coordinate(2), p.y + a.coordinate(3)}; break;
-    case Box::CentreSize: {
-      int hw = a.coordinate(2) / 2, hh = a.coordinate(3) / 2;
-      q = {p.x + hw, p.y + hh};
-      p = {p.x - hw, p.y - hh};
-      break;
-    }
-    case Box::CentreRadius: {
-      int r = a.coordinate(2);
-      q = {p.x + r, p.y + r};
-      p = {p.x - r, p.y - r};
-      next = 3;
-      break;
-    }
-  }
-  auto [outline, fill] = shapeColours(m, a, next);
+  Point p = point(a, 0);
+  Point q = form == Box::Corners ? point(a, 2) : Point{p.x + a.coordinate(2), p.y + a.coordinate(3)};
+  auto [outline, fill] = shapeColours(m, a, 4);
   Canvas& c = m.canvas();
   if (ellipse) c.ellipse(p, q, c.lineWidth, outline, fill);
   else c.rectangle(p, q, c.lineWidth, outline, fill);
   return {};
 }
 
-/// Points of polygon (a 1-D array x1, y1, x2, y2, ...) or mPolygon (an n x 2 array).
-std::vector<Point> polygonPoints(Args& a, bool matrix) {
-  if (!a[0].isArr()) throw RuntimeError(a.describe(0) + " must be an array of coordinates");
+/// eRectangle, eCircle: the edge only of the shape in the box with corners (x1, y1), (x2, y2),
+/// in a width (default: the line width) and a colour (default: the current colour) of its own.
+template <bool ellipse>
+Value edgeShape(Machine& m, Args& a) {
+  Canvas& c = m.canvas();
+  Point p = point(a, 0), q = point(a, 2);
+  int w = a.has(4) ? widthArg(a, 4) : c.lineWidth;
+  Colour col = a.has(5) ? a.colour(5) : c.foreground;
+  if (ellipse) c.ellipse(p, q, w, col, std::nullopt);
+  else c.rectangle(p, q, w, col, std::nullopt);
+  return {};
+}
+
+/// The x, y pairs of an array of numbers (any shape, in storage order), rounded to pixels.
+std::vector<Point> arrayPairs(Args& a) {
   const ArrObj& arr = a[0].arr();
-  if (matrix && (arr.dims.size() != 2 || arr.dims[1] != 2))
-    throw RuntimeError(a.describe(0) + " must be an array with 2 columns (x, y)");
-  if (!matrix && arr.dims.size() != 1)
-    throw RuntimeError(a.describe(0) + " must be a one-dimensional array x1, y1, x2, y2, ...");
   if (arr.items.size() % 2 != 0 || arr.items.size() < 4)
     throw RuntimeError(a.describe(0) + " must hold at least two x, y pairs");
   std::vector<Point> pts;
+  pts.reserve(arr.items.size() / 2);
   for (size_t i = 0; i + 1 < arr.items.size(); i += 2) {
     const Value& x = arr.items[i];
     const Value& y = arr.items[i + 1];
     if (!x.isNumeric() || !y.isNumeric()) throw RuntimeError(a.describe(0) + " holds something that is not a number");
-    pts.push_back({static_cast<int>(std::lround(x.asDouble())), static_cast<int>(std::lround(y.asDouble()))});
+    // Kept within the range Args::coordinate allows, so no drawing arithmetic overflows.
+    auto pixel = [](double v) { return static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); };
+    pts.push_back({pixel(x.asDouble()), pixel(y.asDouble())});
   }
   return pts;
 }
 
+const ArrObj& coordinateArray(Args& a) {
+  if (!a[0].isArr()) throw RuntimeError(a.describe(0) + " must be an array of coordinates");
+  return a[0].arr();
+}
+
+/// polygon: a 1-D array x1, y1, x2, y2, ...; outline (default: the current colour) and fill.
 Value polygon(Machine& m, Args& a) {
-  auto pts = polygonPoints(a, false);
+  if (coordinateArray(a).dims.size() != 1)
+    throw RuntimeError(a.describe(0) + " must be a one-dimensional array x1, y1, x2, y2, ...");
+  auto pts = arrayPairs(a);
   auto [outline, fill] = shapeColours(m, a, 1);
   m.canvas().polygon(pts, m.canvas().lineWidth, outline, fill);
   return {};
 }
 
+/// One polygon of mPolygon's flat form: its vertices and the point to fill from, if any.
+struct FlatPolygon {
+  std::vector<Point> vertices;
+  std::optional<Point> fillPoint;
+};
+
+/// mPolygon's flat array as real programs write it with `data`: a pair whose x is negative
+/// starts a polygon at (-x, y); a pair whose y is negative is the fill point (|x|, -y) of the
+/// polygon before it, not a vertex; other pairs are vertices of the current polygon (the first
+/// pair starts one whatever its sign).
+std::vector<FlatPolygon> flatPolygons(Args& a, const std::vector<Point>& pairs) {
+  std::vector<FlatPolygon> polys;
+  for (const Point& p : pairs) {
+    if (p.y < 0) {
+      if (polys.empty() || polys.back().vertices.empty())
+        throw RuntimeError(a.describe(0) + " has a fill point (negative y) before any polygon");
+      polys.back().fillPoint = Point{std::abs(p.x), -p.y};
+    } else if (p.x < 0 || polys.empty()) {
+      polys.push_back({{{std::abs(p.x), p.y}}, std::nullopt});
+    } else {
+      polys.back().vertices.push_back(p);
+    }
+  }
+  return polys;
+}
+
+/// mPolygon: an n x 2 array of vertices (outline and fill colours as polygon), or a flat array
+/// of one or more polygons (flatPolygons) drawn in the current colour and line width, each
+/// flood-filled from its fill point with `colour` (without a fill point: its inside is filled).
 Value mPolygon(Machine& m, Args& a) {
-  auto pts = polygonPoints(a, true);
+  const ArrObj& arr = coordinateArray(a);
+  Canvas& c = m.canvas();
+  if (arr.dims.size() == 1) {
+    if (a.has(2)) throw RuntimeError("mPolygon with a flat array takes one colour, the fill: " + a.describe(2) + " is one too many");
+    std::optional<Colour> fill;
+    if (a.has(1)) fill = a.colour(1);
+    for (const FlatPolygon& poly : flatPolygons(a, arrayPairs(a))) {
+      if (fill && poly.fillPoint) {
+        c.polygon(poly.vertices, c.lineWidth, c.foreground, std::nullopt);
+        c.floodFill(poly.fillPoint->x, poly.fillPoint->y, *fill);
+      } else {
+        c.polygon(poly.vertices, c.lineWidth, c.foreground, fill);
+      }
+    }
+    return {};
+  }
+  if (arr.dims.size() != 2 || arr.dims[1] != 2)
+    throw RuntimeError(a.describe(0) + " must be a flat array of x, y pairs or an array with 2 columns (x, y)");
+  auto pts = arrayPairs(a);
   auto [outline, fill] = shapeColours(m, a, 1);
-  m.canvas().polygon(pts, m.canvas().lineWidth, outline, fill);
+  c.polygon(pts, c.lineWidth, outline, fill);
   return {};
 }
 
@@ -159,20 +209,23 @@ Value xyString(Machine& m, Args& a) {
   return {};
 }
 
-/// xyText's style: a number (1 bold, 2 italic, 4 underline) or letters ("b", "i", "u").
+/// xyText's style: a number, the sum of fs_Bold (1), fs_Italic (2), fs_Underline (4) and
+/// fs_StrikeOut (8), or letters ("b", "i", "u", "s").
 void parseStyle(Args& a, int i, TextStyle& style) {
   if (a[i].isStr()) {
     for (char c : a.str(i)) {
       char l = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      if (l == 'b') style.bold = true;
-      else if (l == 'i') style.italic = true;
+      if (l == 'b') style.font.bold = true;
+      else if (l == 'i') style.font.italic = true;
       else if (l == 'u') style.underline = true;
+      else if (l == 's') style.strikeout = true;
     }
   } else {
     int64_t bits = a.integer(i);
-    style.bold = bits & 1;
-    style.italic = bits & 2;
-    style.underline = bits & 4;
+    style.font.bold = bits & kFsBold;
+    style.font.italic = bits & kFsItalic;
+    style.underline = bits & kFsUnderline;
+    style.strikeout = bits & kFsStrikeOut;
   }
 }
 
@@ -180,13 +233,17 @@ Value xyText(Machine& m, Args& a) {
   TextStyle style;
   const Value& text = a[2];
   std::string s = formatValue(text);
-  // argument 3 names a font; rb has one family of fonts and draws every name with it.
-  if (a.has(3) && !a[3].isStr() && !a[3].isNumeric()) (void)a.str(3);
+  // Argument 3 names a font: Courier New, Arial, Times New Roman and their kin map to the
+  // Liberation face with the same widths; "" (or a number) is the default face.
+  if (a.has(3)) {
+    if (a[3].isStr()) style.font.face = typefaceForName(a.str(3));
+    else if (!a[3].isNumeric()) (void)a.str(3);
+  }
   if (a.has(4)) {
     // Size in points at 96 dpi: pixels = points * 4 / 3.
     double pts = a.num(4);
     if (pts < 1 || pts > 200) throw RuntimeError(a.describe(4) + " must be a font size from 1 to 200");
-    style.height = static_cast<int>(std::lround(pts * 4.0 / 3.0));
+    style.font.pixelSize = pixelSizeForPoints(pts);
   }
   if (a.has(5)) parseStyle(a, 5, style);
   Colour c = a.has(6) ? a.colour(6) : m.canvas().foreground;
@@ -241,18 +298,20 @@ void appendGraphicsBuiltins(std::vector<Builtin>& t) {
        "rectangle with corners (x1, y1) and (x2, y2); filled when fill is given"},
       {"rectangleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CornerSize, false>, 0,
        "rectangle from its top-left corner and size"},
-      {"eRectangle", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CentreSize, false>, 0,
-       "rectangle from its centre and size"},
+      {"eRectangle", K::Command, "graphics", "x1, y1, x2, y2 [, width [, colour]]", edgeShape<false>, 0,
+       "the edge of the rectangle with corners (x1, y1), (x2, y2), width pixels wide inward; no fill"},
       {"circle", K::Command, "graphics", "x1, y1, x2, y2 [, outline [, fill]]", shape<Box::Corners, true>, 0,
        "ellipse inside the box (x1, y1)-(x2, y2); filled when fill is given"},
       {"circleWH", K::Command, "graphics", "x, y, width, height [, outline [, fill]]", shape<Box::CornerSize, true>, 0,
        "ellipse inside the box from its top-left corner and size"},
-      {"eCircle", K::Command, "graphics", "x, y, radius [, outline [, fill]]", shape<Box::CentreRadius, true>, 0,
-       "circle from its centre and radius"},
+      {"eCircle", K::Command, "graphics", "x1, y1, x2, y2 [, width [, colour]]", edgeShape<true>, 0,
+       "the edge of the ellipse in the box (x1, y1)-(x2, y2), width pixels wide inward; no fill"},
       {"polygon", K::Command, "graphics", "points [, outline [, fill]]", polygon, 0,
        "closed polygon through the points of a 1-D array x1, y1, x2, y2, ..."},
-      {"mPolygon", K::Command, "graphics", "points [, outline [, fill]]", mPolygon, 0,
-       "closed polygon through the rows (x, y) of an n x 2 array"},
+      {"mPolygon", K::Command, "graphics", "points [, colour [, fill]]", mPolygon, 0,
+       "polygons of a flat array (a negative x starts one, a negative y gives its fill point; "
+       "outline in the current colour, filled with colour), or of the rows (x, y) of an n x 2 "
+       "array (colour: the outline)"},
       {"setPixel", K::Command, "graphics", "x, y [, colour]", setPixel, 0, "colours one pixel"},
       {"pixelClr", K::Function, "graphics", "x, y", pixelClr, 0,
        "the colour number of a pixel (-1 outside the screen)"},
@@ -262,7 +321,8 @@ void appendGraphicsBuiltins(std::vector<Builtin>& t) {
        "prints items (separated as in print) with the top-left corner at (x, y)"},
       {"xyText", K::Command, "graphics",
        "x, y, text [, font [, size [, style [, colour [, background]]]]]", xyText, 0,
-       "text at (x, y): size in points, style 1/\"b\" bold, 2/\"i\" italic, 4/\"u\" underline"},
+       "text at (x, y): font \"Courier New\", \"Arial\", \"Times New Roman\"... (\"\": the print font), "
+       "size in points, style fs_Bold + fs_Italic + fs_Underline + fs_StrikeOut (or \"bius\")"},
       {"saveScr", K::Command, "graphics", "", saveScr, 0, "remembers the screen"},
       {"restoreScr", K::Command, "graphics", "", restoreScr, 0, "puts back the screen saveScr remembered"},
       {"flip", K::Command, "graphics", "[mode]", flip, 0,

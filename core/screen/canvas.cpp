@@ -7,9 +7,28 @@
 namespace rb {
 
 namespace {
-constexpr uint32_t kPalette[16] = {0x000000, 0x0000AA, 0x00AA00, 0x00AAAA, 0xAA0000, 0xAA00AA,
-                                   0xAA5500, 0xAAAAAA, 0x555555, 0x5555FF, 0x55FF55, 0x55FFFF,
-                                   0xFF5555, 0xFF55FF, 0xFFFF55, 0xFFFFFF};
+// RobotBASIC 4.2's colours. Confirmed by screenshots: Blue, Cyan, Red, Gray, LightRed. The
+// others are rb's choice by the same pattern: a dark colour has each channel at 0, 128 or 255,
+// its light twin (colour + 8) adds 128 to every channel, capped at 255; Brown and Yellow are the
+// colours their names say. docs/graphics.md has the table.
+constexpr uint32_t kPalette[16] = {
+    0x000000,  //  0 Black
+    0x0000FF,  //  1 Blue          confirmed
+    0x008000,  //  2 Green
+    0x008080,  //  3 Cyan          confirmed
+    0xFF0000,  //  4 Red           confirmed
+    0xFF00FF,  //  5 Magenta
+    0x804000,  //  6 Brown
+    0xC0C0C0,  //  7 Gray          confirmed
+    0x808080,  //  8 DarkGray      = Black + 128
+    0x8080FF,  //  9 LightBlue     = Blue + 128
+    0x80FF80,  // 10 LightGreen    = Green + 128
+    0x80FFFF,  // 11 LightCyan     = Cyan + 128
+    0xFF8080,  // 12 LightRed      = Red + 128, confirmed
+    0xFF80FF,  // 13 LightMagenta  = Magenta + 128
+    0xFFFF00,  // 14 Yellow
+    0xFFFFFF,  // 15 White         = Gray + 128, capped
+};
 constexpr int kTabColumns = 8;
 constexpr size_t kMaxDisplayOps = 2'000'000;
 }  // namespace
@@ -222,30 +241,36 @@ void Canvas::floodFill(int x, int y, Colour c) {
   record(DrawOp{DrawOp::Raster, {}});
 }
 
+FontRenderer& Canvas::fonts() {
+  if (!fonts_) fonts_ = std::make_unique<FontRenderer>();
+  return *fonts_;
+}
+
 int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Colour c) {
-  const BitmapFont& font = style.height == 16 && !style.bold ? consoleFont() : textFont(style.height, style.bold);
-  // Sizes above the tallest font scale it by a whole factor.
-  int scale = std::max(1, style.height / font.height());
-  int cw = font.width() * scale, ch = font.height() * scale;
+  FontRenderer& f = fonts();
+  const FontMetrics m = f.metrics(style.font);
+  const int width = f.width(style.font, s);
+  if (style.background)
+    for (int yy = 0; yy < m.lineHeight; ++yy) span(y + yy, x, x + width - 1, *style.background);
+  const int baseline = y + m.ascent;
   int penX = x;
   for (unsigned char chr : s) {
     if (penX >= kWidth) break;  // the rest of the text is off the screen
-    if (style.background)
-      for (int yy = 0; yy < ch; ++yy) span(y + yy, penX, penX + cw - 1, *style.background);
-    for (int gy = 0; gy < font.height(); ++gy) {
-      // Italic: shear rows to the right toward the top.
-      int shift = style.italic ? (font.height() - 1 - gy) * scale / 4 : 0;
-      for (int gx = 0; gx < font.width(); ++gx) {
-        if (!font.pixel(chr, gx, gy)) continue;
-        for (int sy = 0; sy < scale; ++sy)
-          for (int sx = 0; sx < scale; ++sx) plot(penX + shift + gx * scale + sx, y + gy * scale + sy, c);
-      }
-    }
-    if (style.underline) span(y + ch - 1, penX, penX + cw - 1, c);
-    penX += cw;
+    const Glyph& g = f.glyph(style.font, chr);
+    const int left = penX + g.left, top = baseline - g.top;
+    for (int gy = 0; gy < g.height; ++gy)
+      for (int gx = 0; gx < g.width; ++gx)
+        if (g.pixel(gx, gy)) plot(left + gx, top + gy, c);
+    penX += g.advance;
   }
-  record(DrawOp{DrawOp::Text, {{x, y}}, c, std::nullopt, 1, s, style});
-  return penX - x;
+  if (style.underline)
+    for (int k = 0; k < m.underlineThickness; ++k) span(y + m.underlineTop + k, x, x + width - 1, c);
+  if (style.strikeout)
+    for (int k = 0; k < m.strikeoutThickness; ++k) span(y + m.strikeoutTop + k, x, x + width - 1, c);
+  DrawOp op{DrawOp::Text, {{x, y}, {x + width, y + m.lineHeight}}, c, std::nullopt, 1, s, style};
+  op.ascent = m.ascent;
+  record(std::move(op));
+  return width;
 }
 
 void Canvas::scrollUp(int pixels) {
@@ -300,11 +325,10 @@ void layoutText(const std::string& text, size_t from, Point& cursor, int cw, Run
 }  // namespace
 
 void Canvas::print(const std::string& s, bool newline) {
-  const BitmapFont& font = consoleFont();
-  const int cw = font.width(), ch = font.height();
   TextStyle style;
-  style.height = ch;
   style.background = textBackground;
+  const int cw = std::max(1, fonts().glyph(style.font, 'M').advance);
+  const int ch = fonts().metrics(style.font).lineHeight;
   std::string all = newline ? s + "\n" : s;
 
   // A dry run first: where each line starts, and how far the screen would scroll.

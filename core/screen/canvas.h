@@ -9,6 +9,7 @@
 // obstacle map must be rebuilt.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,7 +27,7 @@ constexpr Colour kBlack = 0, kBlue = 1, kGreen = 2, kCyan = 3, kRed = 4, kMagent
                  kLightCyan = 11, kLightRed = 12, kLightMagenta = 13, kYellow = 14, kWhite = 15;
 }  // namespace colours
 
-/// 0xRRGGBB for a colour number (the 16 palette colours are the VGA ones).
+/// 0xRRGGBB for a colour number (the 16 palette colours are RobotBASIC 4.2's; docs/graphics.md).
 uint32_t colourToRgb(Colour c);
 /// The colour number RGB(r, g, b) gives.
 Colour rgbColour(int r, int g, int b);
@@ -36,11 +37,16 @@ struct Point {
   friend bool operator==(const Point&, const Point&) = default;
 };
 
-/// Text options of xyText.
+/// xyText's style bits, the constants fs_Bold, fs_Italic, fs_Underline, fs_StrikeOut (the
+/// names are confirmed by a published program, the values are rb's choice).
+constexpr int kFsBold = 1, kFsItalic = 2, kFsUnderline = 4, kFsStrikeOut = 8;
+
+/// Text options of xyText. The default is the font of print and xyString: Mono (Courier New's
+/// twin) at 10 points, 8 x 15 pixels a character.
 struct TextStyle {
-  int height = 16;            ///< pixel height of the font
-  bool bold = false, italic = false, underline = false;
-  std::optional<Colour> background;  ///< opaque background behind the characters
+  FontKey font;               ///< face, bold, italic, size in pixels
+  bool underline = false, strikeout = false;
+  std::optional<Colour> background;  ///< opaque background behind the characters' cells
 };
 
 /// One entry of the display list.
@@ -52,7 +58,8 @@ struct DrawOp {
     Ellipse,   ///< bounding box like Rect
     Polygon,   ///< points, width, colour, fill
     Pixel,     ///< points[0], colour
-    Text,      ///< points[0] top-left, text, style, colour
+    Text,      ///< points[0] top-left, points[1] bottom-right (exclusive) of its cells, text,
+               ///< style, colour, ascent (from the top to the baseline)
     Trail,     ///< a polyline the robot's pen drew: points, width, colour
     Raster,    ///< something with no vector form happened (flood fill, scrolling, restoreScr)
   };
@@ -69,6 +76,7 @@ struct DrawOp {
   int width = 1;
   std::string text;
   TextStyle style;
+  int ascent = 0;
 };
 
 class Canvas {
@@ -99,9 +107,13 @@ class Canvas {
   void polygon(const std::vector<Point>& pts, int width, std::optional<Colour> outline,
                std::optional<Colour> fill);
   void floodFill(int x, int y, Colour c);
-  /// Draws text with its top-left corner at (x, y); returns its width in pixels.
+  /// Draws text with the top-left corner of its first cell at (x, y); returns its width in
+  /// pixels (the sum of the characters' advances).
   int text(int x, int y, const std::string& s, const TextStyle& style, Colour c);
-  /// `print`: text at the text cursor, wrapping at the right edge and scrolling at the bottom.
+  /// The fonts this screen draws with (created when text is first drawn).
+  FontRenderer& fonts();
+  /// `print`: text at the text cursor in the print font (TextStyle's default: 100 columns of
+  /// 8 pixels, 40 lines of 15), wrapping at the right edge and scrolling at the bottom.
   void print(const std::string& s, bool newline);
   Point textCursor() const { return cursor_; }
 
@@ -164,6 +176,7 @@ class Canvas {
   int trailWidth_ = 1;
   Colour trailColour_ = 0;
   size_t trailOp_ = 0;        ///< the display-list entry the open trail last grew
+  std::unique_ptr<FontRenderer> fonts_;
 };
 
 }  // namespace rb
