@@ -104,6 +104,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   run.host->setSystem(run.sandbox.get());
   run.machine = std::make_unique<Machine>(*run.host, run.seed);
   run.machine->setObserver(observer);
+  run.machine->canvas().keepDisplayList(run.keepDisplayList);
   if (std::string why = connectRealRobot(opts, *run.machine); !why.empty()) {
     std::fprintf(stderr, "%s: %s\n", command, why.c_str());
     return exitcode::kIoError;

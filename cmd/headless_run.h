@@ -26,6 +26,8 @@ struct HeadlessRun {
   /// Set to false before runHeadless when reaching --max-steps is not a failure (rb render
   /// uses it to choose the moment of its picture): then it is neither printed nor exit 70.
   bool stepLimitIsError = true;
+  /// Set before runHeadless when the screen's display list is needed afterwards (an SVG).
+  bool keepDisplayList = false;
 };
 
 /// Builds the scripted input that --events and --keys give (script.given is false when neither
