@@ -20,6 +20,10 @@ HeadlessHost::HeadlessHost(std::FILE* out, std::istream& in, InputScript script)
 HeadlessHost::~HeadlessHost() { flush(); }
 
 void HeadlessHost::output(std::string_view text) {
+  if (outputHook) {
+    outputHook(text);
+    return;
+  }
   buffer_ += text;
   if (buffer_.size() >= kFlushAt) flush();
 }

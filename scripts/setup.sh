@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libcli11-dev catch2 libeigen3-dev libpng-dev libncurses-dev
+  libtomlplusplus-dev nlohmann-json3-dev   # rb test's assignment files (TOML) and JSON reports
+  libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
   console-setup-linux   # PSF console fonts: the font compiled into the canvas
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
