@@ -31,8 +31,8 @@ const std::vector<KindInfo>& kinds() {
       {Check::NoCrash, "no-crash", {}},
       {Check::Clean, "check", {"warnings", "target"}},
       {Check::EndsIn, "ends-in", {"rect", "circle"}},
-      {Check::Visits, "visits", {"points", "tolerance", "in-order"}},
-      {Check::Trail, "trail", {"points", "lines", "tolerance"}},
+      {Check::Visits, "visits", {"waypoints", "tolerance", "in-order"}},
+      {Check::Trail, "trail", {"path", "paths", "tolerance"}},
       {Check::Screen, "screen", {"reference", "tolerance"}},
       {Check::SolutionOutput, "solution-output", {}},
       {Check::SolutionTrail, "solution-trail", {"tolerance"}},
@@ -203,24 +203,24 @@ Check readCheck(const toml::table& t, const fs::path& dir) {
       break;
     }
     case Check::Visits: {
-      const toml::node* n = t.get("points");
-      if (!n) throw Bad{"a visits check needs points = [[x, y], ...]", t.source()};
-      c.targets = points(*n, "points");
+      const toml::node* n = t.get("waypoints");
+      if (!n) throw Bad{"a visits check needs waypoints = [[x, y], ...]", t.source()};
+      c.targets = points(*n, "waypoints");
       c.tolerance = tolerance(t, 5, false, where);
       if (const toml::node* o = t.get("in-order")) c.inOrder = boolean(*o, "in-order");
       break;
     }
     case Check::Trail: {
-      const toml::node* pts = t.get("points");
-      const toml::node* lines = t.get("lines");
-      if (!!pts == !!lines)
-        throw Bad{"a trail check needs either points = [[x, y], ...] (one line) or lines = [[[x, y], ...], ...]", t.source()};
-      if (pts) {
-        c.reference.push_back(points(*pts, "points"));
+      const toml::node* path = t.get("path");
+      const toml::node* paths = t.get("paths");
+      if (!!path == !!paths)
+        throw Bad{"a trail check needs either path = [[x, y], ...] (one line) or paths = [[[x, y], ...], ...]", t.source()};
+      if (path) {
+        c.reference.push_back(points(*path, "path"));
       } else {
-        const toml::array* arr = lines->as_array();
-        if (!arr || arr->empty()) throw Bad{"lines must be a list of lists of points", lines->source()};
-        for (const toml::node& l : *arr) c.reference.push_back(points(l, "each line"));
+        const toml::array* arr = paths->as_array();
+        if (!arr || arr->empty()) throw Bad{"paths must be a list of lists of points", paths->source()};
+        for (const toml::node& l : *arr) c.reference.push_back(points(l, "each path"));
       }
       c.tolerance = tolerance(t, 5, false, where);
       break;

@@ -116,28 +116,23 @@ std::string pixels(double v) {
 
 std::string outputDifference(const std::string& expected, const std::string& got, bool byLine) {
   if (expected == got) return "";
-  std::vector<std::string> want = splitLines(expected, byLine), have = splitLines(got, byLine);
+  // Lines as printed: a final newline ends the last line rather than starting an empty one.
+  std::vector<std::string> want = splitLines(expected, true), have = splitLines(got, true);
   size_t n = std::min(want.size(), have.size());
-  for (size_t i = 0; i < n; ++i) {
-    if (want[i] != have[i]) {
-      // A last line without its newline shows up here only in exact mode.
-      return "output differs at line " + std::to_string(i + 1) + ": expected " + quote(want[i]) +
-             ", got " + quote(have[i]);
-    }
-  }
-  if (want.size() > have.size()) {
-    if (!byLine && want.size() == have.size() + 1 && want.back().empty())
-      return "output lacks the newline at its end";
-    return "output ends after " + std::to_string(have.size()) + " line" + (have.size() == 1 ? "" : "s") +
-           "; expected " + std::to_string(want.size()) + ", the next being " + quote(want[have.size()]);
-  }
-  if (have.size() > want.size()) {
-    if (!byLine && have.size() == want.size() + 1 && have.back().empty())
-      return "output has a newline at its end that was not expected";
-    return "output has " + std::to_string(have.size()) + " lines, expected " + std::to_string(want.size()) +
-           "; line " + std::to_string(want.size() + 1) + " is " + quote(have[want.size()]);
-  }
-  return byLine ? "" : "output differs";
+  for (size_t i = 0; i < n; ++i)
+    if (want[i] != have[i])
+      return "output differs at line " + std::to_string(i + 1) + ": expected " + quote(want[i]) + ", got " +
+             quote(have[i]);
+  auto lines = [](size_t k) { return std::to_string(k) + " line" + (k == 1 ? "" : "s"); };
+  if (want.size() > have.size())
+    return "output ends after " + lines(have.size()) + "; expected " + std::to_string(want.size()) +
+           ", the next being " + quote(want[have.size()]);
+  if (have.size() > want.size())
+    return "output has " + lines(have.size()) + ", expected " + std::to_string(want.size()) + "; line " +
+           std::to_string(want.size() + 1) + " is " + quote(have[want.size()]);
+  if (byLine) return "";
+  bool wantNewline = !expected.empty() && expected.back() == '\n';
+  return wantNewline ? "output lacks the newline at its end" : "output ends with a newline that was not expected";
 }
 
 std::optional<PixelDifference> compareImages(const render::RgbImage& a, const render::RgbImage& b) {
