@@ -113,6 +113,13 @@ class Grader {
 
 std::string Grader::describeProcess(const JobOutcome& o, const Job& job) const {
   std::string text = describe(o, job);
+  if (o.kind == JobOutcome::TimedOut && assignment_) {
+    // The run had --timeout and did not stop itself by then (one statement ran long): say both.
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "did not finish: killed after %g s (the time limit is %g s)", job.timeoutSeconds,
+                  opts_.timeout.value_or(assignment_->timeout));
+    text = buf;
+  }
   if (o.kind == JobOutcome::Signalled && job.memoryBytes && !memoryLimitUnsupported() &&
       (o.signal == SIGABRT || o.signal == SIGSEGV || o.signal == SIGBUS))
     text += "; perhaps out of memory (the limit is " + std::to_string(job.memoryBytes >> 20) + " MB)";
