@@ -13,6 +13,7 @@
 #include "exit_codes.h"
 #include "headless_run.h"
 #include "record.h"
+#include "text.h"
 
 namespace rb::cli {
 
@@ -249,12 +250,14 @@ class TraceWriter : public RobotObserver {
     else writeText(r);
   }
 
+  /// JSON strings are UTF-8; a Windows program's Latin-1 text is converted (grade/text.h).
   void writeJson(const Record& r) {
+    using grade::toUtf8;
     Json j;
-    if (!program_.empty()) j["program"] = program_;
+    if (!program_.empty()) j["program"] = toUtf8(program_);
     j["seq"] = seq_;
     if (r.event != "end" || r.loc.valid()) {
-      j["file"] = fileName(r.loc);
+      j["file"] = toUtf8(fileName(r.loc));
       j["line"] = r.loc.line;
       if (r.event == "end" || r.event == "output") j["col"] = r.loc.col;
     }
@@ -262,20 +265,20 @@ class TraceWriter : public RobotObserver {
     if (r.event == "end") {
       j["status"] = r.status;
       if (!r.limit.empty()) j["limit"] = r.limit;
-      if (!r.text.empty()) j["message"] = r.text;
+      if (!r.text.empty()) j["message"] = toUtf8(r.text);
       if (!r.errors.empty()) {
         Json errors = Json::array();
         for (const grade::DiagRecord& e : r.errors)
-          errors.push_back({{"file", e.file}, {"line", e.line}, {"col", e.col}, {"message", e.message}});
+          errors.push_back({{"file", toUtf8(e.file)}, {"line", e.line}, {"col", e.col}, {"message", toUtf8(e.message)}});
         j["errors"] = errors;
       }
       if (r.steps) j["steps"] = *r.steps;
       if (r.exit) j["exit"] = *r.exit;
     } else if (r.event == "output") {
-      j["text"] = r.text;
+      j["text"] = toUtf8(r.text);
     } else {
       j["command"] = r.command;
-      j["args"] = argList(r.args);
+      j["args"] = argList(toUtf8(r.args));
     }
     if (r.hasPose) {
       j["x"] = rounded(r.pose.pos.x());

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <set>
 
+#include "text.h"
+
 namespace rb::grade {
 
 namespace {
@@ -89,6 +91,15 @@ std::set<Expected> expectedSet(const std::vector<DiagRecord>& diags, const char*
   std::set<Expected> out;
   for (const DiagRecord& d : diags)
     if (d.severity == severity) out.insert({baseName(d.file), d.line, d.message});
+  return out;
+}
+
+/// An expectation as the record carries it: its text in UTF-8 (see text.h).
+Expected utf8(const Expected& e) { return {toUtf8(e.file), e.line, toUtf8(e.message)}; }
+
+std::set<Expected> utf8(const std::set<Expected>& set) {
+  std::set<Expected> out;
+  for (const Expected& e : set) out.insert(utf8(e));
   return out;
 }
 
@@ -203,14 +214,15 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
     std::vector<DiagRecord> diags = r.checkDiags;
     if (checkArgsTarget(spec)) diags.insert(diags.end(), r.targetDiags.begin(), r.targetDiags.end());
     std::set<Expected> errors = expectedSet(diags, "error"), warnings = expectedSet(diags, "warning");
-    for (const Expected& e : spec.errors)
+    std::set<Expected> wantErrors = utf8(spec.errors), wantWarnings = utf8(spec.warnings);
+    for (const Expected& e : wantErrors)
       if (!errors.count(e)) fail("check", "rb check: missing error " + expectedText(e));
     for (const Expected& e : errors)
-      if (!spec.errors.count(e)) fail("check", "rb check: unexpected error " + expectedText(e));
-    for (const Expected& w : spec.warnings)
+      if (!wantErrors.count(e)) fail("check", "rb check: unexpected error " + expectedText(e));
+    for (const Expected& w : wantWarnings)
       if (!warnings.count(w)) fail("check", "rb check: missing warning " + expectedText(w));
     for (const Expected& w : warnings)
-      if (!spec.warnings.count(w)) fail("check", "rb check: unexpected warning " + expectedText(w));
+      if (!wantWarnings.count(w)) fail("check", "rb check: unexpected warning " + expectedText(w));
     int want = spec.errors.empty() ? 0 : 65;
     if (r.checkExit != want)
       fail("check", "rb check: exit status " + std::to_string(r.checkExit) + ", expected " + std::to_string(want));
@@ -227,7 +239,7 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
     if (!spec.errors.empty()) {
       want = 65;
       std::set<Expected> got = expectedSet(r.loadErrors, "error");
-      if (got != spec.errors) {
+      if (got != utf8(spec.errors)) {
         std::string list;
         for (const Expected& e : got) list += (list.empty() ? "" : "; ") + expectedText(e);
         fail("run", "rb run: errors differ from rb check's: " + (list.empty() ? "none" : list));
@@ -243,9 +255,9 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
       if (spec.runtime) {
         std::optional<Expected> got;
         if (r.error) got = Expected{baseName(r.error->file), r.error->line, r.error->message};
-        if (got != spec.runtime)
+        if (got != utf8(*spec.runtime))
           fail("runtime error", "runtime error " + (got ? expectedText(*got) : std::string("none")) +
-                                    ", expected " + expectedText(*spec.runtime) +
+                                    ", expected " + expectedText(utf8(*spec.runtime)) +
                                     (run.errors.empty() ? "" : "\n" + run.errors));
       } else if (!run.errors.empty() && spec.stderrHas.empty()) {
         fail("stderr", "unexpected standard error:\n" + run.errors);

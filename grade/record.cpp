@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "text.h"
+
 namespace rb::grade {
 
 using nlohmann::json;
@@ -66,9 +68,10 @@ void PathRecorder::robotEvent(const RobotEvent& e) {
 
 namespace {
 
+/// Messages can quote a Windows program's Latin-1 text: JSON carries it as UTF-8.
 json diagJson(const DiagRecord& d) {
-  return {{"file", d.file}, {"line", d.line}, {"col", d.col}, {"severity", d.severity},
-          {"message", d.message}};
+  return {{"file", toUtf8(d.file)}, {"line", d.line}, {"col", d.col}, {"severity", d.severity},
+          {"message", toUtf8(d.message)}};
 }
 
 DiagRecord diagFrom(const json& j) {

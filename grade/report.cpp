@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "text.h"
+
 namespace rb::grade {
 
 using nlohmann::json;
@@ -52,39 +54,7 @@ size_t width(const std::string& s) {
 std::string pad(const std::string& s, size_t w) { return s + std::string(w > width(s) ? w - width(s) : 0, ' '); }
 std::string padLeft(const std::string& s, size_t w) { return std::string(w > width(s) ? w - width(s) : 0, ' ') + s; }
 
-/// Valid UTF-8: bytes that are not UTF-8 are read as Latin-1 (RobotBASIC programs come from
-/// Windows); `xml` also replaces the control characters XML 1.0 forbids with U+FFFD.
-std::string cleanUtf8(const std::string& s, bool xml) {
-  static const std::string kReplacement = "\xEF\xBF\xBD";
-  std::string out;
-  size_t i = 0;
-  while (i < s.size()) {
-    unsigned char c = static_cast<unsigned char>(s[i]);
-    size_t len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
-    bool ok = len > 0 && i + len <= s.size();
-    uint32_t cp = len == 1 ? c : len == 2 ? c & 0x1F : len == 3 ? c & 0x0F : c & 0x07;
-    for (size_t k = 1; ok && k < len; ++k) {
-      unsigned char d = static_cast<unsigned char>(s[i + k]);
-      ok = (d & 0xC0) == 0x80;
-      cp = cp << 6 | (d & 0x3F);
-    }
-    if (ok) {
-      static const uint32_t minimum[] = {0, 0, 0x80, 0x800, 0x10000};
-      ok = cp >= minimum[len] && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF);
-    }
-    if (!ok) {  // not UTF-8: a byte of a Windows program's Latin-1 text
-      out += static_cast<char>(0xC0 | c >> 6);
-      out += static_cast<char>(0x80 | (c & 0x3F));
-      ++i;
-      continue;
-    }
-    bool allowed = !xml || (cp >= 0x20 ? cp != 0xFFFE && cp != 0xFFFF : (cp == 0x9 || cp == 0xA || cp == 0xD));
-    if (allowed) out.append(s, i, len);
-    else out += kReplacement;
-    i += len;
-  }
-  return out;
-}
+std::string cleanUtf8(const std::string& s, bool xml) { return toUtf8(s, xml); }
 
 json checksJson(const std::vector<CheckResult>& checks) {
   json out = json::array();
