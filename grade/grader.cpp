@@ -155,7 +155,8 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
     if (!hasOption(spec->args, "--seed")) job.argv.insert(job.argv.end(), {"--seed", std::to_string(seed)});
     if (opts_.maxSteps && !hasOption(spec->args, "--max-steps"))
       job.argv.insert(job.argv.end(), {"--max-steps", std::to_string(*opts_.maxSteps)});
-    job.timeoutSeconds = opts_.timeout.value_or(spec->timeout);
+    // As rb check and rb run each had the time limit, the child that does both gets twice it.
+    job.timeoutSeconds = 2 * opts_.timeout.value_or(spec->timeout);
     job.memoryBytes = kCommentMemoryMb << 20;
     stdinLines = spec->stdinLines;
   } else {
