@@ -24,6 +24,10 @@ HeadlessHost::HeadlessHost(std::FILE* out, std::istream& in, InputScript script)
 HeadlessHost::~HeadlessHost() { flush(); }
 
 void HeadlessHost::output(std::string_view text) {
+  if (outputHook) {
+    outputHook(text);
+    return;
+  }
   buffer_ += text;
   if (buffer_.size() >= kFlushAt) flush();
   // Output that cannot be written stops the program at once (runHeadless reports it, exit 74).

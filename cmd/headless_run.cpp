@@ -1,5 +1,6 @@
 #include "headless_run.h"
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -88,9 +89,15 @@ void reportSeed(const char* command, const RunOptions& opts, uint64_t seed, cons
                  static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed));
 }
 
+uint64_t countedSteps(const RunResult& result, uint64_t started) {
+  if (result.status == RunStatus::StepLimit) return result.steps;
+  return std::max(result.steps, started);
+}
+
 int runHeadless(const char* command, const RunOptions& opts, const CompileOptions& compile,
                 std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
-                std::function<void(SourceLoc)> onLine) {
+                std::function<void(SourceLoc)> onLine,
+                std::function<void(std::string_view)> onOutput) {
   if (int code = loadForRun(command, opts, compile, run.loaded)) return code;
 
   InputScript script;
@@ -99,6 +106,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   run.seed = runSeed(opts);
   run.host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
   run.host->lineHook = std::move(onLine);
+  run.host->outputHook = std::move(onOutput);
   run.host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
   run.sandbox = runSandbox(opts);
   run.host->setSystem(run.sandbox.get());

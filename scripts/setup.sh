@@ -7,6 +7,8 @@ packages=(
   cmake ninja-build g++ pkg-config
   libcli11-dev catch2 libeigen3-dev libpng-dev libncurses-dev
   libfreetype-dev fonts-liberation2   # text: FreeType rasterizes the Liberation fonts compiled into rb
+  libtomlplusplus-dev nlohmann-json3-dev   # rb test's assignment files (TOML) and JSON reports
+  libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks

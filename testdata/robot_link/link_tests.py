@@ -100,7 +100,8 @@ def case_square_trace(tmp):
     sim = trace("square.bas")
     with Emulator(tmp) as robot:
         real = trace("--real", "--port", robot.link, "square.bas")
-    expect(len(sim) == len(real) == 11, f"{len(sim)} and {len(real)} events, expected 11")
+    # 11 robot events and the end record.
+    expect(len(sim) == len(real) == 12, f"{len(sim)} and {len(real)} records, expected 12")
     for s, r in zip(sim, real):
         for key in ("event", "command", "args", "x", "y", "heading", "pen"):
             expect(s[key] == r[key], f"event {s['seq']}: {key} {s[key]!r} on the simulator, {r[key]!r} on the robot")
