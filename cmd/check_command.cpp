@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "lang/builtins.h"
+#include "machine/builtins.h"
 #include "lang/checker.h"
 #include "exit_codes.h"
 #include "program_loader.h"
@@ -33,7 +33,7 @@ const char* kindName(BuiltinKind k) {
 void listBuiltins(bool json) {
   if (json) std::printf("[\n");
   bool first = true;
-  for (const Builtin& b : builtinTable()) {
+  for (const Builtin& b : standardBuiltins().rows()) {
     std::string usage = std::string(b.name);
     if (b.kind == BuiltinKind::Function) usage += "(" + std::string(b.signature) + ")";
     else if (b.kind == BuiltinKind::Command && !b.signature.empty()) usage += " " + std::string(b.signature);

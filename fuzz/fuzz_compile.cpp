@@ -15,6 +15,7 @@
 #include "lang/compiler.h"
 #include "base/diagnostic.h"
 #include "lang/loader.h"
+#include "machine/builtins.h"
 
 namespace {
 
@@ -79,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   rb::LoadOptions options;
   options.libraryDirs.push_back("lib");  // so `#include "helpers.bas"` resolves through a lib dir
   std::unique_ptr<rb::LoadedProgram> loaded =
-      rb::loadProgram("fuzz.bas", text, reader, options, loadDiags);
+      rb::loadProgram("fuzz.bas", text, reader, rb::standardBuiltins(), options, loadDiags);
   if (!loaded) __builtin_trap();  // loadProgram promises a usable result
 
   for (bool lineTracing : {false, true}) {

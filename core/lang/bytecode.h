@@ -17,6 +17,8 @@
 
 namespace rb {
 
+class BuiltinTable;
+
 // Every instruction, in one list: the enum and the interpreter's dispatch table both come
 // from it. Operand use is given beside each.
 #define RB_OPCODES(X)                                                                        \
@@ -108,6 +110,8 @@ struct SubInfo {
 
 /// A compiled program: instructions, their source positions, constants and slot names.
 struct Program {
+  /// The built-ins CallBuiltin's index refers to (the table the program was compiled against).
+  const BuiltinTable* builtins = nullptr;
   std::vector<Instr> code;
   std::vector<SourceLoc> locs;         ///< one per instruction
   std::vector<Value> constants;

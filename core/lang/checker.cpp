@@ -58,7 +58,7 @@ void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
       local = nullptr;
       continue;
     }
-    ast::forEachName(*s, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
+    ast::forEachName(*s, program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
       bool globalName = isGlobalRef(name) || (arrays.count(name) && !params.count(name));
       ScopeUse* scope = local && !globalName ? local : &global;
       if (isGlobalRef(name)) name.remove_prefix(1);
@@ -116,36 +116,36 @@ std::string missingOnRb9(std::string_view name) {
   return "";
 }
 
-void checkExpr(const ast::Expr* e, DiagnosticList& diags) {
+void checkExpr(const ast::Expr* e, const BuiltinTable& builtins, DiagnosticList& diags) {
   if (!e) return;
   if (e->kind == ast::ExprKind::Call) {
-    if (const Builtin* b = findBuiltin(e->text, BuiltinKind::Function)) {
+    if (const Builtin* b = builtins.find(e->text, BuiltinKind::Function)) {
       std::string why = missingOnRb9(b->name);
       if (!why.empty()) diags.warning(e->loc, why);
     }
   }
-  for (const ast::Expr* a : e->args) checkExpr(a, diags);
+  for (const ast::Expr* a : e->args) checkExpr(a, builtins, diags);
 }
 
-void checkStmt(const ast::Stmt* s, DiagnosticList& diags) {
+void checkStmt(const ast::Stmt* s, const BuiltinTable& builtins, DiagnosticList& diags) {
   if (s->kind == ast::StmtKind::Command && !s->exprs.empty()) {
-    const Builtin* b = findBuiltin(s->name, BuiltinKind::Command);
+    const Builtin* b = builtins.find(s->name, BuiltinKind::Command);
     std::optional<double> n = constantNumber(s->exprs[0]);
     if (b && b->name == "rForward" && n && std::abs(*n) > kRb9MaxMove)
       diags.warning(s->loc, "rForward " + formatNumber(*n) +
                                 ": the RB-9 moves at most about 250 per command (the seed "
                                 "recommends staying below 200); use several shorter moves");
   }
-  checkExpr(s->target, diags);
-  checkExpr(s->value, diags);
-  for (const ast::Expr* e : s->exprs) checkExpr(e, diags);
-  for (const ast::Stmt* b : s->body) checkStmt(b, diags);
+  checkExpr(s->target, builtins, diags);
+  checkExpr(s->value, builtins, diags);
+  for (const ast::Expr* e : s->exprs) checkExpr(e, builtins, diags);
+  for (const ast::Stmt* b : s->body) checkStmt(b, builtins, diags);
 }
 
 }  // namespace
 
 void checkRb9Target(const LoadedProgram& program, DiagnosticList& diags) {
-  for (const ast::Stmt* s : program.stmts) checkStmt(s, diags);
+  for (const ast::Stmt* s : program.stmts) checkStmt(s, program.builtins, diags);
 }
 
 }  // namespace rb

@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <map>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -64,9 +65,10 @@ class Compiler {
  public:
   Compiler(const LoadedProgram& lp, const CompileOptions& options, DiagnosticList& diags,
            Program& out)
-      : lp_(lp), options_(options), diags_(diags), p_(out) {}
+      : lp_(lp), builtins_(lp.builtins), options_(options), diags_(diags), p_(out) {}
 
   void run() {
+    p_.builtins = &builtins_;
     p_.lineTracing = options_.lineTracing;
     declare();
     scope_ = &global_;
@@ -126,8 +128,8 @@ class Compiler {
                       "'" + std::string(s->name) + "' was first defined here");
           continue;
         }
-        if (findBuiltin(s->name, BuiltinKind::Function) || findBuiltin(s->name, BuiltinKind::Command))
-          diags_.error(s->nameLoc, "sub '" + std::string(s->name) + "' has the name of a built-in");
+        if (std::optional<std::string> why = builtins_.misuse(s->name, NamePlace::Sub))
+          diags_.error(s->nameLoc, std::move(*why));
         SubInfo info;
         info.name = std::string(s->name);
         info.loc = s->nameLoc;
@@ -183,7 +185,7 @@ class Compiler {
     for (size_t i = index + 1; i < lp_.stmts.size(); ++i) {
       const Stmt* b = lp_.stmts[i];
       if (b->kind == StmtKind::Sub || b->kind == StmtKind::EndSub || b->loc.file != s.loc.file) break;
-      ast::forEachName(*b, [&](std::string_view name, SourceLoc, ast::NameUse) {
+      ast::forEachName(*b, builtins_, [&](std::string_view name, SourceLoc, ast::NameUse) {
         if (!isGlobalRef(name) && !arrays_.count(name)) addLocal(name);  // arrays are global
       }, byRef);
       if (b->kind == StmtKind::For) {
@@ -329,6 +331,16 @@ class Compiler {
   [[noreturn]] void fail(SourceLoc loc, std::string message) {
     diags_.error(loc, std::move(message));
     throw CompileError{};
+  }
+
+  /// Fails when `name` is a built-in's and cannot stand at `place` (the rule is
+  /// BuiltinTable::misuse).
+  void checkName(std::string_view name, SourceLoc loc, NamePlace place) {
+    if (std::optional<std::string> why = builtins_.misuse(name, place)) fail(loc, std::move(*why));
+  }
+  /// A target that receives a value: a variable, or an element of an array.
+  void checkTarget(const Expr& target) {
+    checkName(target.text, target.loc, target.kind == ExprKind::Index ? NamePlace::Array : NamePlace::Store);
   }
 
   // ---------------------------------------------------------------- statements
@@ -477,8 +489,7 @@ class Compiler {
       case StmtKind::Call: callStmt(s); break;
       case StmtKind::Dim: dim(s); break;
       case StmtKind::Data: {
-        if (findAnyBuiltin(s.name))
-          fail(s.nameLoc, "cannot store into '" + std::string(s.name) + "': it is a built-in name");
+        checkName(s.name, s.nameLoc, NamePlace::Array);
         uint32_t arr = variable(s.name);
         for (const Expr* e : s.exprs) {
           uint32_t v = expr(e);
@@ -578,9 +589,9 @@ class Compiler {
   }
 
   void forStmt(const Stmt& s) {
-    if (findAnyBuiltin(s.target->text))  // reported, but the loop still pairs with its next
-      diags_.error(s.target->loc, "cannot use '" + std::string(s.target->text) +
-                                      "' as a loop variable: it is a built-in name");
+    // Reported, but the loop still pairs with its next.
+    if (std::optional<std::string> why = builtins_.misuse(s.target->text, NamePlace::Store))
+      diags_.error(s.target->loc, std::move(*why));
     uint32_t var = variable(s.target->text);
     uint32_t limit;
     if (inSub()) {
@@ -616,6 +627,7 @@ class Compiler {
 
   void assign(const Stmt& s) {
     const Expr* t = s.target;
+    checkTarget(*t);
     if (t->kind == ExprKind::Var) {
       uint32_t var = variable(t->text);
       switch (s.op) {
@@ -687,6 +699,7 @@ class Compiler {
   }
 
   void input(const Stmt& s) {
+    checkTarget(*s.target);
     uint32_t prompt = 0;
     uint32_t hasPrompt = 0;
     if (s.value) {
@@ -706,8 +719,7 @@ class Compiler {
 
   void dim(const Stmt& s) {
     for (const Expr* e : s.exprs) {
-      if (findAnyBuiltin(e->text))
-        fail(e->loc, "cannot dim '" + std::string(e->text) + "': it is a built-in name");
+      checkName(e->text, e->loc, NamePlace::Array);
       uint32_t var = variable(e->text);
       if (e->kind == ExprKind::Var) {
         emit(Op::Move, var, intConst(0), 0, e->loc);
@@ -761,8 +773,7 @@ class Compiler {
           if (a->kind != ExprKind::Var && a->kind != ExprKind::Index)
             fail(a->loc, "argument " + std::to_string(i + 1) + " of " + std::string(b.name) +
                              " must be a variable: it receives " + std::string(b.param(n, i).name));
-          if (findAnyBuiltin(a->text))
-            fail(a->loc, "cannot store into '" + std::string(a->text) + "': it is a built-in name");
+          checkTarget(*a);
           outputs[static_cast<size_t>(i)] = a;
           emit(Op::Move, first + static_cast<uint32_t>(i), intConst(0), 0, a->loc);
         } else {
@@ -770,7 +781,7 @@ class Compiler {
         }
       }
     }
-    emit(Op::CallBuiltin, builtinIndex(&b), first, dest, loc, static_cast<uint16_t>(n));
+    emit(Op::CallBuiltin, builtins_.indexOf(b), first, dest, loc, static_cast<uint16_t>(n));
     for (size_t i = 0; i < outputs.size(); ++i) {
       if (!outputs[i]) continue;
       store(*outputs[i], first + static_cast<uint32_t>(i));
@@ -789,7 +800,7 @@ class Compiler {
   }
 
   void command(const Stmt& s) {
-    const Builtin* b = findBuiltin(s.name, BuiltinKind::Command);
+    const Builtin* b = builtins_.find(s.name, BuiltinKind::Command);
     if (!b) fail(s.nameLoc, "unknown command '" + std::string(s.name) + "'");
     callBuiltin(*b, s.exprs, b->printList ? &s.seps : nullptr, kNoOperand, s.nameLoc);
   }
@@ -799,21 +810,12 @@ class Compiler {
     if (it != subIndex_.end()) return p_.subs[it->second];
     std::vector<std::string_view> names;
     for (const SubInfo& si : p_.subs) names.push_back(si.name);
-    std::string msg;
-    std::string hint;
-    if (asFunction) {
-      for (const Builtin& bi : builtinTable())
-        if (bi.kind == BuiltinKind::Function) names.push_back(bi.name);
-      msg = "unknown function '" + std::string(name) + "'";
-      hint = closestMatch(name, names, true);
-      if (findBuiltin(name, BuiltinKind::Command))
-        msg = "'" + std::string(name) + "' is a command, not a function: write it as a statement";
-    } else {
-      for (const Builtin& bi : builtinTable())
-        if (bi.kind == BuiltinKind::Command) names.push_back(bi.name);
-      msg = "unknown command or sub '" + std::string(name) + "'";
-      hint = closestMatch(name, names, true);
-    }
+    checkName(name, loc, asFunction ? NamePlace::Call : NamePlace::Sub);
+    const auto& builtinNames = builtins_.names(asFunction ? BuiltinKind::Function : BuiltinKind::Command);
+    names.insert(names.end(), builtinNames.begin(), builtinNames.end());
+    std::string msg = asFunction ? "unknown function '" + std::string(name) + "'"
+                                 : "unknown command or sub '" + std::string(name) + "'";
+    std::string hint = closestMatch(name, names, true);
     if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
     fail(loc, msg);
   }
@@ -831,9 +833,10 @@ class Compiler {
     for (uint32_t i = 0; i < n; ++i) {
       const Expr* a = args[i];
       if (sub.byRef[i]) {
-        if (a->kind != ExprKind::Var || findAnyBuiltin(a->text))
+        if (a->kind != ExprKind::Var)
           fail(a->loc, "argument " + std::to_string(i + 1) + " of " + sub.name +
                            " is passed by reference (&): it must be a variable");
+        checkName(a->text, a->loc, NamePlace::Store);
       }
       if (sub.byRef[i]) {
         // A by-reference argument may be an output: it need not have a value yet.
@@ -870,17 +873,12 @@ class Compiler {
       case ExprKind::Float: return constant(Value::number(e->dval));
       case ExprKind::Str: return constant(Value::string(std::string(e->text)));
       case ExprKind::Var: {
-        if (const Builtin* b = findAnyBuiltin(e->text)) {
-          if (b->kind == BuiltinKind::Constant) return intConst(b->constant);
-          if (b->kind == BuiltinKind::Function)
-            fail(e->loc, "'" + std::string(b->name) + "' is a function: write " + std::string(b->name) + "()");
-          fail(e->loc, "'" + std::string(b->name) + "' is a command and has no value");
-        }
+        if (const Builtin* c = builtins_.find(e->text, BuiltinKind::Constant)) return intConst(c->constant);
+        checkName(e->text, e->loc, NamePlace::Value);
         return variable(e->text);
       }
       case ExprKind::Index: {
-        if (findAnyBuiltin(e->text))
-          fail(e->loc, "'" + std::string(e->text) + "' is a built-in name, not an array");
+        checkName(e->text, e->loc, NamePlace::Array);
         uint32_t arr = variable(e->text);
         auto [idx, n] = indices(*e);
         uint32_t d = dest != kNoOperand ? dest : temp();
@@ -889,7 +887,7 @@ class Compiler {
       }
       case ExprKind::Call: {
         uint32_t d = dest != kNoOperand ? dest : temp();
-        if (const Builtin* b = findBuiltin(e->text, BuiltinKind::Function)) {
+        if (const Builtin* b = builtins_.find(e->text, BuiltinKind::Function)) {
           callBuiltin(*b, e->args, nullptr, d, e->loc);
           return d;
         }
@@ -1059,6 +1057,7 @@ class Compiler {
   }
 
   const LoadedProgram& lp_;
+  const BuiltinTable& builtins_;
   const CompileOptions& options_;
   DiagnosticList& diags_;
   Program& p_;

@@ -1,6 +1,7 @@
 #include "lang/parser.h"
 
 #include <cctype>
+#include <optional>
 #include <string>
 
 #include "lang/builtins.h"
@@ -48,8 +49,9 @@ struct SyntaxError {};
 
 class Parser {
  public:
-  Parser(const std::vector<Token>& toks, ast::Arena& arena, DiagnosticList& diags)
-      : toks_(toks), arena_(arena), diags_(diags) {}
+  Parser(const std::vector<Token>& toks, ast::Arena& arena, const BuiltinTable& builtins,
+         DiagnosticList& diags)
+      : toks_(toks), arena_(arena), builtins_(builtins), diags_(diags) {}
 
   std::vector<Stmt*> run() {
     std::vector<Stmt*> out;
@@ -449,11 +451,10 @@ class Parser {
     const Token& name = cur();
     Tok next = peek().kind;
     if (isAssignOp(next) || next == Tok::LBracket) return assignment();
-    if (const Builtin* b = findBuiltin(name.text, BuiltinKind::Command)) return command(*b);
+    if (const Builtin* b = builtins_.find(name.text, BuiltinKind::Command)) return command(*b);
+    if (std::optional<std::string> why = builtins_.misuse(name.text, NamePlace::Statement))
+      fail(name.loc, std::move(*why));
     if (next == Tok::LParen) {
-      if (const Builtin* f = findBuiltin(name.text, BuiltinKind::Function))
-        fail(name.loc, "'" + std::string(f->name) + "' is a function: use its value, as in x = " +
-                           std::string(f->name) + "(...)");
       Stmt* s = newStmt(StmtKind::Call, name.loc);
       s->name = name.text;
       s->nameLoc = name.loc;
@@ -463,13 +464,8 @@ class Parser {
       expect(Tok::RParen, "')' to close the argument list");
       return s;
     }
-    if (const Builtin* f = findBuiltin(name.text, BuiltinKind::Function))
-      fail(name.loc, "'" + std::string(f->name) + "' is a function: use its value, as in x = " +
-                         std::string(f->name) + "(...)");
-    if (findBuiltin(name.text, BuiltinKind::Constant))
-      fail(name.loc, "'" + std::string(name.text) + "' is a constant, not a command");
     std::string msg = "unknown command '" + std::string(name.text) + "'";
-    std::string hint = suggestCommand(name.text);
+    std::string hint = suggestCommand(builtins_, name.text);
     if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
     fail(name.loc, msg);
   }
@@ -477,11 +473,6 @@ class Parser {
   // assignment -> lvalue ('=' | '+=' | '-=' | '*=' | '/=') expr | lvalue ('++' | '--')
   Stmt* assignment() {
     SourceLoc loc = cur().loc;
-    if (const Builtin* b = findAnyBuiltin(cur().text)) {
-      const char* what = b->kind == BuiltinKind::Constant ? "a built-in constant"
-                         : b->kind == BuiltinKind::Command ? "a command" : "a built-in function";
-      fail(loc, "cannot assign to '" + std::string(cur().text) + "': it is " + what);
-    }
     Stmt* s = newStmt(StmtKind::Assign, loc);
     s->target = lvalue();
     if (!isAssignOp(cur().kind)) failHere("'=' in an assignment");
@@ -549,8 +540,6 @@ class Parser {
   // lvalue -> name | name '[' expr {',' expr} ']'
   Expr* lvalue() {
     const Token& name = expect(Tok::Ident, "a variable name");
-    if (findBuiltin(name.text, BuiltinKind::Constant))
-      fail(name.loc, "cannot assign to '" + std::string(name.text) + "': it is a built-in constant");
     Expr* e = varExpr(name);
     if (accept(Tok::LBracket)) {
       e->kind = ExprKind::Index;
@@ -680,6 +669,7 @@ class Parser {
 
   const std::vector<Token>& toks_;
   ast::Arena& arena_;
+  const BuiltinTable& builtins_;
   DiagnosticList& diags_;
   size_t pos_ = 0;
   int depth_ = 0;
@@ -688,8 +678,8 @@ class Parser {
 }  // namespace
 
 std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena& arena,
-                                    DiagnosticList& diags) {
-  return Parser(tokens, arena, diags).run();
+                                    const BuiltinTable& builtins, DiagnosticList& diags) {
+  return Parser(tokens, arena, builtins, diags).run();
 }
 
 }  // namespace rb

@@ -248,7 +248,7 @@ uint32_t Interpreter::doReturn(const Instr& in) {
 }
 
 void Interpreter::doCallBuiltin(const Instr& in, uint32_t pc) {
-  const Builtin& b = builtinTable()[in.a];
+  const Builtin& b = prog_.builtins->at(in.a);
   m_.setLocation(prog_.locs[pc]);
   Args args(b, &RM(in.b), in.n);
   Value r = b.fn(m_, args);
