@@ -121,6 +121,30 @@ class Parser {
     if (!diags_.hasErrorOnLine(loc.file, loc.line)) diags_.error(loc, std::move(message));
     throw SyntaxError{};
   }
+  /// One level of nesting (a parenthesis, an operator's operand, a single-line if's
+  /// statements) while it lives. The count goes down however the level is left, also when a
+  /// syntax error unwinds through it, so an error on one line leaves no depth behind for the
+  /// next.
+  class Nested {
+   public:
+    Nested(Parser& p, SourceLoc loc) : p_(p) {
+      if (p_.depth_ >= kMaxNesting) p_.fail(loc, "expression nested too deeply");
+      ++p_.depth_;
+    }
+    ~Nested() { --p_.depth_; }
+    Nested(const Nested&) = delete;
+    Nested& operator=(const Nested&) = delete;
+
+   private:
+    Parser& p_;
+  };
+  /// Runs `parse` one level deeper.
+  template <typename F>
+  auto nested(SourceLoc loc, F parse) {
+    Nested level(*this, loc);
+    return parse();
+  }
+
   [[noreturn]] void failHere(const std::string& expected) {
     std::string found(tokName(cur().kind));
     if (cur().kind == Tok::Ident) found = quoted(cur().text);
@@ -359,10 +383,9 @@ class Parser {
     if (!then) failHere("'then' or the end of the line after the if condition");
     Stmt* s = newStmt(StmtKind::IfLine, loc);
     s->value = cond;
-    enter(loc);
+    Nested level(*this, loc);
     s->body.push_back(statement(true));
     if (accept(Tok::KwElse)) s->body.push_back(statement(true));
-    leave();
     return s;
   }
 
@@ -560,9 +583,7 @@ class Parser {
       if (info.prec == 0 || info.prec < minPrec) return left;
       SourceLoc loc = cur().loc;
       ++pos_;
-      enter(loc);
-      Expr* right = binary(info.rightAssoc ? info.prec : info.prec + 1);
-      leave();
+      Expr* right = nested(loc, [&] { return binary(info.rightAssoc ? info.prec : info.prec + 1); });
       Expr* e = arena_.expr();
       e->kind = ExprKind::Binary;
       e->op = op;
@@ -578,9 +599,7 @@ class Parser {
     if (k == Tok::Minus || k == Tok::Plus || k == Tok::KwNot || k == Tok::Bang || k == Tok::Tilde) {
       SourceLoc loc = cur().loc;
       ++pos_;
-      enter(loc);
-      Expr* operand = unary();
-      leave();
+      Expr* operand = nested(loc, [&] { return unary(); });
       // Fold a minus sign into a number literal so that -5 is a constant.
       if (k == Tok::Minus && operand->kind == ExprKind::Int && operand->ival != INT64_MIN) {
         operand->ival = -operand->ival;
@@ -626,9 +645,7 @@ class Parser {
         return e;
       case Tok::LParen: {
         ++pos_;
-        enter(t.loc);
-        Expr* inner = expression();
-        leave();
+        Expr* inner = nested(t.loc, [&] { return expression(); });
         expect(Tok::RParen, "')'");
         return inner;
       }
@@ -637,17 +654,13 @@ class Parser {
         ++pos_;
         if (accept(Tok::LParen)) {
           e->kind = ExprKind::Call;
-          enter(t.loc);
-          if (!at(Tok::RParen)) argList(e->args);
-          leave();
+          if (!at(Tok::RParen)) nested(t.loc, [&] { argList(e->args); });
           expect(Tok::RParen, "')' to close the argument list");
           return e;
         }
         if (accept(Tok::LBracket)) {
           e->kind = ExprKind::Index;
-          enter(t.loc);
-          argList(e->args);
-          leave();
+          nested(t.loc, [&] { argList(e->args); });
           expect(Tok::RBracket, "']' to close the index");
           return e;
         }
@@ -662,10 +675,6 @@ class Parser {
     failHere("an expression");
   }
 
-  void enter(SourceLoc loc) {
-    if (++depth_ > kMaxNesting) fail(loc, "expression nested too deeply");
-  }
-  void leave() { --depth_; }
 
   const std::vector<Token>& toks_;
   ast::Arena& arena_;
