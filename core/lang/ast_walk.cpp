@@ -111,6 +111,28 @@ void forEachName(const Stmt& s, const BuiltinTable& builtins, const Visit& visit
   }
 }
 
+std::vector<SubSpan> subSpans(const std::vector<Stmt*>& stmts) {
+  std::vector<SubSpan> spans;
+  for (size_t i = 0; i < stmts.size(); ++i) {
+    if (stmts[i]->kind != StmtKind::Sub) continue;
+    SubSpan span{i, stmts.size(), SubEnd::EndOfFile};
+    for (size_t j = i + 1; j < stmts.size(); ++j) {
+      const Stmt* s = stmts[j];
+      if (s->loc.file != stmts[i]->loc.file) {
+        span = {i, j, SubEnd::EndOfFile};
+        break;
+      }
+      if (s->kind == StmtKind::Sub || s->kind == StmtKind::EndSub) {
+        span = {i, j, s->kind == StmtKind::Sub ? SubEnd::NextSub : SubEnd::EndSub};
+        break;
+      }
+    }
+    spans.push_back(span);
+    i = span.end - 1;  // the next sub starts at `end` at the earliest
+  }
+  return spans;
+}
+
 namespace {
 void indexedNames(const Expr* e, std::unordered_set<std::string_view>& out) {
   if (!e) return;
