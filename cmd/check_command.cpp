@@ -6,6 +6,7 @@
 
 #include "machine/builtins.h"
 #include "lang/checker.h"
+#include "lang/code_dump.h"
 #include "exit_codes.h"
 #include "program_loader.h"
 
@@ -18,6 +19,7 @@ struct CheckOptions {
   std::string format = "text";
   bool werror = false;
   bool listBuiltins = false;
+  bool dumpCode = false;  ///< also print each program's compiled code
   std::string target;  ///< "rb9": also warn about what the RB-9 robot cannot do
 };
 
@@ -63,6 +65,10 @@ int executeCheck(const CheckOptions& opts) {
     std::fprintf(stderr, "rb check: no files given (see rb check --help)\n");
     return exitcode::kUsage;
   }
+  if (opts.dumpCode && json) {
+    std::fprintf(stderr, "rb check: --dump-code prints text; leave out --format json\n");
+    return exitcode::kUsage;
+  }
   size_t errors = 0, warnings = 0;
   bool missing = false;
   bool firstJson = true;
@@ -95,6 +101,10 @@ int executeCheck(const CheckOptions& opts) {
     } else {
       printDiagnostics(stdout, loaded.program->sources, loaded.diags, false);
     }
+    if (opts.dumpCode && loaded.compiled) {
+      std::string code = dumpCode(*loaded.compiled, loaded.program->sources);
+      std::fwrite(code.data(), 1, code.size(), stdout);
+    }
   }
   if (json) std::printf("%s]\n", firstJson ? "" : "\n");
   std::fflush(stdout);
@@ -119,6 +129,9 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember({"rb9"}));
   check->add_flag("--list-builtins", opts->listBuiltins,
                   "List every built-in command, function and constant, then exit");
+  check->add_flag("--dump-code", opts->dumpCode,
+                  "Also print each program's compiled code: one instruction a line, with its "
+                  "operands, jump targets, labels, subs and source lines");
   check->footer(
       "Reports every error rb run would reject before running, plus warnings: variables read but "
       "never assigned, blocks left open. Exit status: 0 no errors, 65 errors (or warnings with "

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "lang/checker.h"
+#include "lang/code_dump.h"
 #include "lang/compiler.h"
 #include "base/diagnostic.h"
 #include "lang/loader.h"
@@ -90,6 +91,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::unique_ptr<rb::Program> program = rb::compileProgram(*loaded, compileOptions, diags);
     // The contract of compileProgram: a program exactly when there are no errors.
     if ((program != nullptr) == diags.hasErrors()) __builtin_trap();
+    if (program) sink += rb::dumpCode(*program, loaded->sources).size();  // the dump reads every operand
     if (!lineTracing) rb::lintProgram(*loaded, diags);
     formatAll(loaded->sources, diags);
   }

@@ -77,6 +77,16 @@ enum class Op : uint8_t {
 #undef RB_OPCODE_ENUM
 };
 
+/// An opcode's name as RB_OPCODES spells it ("JumpIfNotLt"), for the code dump.
+inline const char* opName(Op op) {
+  static constexpr const char* kNames[] = {
+#define RB_OPCODE_NAME(name) #name,
+      RB_OPCODES(RB_OPCODE_NAME)
+#undef RB_OPCODE_NAME
+  };
+  return kNames[static_cast<uint8_t>(op)];
+}
+
 constexpr uint8_t kMoveMayBeUnassigned = 1;
 
 struct Instr {
@@ -101,11 +111,18 @@ struct SubInfo {
   std::string name;
   SourceLoc loc;
   uint32_t entry = 0;        ///< first instruction of the body
+  uint32_t end = 0;          ///< one past the body's last instruction (its final Return)
   uint32_t paramCount = 0;
   uint32_t frameSize = 0;    ///< parameters + locals + temporaries
   uint32_t localCount = 0;   ///< parameters + locals (named slots)
   std::vector<std::string> slotNames;  ///< names of the named frame slots
   std::vector<bool> byRef;
+};
+
+/// A label of the program and the instruction it stands for (for the code dump).
+struct LabelEntry {
+  std::string name;
+  uint32_t pc = 0;
 };
 
 /// A compiled program: instructions, their source positions, constants and slot names.
@@ -120,6 +137,7 @@ struct Program {
   uint32_t mainFrameSize = 0;          ///< temporaries of code outside subs
   std::vector<SubInfo> subs;
   std::vector<std::vector<Tok>> separatorLists;  ///< for Print/Format
+  std::vector<LabelEntry> labels;      ///< in order of name
   bool lineTracing = false;
 };
 

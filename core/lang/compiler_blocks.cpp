@@ -250,7 +250,10 @@ void Compiler::label(const Stmt& s) {
 
 void Compiler::resolveLabels() {
   std::vector<std::string_view> names;
-  for (const auto& [name, info] : labels_) names.push_back(name);
+  for (const auto& [name, info] : labels_) {
+    names.push_back(name);
+    if (info.placed) p_.labels.push_back({std::string(name), info.target.pc});
+  }
   for (const LabelFixup& f : labelFixups_) {
     auto it = labels_.find(f.name);
     if (it == labels_.end()) {

@@ -69,6 +69,7 @@ void Compiler::endSub(SourceLoc loc) {
   if (subScope_.sub >= 0) {
     SubInfo& info = p_.subs[static_cast<size_t>(subScope_.sub)];
     info.frameSize = subScope_.localCount + subScope_.maxTemp;
+    info.end = static_cast<uint32_t>(p_.code.size());
   }
   scope_ = &global_;
   patch(subSkip_, placeTarget());
