@@ -102,8 +102,6 @@ class Dumper {
     }
   }
 
-  static bool isCompareJump(Op op) { return op >= Op::JumpIfNotLt && op <= Op::JumpIfNe; }
-
   void instruction(uint32_t pc) {
     const Instr& in = p_.code[pc];
     char head[40];
@@ -112,21 +110,8 @@ class Dumper {
     std::string line = head;
     line += operands(in);
     while (!line.empty() && line.back() == ' ') line.pop_back();
-    if (isTransfer(in.op) && in.n != 0)
-      line += "  (steps " + std::to_string(static_cast<int16_t>(in.n)) + ")";
+    if (isTransfer(in.op) && in.steps != 0) line += "  (steps " + std::to_string(in.steps) + ")";
     out_ += line + "\n";
-  }
-
-  /// Instructions that report the statements counted since the previous transfer (in `n`).
-  static bool isTransfer(Op op) {
-    switch (op) {
-      case Op::Jump: case Op::JumpIfFalse: case Op::JumpIfTrue: case Op::ForPrep:
-      case Op::ForLoop: case Op::Gosub: case Op::Return: case Op::CallSub: case Op::Steps:
-      case Op::End:
-        return true;
-      default:
-        return isCompareJump(op);
-    }
   }
 
   std::string operands(const Instr& in) const {
@@ -145,9 +130,9 @@ class Dumper {
         return "-> " + std::to_string(in.a);
       case Op::JumpIfFalse: case Op::JumpIfTrue:
         return r(in.b) + " -> " + std::to_string(in.a);
-      case Op::JumpIfNotLt: case Op::JumpIfNotLe: case Op::JumpIfNotGt: case Op::JumpIfNotGe:
-      case Op::JumpIfNotEq: case Op::JumpIfNotNe: case Op::JumpIfLt: case Op::JumpIfLe:
-      case Op::JumpIfGt: case Op::JumpIfGe: case Op::JumpIfEq: case Op::JumpIfNe:
+      case Op::JumpIfNotEq: case Op::JumpIfNotNe: case Op::JumpIfNotLt: case Op::JumpIfNotLe:
+      case Op::JumpIfNotGt: case Op::JumpIfNotGe: case Op::JumpIfEq: case Op::JumpIfNe:
+      case Op::JumpIfLt: case Op::JumpIfLe: case Op::JumpIfGt: case Op::JumpIfGe:
         return r(in.b) + ", " + r(in.c) + " -> " + std::to_string(in.a);
       case Op::ForPrep:
         return r(in.a) + " from, " + r(in.b) + " to, " + r(in.b + 1) + " step, exit -> " +
@@ -167,20 +152,20 @@ class Dumper {
         std::string name = p_.builtins && in.a < p_.builtins->rows().size()
                                ? std::string(p_.builtins->at(in.a).name)
                                : "builtin " + std::to_string(in.a);
-        return name + "(" + range(in.b, in.n) + ")" + result(in.c);
+        return name + "(" + range(in.b, in.count) + ")" + result(in.c);
       }
       case Op::IndexGet:
-        return r(in.a) + ", " + r(in.b) + "[" + range(in.c, in.n) + "]";
+        return r(in.a) + ", " + r(in.b) + "[" + range(in.c, in.count) + "]";
       case Op::IndexSet:
-        return r(in.a) + "[" + range(in.c, in.n) + "], " + r(in.b);
+        return r(in.a) + "[" + range(in.c, in.count) + "], " + r(in.b);
       case Op::Dim:
-        return r(in.a) + "[" + range(in.c, in.n) + "]";
+        return r(in.a) + "[" + range(in.c, in.count) + "]";
       case Op::DataAppend:
         return r(in.a) + ", " + r(in.b);
       case Op::Print:
-        return range(in.b, in.n) + separators(in.c, true);
+        return range(in.b, in.count) + separators(in.c, true);
       case Op::Format:
-        return r(in.a) + ", " + range(in.b, in.n) + separators(in.c, false);
+        return r(in.a) + ", " + range(in.b, in.count) + separators(in.c, false);
       case Op::Input:
         return r(in.a) + (in.c ? ", prompt " + r(in.b) : "");
       case Op::Steps:

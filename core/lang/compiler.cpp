@@ -170,7 +170,7 @@ uint32_t Compiler::emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc
   in.a = a;
   in.b = b;
   in.c = c;
-  in.n = count;
+  in.count = count;
   p_.code.push_back(in);
   p_.locs.push_back(loc);
   return static_cast<uint32_t>(p_.code.size() - 1);
@@ -178,9 +178,10 @@ uint32_t Compiler::emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc
 
 /// Emits a control transfer carrying the statements counted since the previous one.
 uint32_t Compiler::emitTransfer(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc) {
-  auto n = static_cast<uint16_t>(static_cast<int16_t>(pending_));
+  uint32_t pc = emit(op, a, b, c, loc);
+  p_.code[pc].steps = static_cast<int16_t>(pending_);
   pending_ = 0;
-  return emit(op, a, b, c, loc, n);
+  return pc;
 }
 
 /// The address of the next instruction, as a jump target.
@@ -190,15 +191,14 @@ Target Compiler::placeTarget() {
 }
 
 void Compiler::flushSteps() {
-  emit(Op::Steps, 0, 0, 0, lastLoc(), static_cast<uint16_t>(pending_));
-  pending_ = 0;
+  emitTransfer(Op::Steps, 0, 0, 0, lastLoc());
 }
 
 void Compiler::patch(uint32_t pc, Target t) {
   Instr& in = p_.code[pc];
   if (in.op == Op::ForPrep || in.op == Op::ForLoop) in.c = t.pc;
   else in.a = t.pc;
-  in.n = static_cast<uint16_t>(static_cast<int16_t>(static_cast<int16_t>(in.n) - t.pending));
+  in.steps = static_cast<int16_t>(in.steps - t.pending);
 }
 
 void Compiler::patchAll(const std::vector<uint32_t>& pcs, Target t) {
