@@ -303,9 +303,15 @@ RunResult Interpreter::run(const RunLimits& limits) {
                                 std::string("stopped after ") + secs + " seconds (the --timeout limit)"};
     }
   } catch (const RuntimeError& e) {
-    result.status = RunStatus::RuntimeError;
-    SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
-    result.error = Diagnostic{Severity::Error, loc, e.what()};
+    if (m_.host().stopRequested()) {
+      // The host ended the run inside a call (the user quit while the program waited for
+      // input): what the call made of that is not the program's error.
+      result.status = RunStatus::Stopped;
+    } else {
+      result.status = RunStatus::RuntimeError;
+      SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
+      result.error = Diagnostic{Severity::Error, loc, e.what()};
+    }
   } catch (const std::bad_alloc&) {
     result.status = RunStatus::RuntimeError;
     SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
@@ -330,7 +336,7 @@ bool Interpreter::checkpoint() {
     stopStatus_ = RunStatus::Timeout;
     return false;
   }
-  if (!m_.host().poll()) {
+  if (!m_.host().poll() || m_.host().stopRequested()) {
     chunk_ = stepsLeft_ = 0;
     stopStatus_ = RunStatus::Stopped;
     return false;
@@ -459,6 +465,17 @@ void Interpreter::doInput(const Instr& in) {
     }                                 \
   } while (0)
 #define SYNC_FRAME() B[Base::Frame] = bases_[Base::Frame]
+// After a call into the host that may block (a built-in, input, a traced line): a host that
+// was asked to end the run (the user quit a live view) has returned at once; stop here.
+#define STOP_IF_ASKED()                          \
+  do {                                           \
+    if (m_.host().stopRequested()) {             \
+      stopStatus_ = RunStatus::Stopped;          \
+      stepsLeft_ = stepsLeft;                    \
+      pcOut = pc;                                \
+      return;                                    \
+    }                                            \
+  } while (0)
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"
@@ -770,6 +787,7 @@ void Interpreter::execute(uint32_t& pcOut) {
     }
     CASE(CallBuiltin) {
       doCallBuiltin(code[pc], pc);
+      STOP_IF_ASKED();
       ++pc;
       NEXT;
     }
@@ -811,6 +829,7 @@ void Interpreter::execute(uint32_t& pcOut) {
     }
     CASE(Input) {
       doInput(code[pc]);
+      STOP_IF_ASKED();
       ++pc;
       NEXT;
     }
@@ -822,6 +841,7 @@ void Interpreter::execute(uint32_t& pcOut) {
     }
     CASE(Line) {
       m_.host().onLine(prog_.locs[pc]);
+      STOP_IF_ASKED();
       ++pc;
       NEXT;
     }
@@ -842,6 +862,7 @@ void Interpreter::execute(uint32_t& pcOut) {
 
 #undef COUNT_STEPS
 #undef SYNC_FRAME
+#undef STOP_IF_ASKED
 #undef CASE
 #undef NEXT
 
