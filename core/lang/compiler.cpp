@@ -99,7 +99,7 @@ void Compiler::statement(const Stmt& s, bool topLevel) {
   }
   try {
     statementBody(s);
-  } catch (const CompileError&) {
+  } catch (const StatementAbandoned&) {
     // Reported; go on with the next statement.
   }
 }
@@ -148,7 +148,7 @@ void Compiler::statementBody(const Stmt& s) {
 
 void Compiler::fail(SourceLoc loc, std::string message) {
   diags_.error(loc, std::move(message));
-  throw CompileError{};
+  throw StatementAbandoned{};
 }
 
 /// Fails when `name` is a built-in's and cannot stand at `place` (the rule is

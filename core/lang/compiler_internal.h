@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "lang/abandon.h"
 #include "lang/ast_walk.h"
 #include "lang/builtins.h"
 #include "lang/compiler.h"
@@ -29,9 +30,6 @@ using ast::Expr;
 using ast::ExprKind;
 using ast::Stmt;
 using ast::StmtKind;
-
-/// Thrown after an error in a statement is reported: compilation goes on with the next one.
-struct CompileError {};
 
 /// A jump target: an address, and how many statements the code falling into it has counted
 /// but not yet reported. A jump arriving there subtracts that many, so that the next transfer

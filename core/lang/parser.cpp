@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "lang/abandon.h"
 #include "lang/builtins.h"
 #include "lang/suggest.h"
 
@@ -45,8 +46,6 @@ std::string quoted(std::string_view text, char quote = '\'') {
   return out;
 }
 
-struct SyntaxError {};
-
 class Parser {
  public:
   Parser(const std::vector<Token>& toks, ast::Arena& arena, const BuiltinTable& builtins,
@@ -63,7 +62,7 @@ class Parser {
       size_t start = pos_;
       try {
         line(out);
-      } catch (const SyntaxError&) {
+      } catch (const StatementAbandoned&) {
         keepBlockOpener(start, out);
         while (cur().kind != Tok::Newline && cur().kind != Tok::Eof) ++pos_;
       }
@@ -119,7 +118,7 @@ class Parser {
   [[noreturn]] void fail(SourceLoc loc, std::string message) {
     // One error per line: a lexical error already explains what follows it.
     if (!diags_.hasErrorOnLine(loc.file, loc.line)) diags_.error(loc, std::move(message));
-    throw SyntaxError{};
+    throw StatementAbandoned{};
   }
   /// One level of nesting (a parenthesis, an operator's operand, a single-line if's
   /// statements) while it lives. The count goes down however the level is left, also when a
