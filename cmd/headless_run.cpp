@@ -76,7 +76,7 @@ std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts) {
 std::string connectRealRobot(const RunOptions& opts, Machine& machine) {
   if (!opts.real) return "";
   try {
-    machine.useCommPort(-1);  // -1: the port --port names
+    machine.connectRobot(openRobotPort(std::nullopt, opts));  // the port --port names
   } catch (const RuntimeError& e) {
     return e.what();
   }

@@ -110,7 +110,7 @@ void TuiHost::wait(double ms) {
   paceTarget_ = target;
   for (;;) {
     double left = target - clock_.now();
-    if (left <= 0) break;
+    if (left <= 0 || stopRequested()) break;
     if (paused_) {
       pump(50);
       continue;
@@ -121,12 +121,8 @@ void TuiHost::wait(double ms) {
 }
 
 bool TuiHost::poll() {
-  try {
-    pump(0);
-  } catch (const TuiQuit&) {
-    return false;
-  }
-  return true;
+  pump(0);
+  return !stopRequested();
 }
 
 void TuiHost::onLine(SourceLoc loc) {
@@ -153,7 +149,7 @@ void TuiHost::holdWhilePaused() {
   }
   if (!paused_) return;
   draw();
-  while (paused_) pump(50);
+  while (paused_ && !stopRequested()) pump(50);
 }
 
 void TuiHost::tick() {
@@ -170,7 +166,6 @@ void TuiHost::pump(int waitMs) {
   if (e.kind != TermEvent::None) handle(e);
   lastTick_ = Clock::now();
   if (lastTick_ - lastFrame_ >= kFrameInterval) draw();
-  if (quit_) throw TuiQuit{};
 }
 
 int64_t TuiHost::currentKey() {
@@ -191,7 +186,7 @@ void TuiHost::blockUntil(const char* state, const std::function<bool()>& done) {
   Waiting waiting(waitingFor_, state);
   draw();
   // Paused, the program takes nothing: what arrives waits until the view resumes.
-  while (paused_ || !done()) pump(20);
+  while (!stopRequested() && (paused_ || !done())) pump(20);
 }
 
 int64_t TuiHost::heldKey(std::string_view) {
@@ -206,6 +201,7 @@ int64_t TuiHost::waitKey(std::string_view) {
   programKeys_ = true;
   // Each press (or auto-repeat of a held key) answers one waitKey, in the order typed.
   blockUntil("waiting for a key", [this] { return !typed_.empty(); });
+  if (typed_.empty()) return 0;  // the user quit
   int64_t key = typed_.front();
   typed_.pop_front();
   return key;
@@ -222,6 +218,7 @@ MouseState TuiHost::mouse(std::string_view) {
 
 MouseState TuiHost::waitClick(std::string_view) {
   blockUntil("waiting for a click", [this] { return !clicks_.empty(); });
+  if (clicks_.empty()) return {};  // the user quit
   MouseState click = clicks_.front();
   clicks_.pop_front();
   latched_ = 0;
@@ -268,12 +265,7 @@ void TuiHost::clipboardChanged(std::string_view text) {
 void TuiHost::messageBox(std::string_view text, std::string_view title) {
   box_ = Box{std::string(title), std::string(text)};
   boxAnswered_ = false;
-  try {
-    blockUntil("message box", [this] { return boxAnswered_; });
-  } catch (...) {
-    box_.reset();
-    throw;
-  }
+  blockUntil("message box", [this] { return boxAnswered_; });
   box_.reset();
 }
 
@@ -283,13 +275,9 @@ std::optional<std::string> TuiHost::inputLine(std::string_view prompt) {
   inputDone_ = inputEof_ = false;
   inputPrompt_ = prompt;
   inputText_.clear();
-  try {
-    blockUntil("input", [this] { return inputDone_; });
-  } catch (...) {
-    inputActive_ = false;
-    throw;
-  }
+  blockUntil("input", [this] { return inputDone_; });
   inputActive_ = false;
+  if (stopRequested()) return std::nullopt;  // the user quit
   appendOutput(inputPrompt_ + inputText_ + "\n");
   if (inputEof_) return std::nullopt;
   return inputText_;
@@ -312,11 +300,7 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
     case RunStatus::RuntimeError: endState_ = "error"; break;
     default: endState_ = "stopped (limit)"; break;
   }
-  try {
-    blockUntil("", [this] { return endKey_; });
-  } catch (const TuiQuit&) {
-    // quitting ends the final screen too
-  }
+  blockUntil("", [this] { return endKey_; });  // quitting ends the final screen too
 }
 
 // ---- keys and the mouse
@@ -339,7 +323,7 @@ bool TuiHost::viewKey(int64_t key) {
   else if (key == keys::kF1 + 3 || key == kCtrlB) changeSpeed(0.5);
   else if (key == keys::kF1 + 4 || key == kCtrlF) changeSpeed(2);
   else if (key == keys::kF1 + 5 || key == kCtrlV) cycleMode();
-  else if (key == keys::kF1 + 9 || key == kCtrlQ || key == kCtrlC) quit_ = true;
+  else if (key == keys::kF1 + 9 || key == kCtrlQ || key == kCtrlC) requestStop();
   else return false;
   lastFrame_ = {};  // show the change at once
   return true;
@@ -386,7 +370,7 @@ void TuiHost::handleKey(int64_t key) {
       case '+':
       case '=': changeSpeed(2); return;
       case 'v': cycleMode(); return;
-      case 'q': quit_ = true; return;
+      case 'q': requestStop(); return;
       default: break;
     }
   }

@@ -21,9 +21,6 @@
 
 namespace rb::cli {
 
-/// Thrown from the host's hooks when the user quits: it ends the run without a program error.
-struct TuiQuit {};
-
 class TuiHost : public Host, public RobotObserver {
  public:
   using Clock = std::chrono::steady_clock;
@@ -80,7 +77,8 @@ class TuiHost : public Host, public RobotObserver {
   };
 
   /// Reads the terminal (waiting up to `waitMs` for the first event) and draws a frame when
-  /// one is due. Throws TuiQuit when the user quit.
+  /// one is due. A quit key requests the run's stop (Host::requestStop): every loop that waits
+  /// here ends at once then, and the interpreter stops after the call in progress.
   void pump(int waitMs);
   /// pump(0), at most every few milliseconds: for hooks called very often.
   void tick();
@@ -128,7 +126,6 @@ class TuiHost : public Host, public RobotObserver {
 
   bool paused_ = false;
   bool stepArmed_ = false;  ///< pause again at the next statement or robot step
-  bool quit_ = false;
   bool ended_ = false;  ///< the run is over: the final screen is shown
   bool endKey_ = false;
   const char* waitingFor_ = nullptr;  ///< what a blocking read waits for, for the state line

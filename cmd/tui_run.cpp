@@ -79,15 +79,13 @@ int runTui(const RunOptions& opts) {
   try {
     Interpreter interp(*loaded.compiled, machine);
     result = interp.run(runLimits(opts));
-    quit = result.status == RunStatus::Stopped;
+    quit = result.status == RunStatus::Stopped;  // the user quit: the host stopped the run
     std::string error;
     if (result.error) {
       error = formatDiagnostic(loaded.program->sources, *result.error);
       error = error.substr(0, error.find('\n'));
     }
     host.showEnd(result, error);
-  } catch (const TuiQuit&) {
-    quit = true;
   } catch (...) {
     screen.reset();  // never leave the terminal in raw mode
     throw;

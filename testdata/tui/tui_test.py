@@ -217,7 +217,8 @@ def test_error(rb):
 
 
 def test_quit(rb):
-    """F10 ends a running program at once (exit 0); so does q before the program reads keys."""
+    """F10 ends a running program at once (exit 0); so does q before the program reads keys,
+    and F10 while the program waits for a key (the wait ends, then the run)."""
     for key in ("F10", "q", "C-c"):
         s = Session(rb, "square.bas")
         try:
@@ -227,6 +228,14 @@ def test_quit(rb):
             check(s.stderr() == "", f"stderr after {key}: {s.stderr()}")
         finally:
             s.close()
+    s = Session(rb, "remote.bas")
+    try:
+        s.wait_for("waitKey", lambda t: status(t, "state") == "waiting for a key")
+        s.keys("F10")
+        check(s.exit_code() == 0, "exit status after F10 in waitKey")
+        check(s.stderr() == "", f"stderr after F10 in waitKey: {s.stderr()}")
+    finally:
+        s.close()
 
 
 def test_resize(rb):
