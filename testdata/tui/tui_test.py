@@ -71,6 +71,19 @@ class Session:
             time.sleep(0.05)
         raise Failure(f"timed out waiting for {what}; the screen was:\n{text}\nstderr:\n{self.stderr()}")
 
+    def settled(self, timeout=8.0):
+        """The screen once two captures 0.1 s apart agree: curses may be mid-way through a frame
+        when tmux captures it (the state row already new, the pose rows below still old)."""
+        deadline = time.monotonic() + timeout
+        last = self.screen()
+        while time.monotonic() < deadline:
+            time.sleep(0.1)
+            now = self.screen()
+            if now == last:
+                return now
+            last = now
+        return last
+
     def wait_text(self, text, timeout=8.0):
         return self.wait_for(repr(text), lambda s: text in s, timeout)
 
@@ -127,11 +140,12 @@ def test_square(rb):
     try:
         s.wait_for("the robot to move", lambda t: status(t, "y") not in (None, "300.0"))
         s.keys("F2")
-        paused = s.wait_for("the pause", lambda t: status(t, "state") == "paused")
+        s.wait_for("the pause", lambda t: status(t, "state") == "paused")
+        paused = s.settled()
         check("PAUSED" in paused, "no PAUSED banner:\n" + paused)
         pose = (status(paused, "x"), status(paused, "y"), status(paused, "heading"))
         time.sleep(0.3)
-        still = s.screen()
+        still = s.settled()
         check((status(still, "x"), status(still, "y"), status(still, "heading")) == pose,
               "the robot moved while paused:\n" + still)
         # F3 runs one statement or one robot step (the first may end a wait already under way).
@@ -139,7 +153,7 @@ def test_square(rb):
         for _ in range(4):
             s.keys("F3")
             time.sleep(0.15)
-            t = s.screen()
+            t = s.settled()
             if (status(t, "x"), status(t, "y"), status(t, "heading")) != pose:
                 moved = t
                 break
