@@ -108,7 +108,7 @@ constexpr uint8_t kMoveMayBeUnassigned = 1;
 
 struct Instr {
   Op op;
-  uint8_t flags = 0;
+  uint8_t flags = 0;  ///< Move: kMoveMayBeUnassigned; conditional transfers: steps given back when taken
   union {
     uint16_t count = 0;  ///< consecutive operands read (arguments, indices, items, extents)
     int16_t steps;       ///< control transfers: statements counted since the previous one
@@ -127,6 +127,14 @@ constexpr bool isTransfer(Op op) {
     default:
       return isCompareJump(op);
   }
+}
+
+/// Control transfers that may fall through: they count `steps` on both paths, and when they jump
+/// they give back `flags` steps, the statements the fall-through path counted before the target
+/// (which the target's next transfer reports again).
+constexpr bool isConditionalTransfer(Op op) {
+  return op == Op::JumpIfFalse || op == Op::JumpIfTrue || op == Op::ForPrep || op == Op::ForLoop ||
+         isCompareJump(op);
 }
 
 constexpr uint32_t kBaseShift = 30;

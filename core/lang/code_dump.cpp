@@ -111,6 +111,8 @@ class Dumper {
     line += operands(in);
     while (!line.empty() && line.back() == ' ') line.pop_back();
     if (isTransfer(in.op) && in.steps != 0) line += "  (steps " + std::to_string(in.steps) + ")";
+    if (isConditionalTransfer(in.op) && in.flags != 0)
+      line += "  (taken: -" + std::to_string(in.flags) + ")";
     out_ += line + "\n";
   }
 

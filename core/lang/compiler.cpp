@@ -186,7 +186,7 @@ uint32_t Compiler::emitTransfer(Op op, uint32_t a, uint32_t b, uint32_t c, Sourc
 
 /// The address of the next instruction, as a jump target.
 Target Compiler::placeTarget() {
-  if (pending_ > kMaxPending) flushSteps();
+  if (pending_ > kMaxTargetPending) flushSteps();
   return {static_cast<uint32_t>(p_.code.size()), static_cast<int32_t>(pending_)};
 }
 
@@ -198,7 +198,13 @@ void Compiler::patch(uint32_t pc, Target t) {
   Instr& in = p_.code[pc];
   if (in.op == Op::ForPrep || in.op == Op::ForLoop) in.c = t.pc;
   else in.a = t.pc;
-  in.steps = static_cast<int16_t>(in.steps - t.pending);
+  if (isConditionalTransfer(in.op)) {
+    // Both paths count `steps`; only the taken one skips the statements the fall-through path
+    // counted before the target, so the interpreter takes them back (`flags`) when it jumps.
+    in.flags = static_cast<uint8_t>(t.pending);
+  } else {
+    in.steps = static_cast<int16_t>(in.steps - t.pending);
+  }
 }
 
 void Compiler::patchAll(const std::vector<uint32_t>& pcs, Target t) {

@@ -42,6 +42,9 @@ struct Target {
 /// Statement counts above this are flushed with a Steps instruction, keeping every count in the
 /// 16-bit field of an instruction.
 constexpr uint32_t kMaxPending = 8000;
+/// A jump target is never placed with more pending statements than this, so that a conditional
+/// jump's correction for its taken path fits the instruction's 8-bit `flags` (see patch()).
+constexpr uint32_t kMaxTargetPending = 255;
 
 /// 'name', for messages (built by appending: GCC 12 warns falsely, -Wrestrict, about some
 /// operator+ chains that start with a literal).

@@ -656,7 +656,12 @@ void Interpreter::execute(uint32_t& pcOut) {
       bool jumpWhen = in.op >= Op::JumpIfEq;  // the JumpIf family jumps when the test holds
       auto cmp = static_cast<Cmp>(static_cast<uint8_t>(in.op) -
                                   static_cast<uint8_t>(jumpWhen ? Op::JumpIfEq : Op::JumpIfNotEq));
-      pc = compare(cmp, B(in.b), B(in.c), in) == jumpWhen ? in.a : pc + 1;
+      if (compare(cmp, B(in.b), B(in.c), in) == jumpWhen) {
+        stepsLeft += in.flags;
+        pc = in.a;
+      } else {
+        ++pc;
+      }
       NEXT;
     }
     CASE(Neg) {
@@ -714,7 +719,12 @@ void Interpreter::execute(uint32_t& pcOut) {
       if (v.isInt()) t = v.i() != 0;
       else if (v.isNum()) t = v.d() != 0;
       else operandError(in);
-      pc = (t == (in.op == Op::JumpIfTrue)) ? in.a : pc + 1;
+      if (t == (in.op == Op::JumpIfTrue)) {
+        stepsLeft += in.flags;
+        pc = in.a;
+      } else {
+        ++pc;
+      }
       NEXT;
     }
     CASE(ForPrep) {
@@ -730,7 +740,12 @@ void Interpreter::execute(uint32_t& pcOut) {
         enter = step.i() > 0 ? v.i() <= limit.i() : v.i() >= limit.i();
       else
         enter = step.asDouble() > 0 ? v.asDouble() <= limit.asDouble() : v.asDouble() >= limit.asDouble();
-      pc = enter ? pc + 1 : in.c;
+      if (enter) {
+        ++pc;
+      } else {
+        stepsLeft += in.flags;
+        pc = in.c;
+      }
       NEXT;
     }
     CASE(ForLoop) {
@@ -742,13 +757,23 @@ void Interpreter::execute(uint32_t& pcOut) {
       int64_t r;
       if (v.isInt() && limit.isInt() && step.isInt() && !__builtin_add_overflow(v.i(), step.i(), &r)) {
         v.setInt(r);
-        pc = (step.i() > 0 ? r <= limit.i() : r >= limit.i()) ? in.c : pc + 1;
+        if (step.i() > 0 ? r <= limit.i() : r >= limit.i()) {
+          stepsLeft += in.flags;
+          pc = in.c;
+        } else {
+          ++pc;
+        }
         NEXT;
       }
       if (!v.isNumeric()) operandError(in);
       double x = v.asDouble() + step.asDouble();
       v.setNum(x);
-      pc = (step.asDouble() > 0 ? x <= limit.asDouble() : x >= limit.asDouble()) ? in.c : pc + 1;
+      if (step.asDouble() > 0 ? x <= limit.asDouble() : x >= limit.asDouble()) {
+        stepsLeft += in.flags;
+        pc = in.c;
+      } else {
+        ++pc;
+      }
       NEXT;
     }
     CASE(Gosub) {
