@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdio>
 #include <cmath>
 #include <stdexcept>
 
@@ -247,7 +248,12 @@ std::string Args::describe(int i) const {
 double Args::num(int i) const {
   const Value& v = v_[i];
   if (v.isInt()) return static_cast<double>(v.i());
-  if (v.isNum()) return v.d();
+  if (v.isNum()) {
+    // Values are finite (the interpreter refuses infinite results); a host or a test passing an
+    // argument directly is held to the same rule.
+    if (!std::isfinite(v.d())) throw RuntimeError(describe(i) + " must be a finite number");
+    return v.d();
+  }
   throw RuntimeError(describe(i) + " must be a number, not " +
                      (v.isStr() ? "a string" : v.isArr() ? "an array" : "nothing"));
 }
@@ -264,6 +270,18 @@ uint32_t Args::colour(int i) const {
   int64_t c = integer(i);
   if (c < 0 || c > 0xFFFFFF) throw RuntimeError(describe(i) + " must be a colour: 0..15 or an RGB() value");
   return static_cast<uint32_t>(c);
+}
+
+double Args::within(int i, double limit) const {
+  double v = num(i);
+  if (v < -limit || v > limit) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%g", v);
+    char range[32];
+    std::snprintf(range, sizeof range, "%.0f", limit);
+    throw RuntimeError(describe(i) + " is out of range: " + text + " (allowed: -" + range + " to " + range + ")");
+  }
+  return v;
 }
 
 int Args::coordinate(int i) const {

@@ -133,6 +133,9 @@ class Args {
 
   double num(int i) const;           ///< a number (int or double)
   int64_t integer(int i) const;      ///< a number truncated toward zero
+  /// A number between -limit and limit (a distance, an angle, a time), else an error naming
+  /// the argument and the range.
+  double within(int i, double limit) const;
   const std::string& str(int i) const;
   /// A colour number: 0..15 (the palette) or an RGB() value up to 0xFFFFFF.
   uint32_t colour(int i) const;

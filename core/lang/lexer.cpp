@@ -218,6 +218,10 @@ class Lexer {
     }
     t.kind = Tok::Float;
     t.floatValue = std::strtod(digits.c_str(), nullptr);
+    if (!std::isfinite(t.floatValue)) {
+      diags_.error(t.loc, "number too large: " + digits + " (the largest is about 1.8e308)");
+      t.floatValue = 0;
+    }
     out.push_back(t);
   }
   void identifier(std::vector<Token>& out) {

@@ -35,6 +35,9 @@ BinaryOpInfo binaryOpInfo(Tok t) {
 namespace {
 
 constexpr int kMaxNesting = 200;
+/// The deepest expression tree: nesting plus operators chained at one level (`1+1+1...` is a
+/// tree as deep as it is long, and the compiler and checker walk it recursively).
+constexpr int kMaxTreeDepth = 1000;
 
 /// 'text' (built by appending: GCC 12 warns falsely about operator+ chains of this shape).
 std::string quoted(std::string_view text, char quote = '\'') {
@@ -128,15 +131,26 @@ class Parser {
    public:
     Nested(Parser& p, SourceLoc loc) : p_(p) {
       if (p_.depth_ >= kMaxNesting) p_.fail(loc, "expression nested too deeply");
+      p_.deepen(loc);
       ++p_.depth_;
     }
-    ~Nested() { --p_.depth_; }
+    ~Nested() {
+      --p_.depth_;
+      --p_.treeDepth_;
+    }
     Nested(const Nested&) = delete;
     Nested& operator=(const Nested&) = delete;
 
    private:
     Parser& p_;
   };
+  /// One more level of the expression tree (a nesting, or an operator chained to the left).
+  void deepen(SourceLoc loc) {
+    if (treeDepth_ >= kMaxTreeDepth)
+      fail(loc, "expression too long (more than " + std::to_string(kMaxTreeDepth) +
+                    " operators or nested parts in one expression)");
+    ++treeDepth_;
+  }
   /// Runs `parse` one level deeper.
   template <typename F>
   auto nested(SourceLoc loc, F parse) {
@@ -575,12 +589,21 @@ class Parser {
   Expr* expression() { return binary(1); }
 
   Expr* binary(int minPrec) {
+    // Each operator folded here makes the tree one level deeper on the left; the levels are
+    // given back however this returns (also when a syntax error unwinds through it).
+    struct Chain {
+      Parser& p;
+      int folded = 0;
+      ~Chain() { p.treeDepth_ -= folded; }
+    } chain{*this};
     Expr* left = unary();
     for (;;) {
       Tok op = cur().kind;
       BinaryOpInfo info = binaryOpInfo(op);
       if (info.prec == 0 || info.prec < minPrec) return left;
       SourceLoc loc = cur().loc;
+      deepen(loc);
+      ++chain.folded;
       ++pos_;
       Expr* right = nested(loc, [&] { return binary(info.rightAssoc ? info.prec : info.prec + 1); });
       Expr* e = arena_.expr();
@@ -681,6 +704,7 @@ class Parser {
   DiagnosticList& diags_;
   size_t pos_ = 0;
   int depth_ = 0;
+  int treeDepth_ = 0;
 };
 
 }  // namespace

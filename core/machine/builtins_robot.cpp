@@ -28,6 +28,12 @@ void report(Machine& m, RobotEvent::Kind kind, Args& a, std::optional<double> va
   if (m.observed()) m.emit(kind, a.builtin().name, argText(a), value);
 }
 
+/// The largest distance (pixels) or coordinate a robot command takes: the screen is 800x600,
+/// so this leaves room for any real program and keeps every count of steps an int.
+constexpr double kMaxDistance = 1e6;
+/// The largest angle (degrees) a robot command takes; a turn steps once per degree.
+constexpr double kMaxDegrees = 1e6;
+
 /// Every sensor reads a whole number.
 Value sensor(Machine& m, Args& a, double v) {
   report(m, RobotEvent::Sensor, a, v);
@@ -35,11 +41,12 @@ Value sensor(Machine& m, Args& a, double v) {
 }
 
 Value rLocate(Machine& m, Args& a) {
-  double heading = a.numOr(2, 0);
+  double x = a.within(0, kMaxDistance), y = a.within(1, kMaxDistance);
+  double heading = a.has(2) ? a.within(2, kMaxDegrees) : 0;
   double radius = a.numOr(3, sim::kDefaultRadius);
   Colour colour = a.has(4) ? a.colour(4) : static_cast<Colour>(sim::kDefaultColour);
-  if (RealRobot* r = m.realRobot()) r->locate(a.num(0), a.num(1), heading);
-  else m.robot().locate(a.num(0), a.num(1), heading, radius, colour);
+  if (RealRobot* r = m.realRobot()) r->locate(x, y, heading);
+  else m.robot().locate(x, y, heading, radius, colour);
   report(m, RobotEvent::Locate, a);
   return {};
 }
@@ -53,8 +60,9 @@ std::function<void()> stepper(Machine& m) {
 
 Value rForward(Machine& m, Args& a) {
   try {
-    if (RealRobot* r = m.realRobot()) r->forward(a.num(0));
-    else m.robot().forward(a.num(0), stepper(m));
+    double distance = a.within(0, kMaxDistance);
+    if (RealRobot* r = m.realRobot()) r->forward(distance);
+    else m.robot().forward(distance, stepper(m));
   } catch (const RuntimeError&) {
     report(m, RobotEvent::Crash, a);
     throw;
@@ -64,14 +72,15 @@ Value rForward(Machine& m, Args& a) {
 }
 
 Value rTurn(Machine& m, Args& a) {
-  if (RealRobot* r = m.realRobot()) r->turn(a.num(0));
-  else m.robot().turn(a.num(0), stepper(m));
+  double degrees = a.within(0, kMaxDegrees);
+  if (RealRobot* r = m.realRobot()) r->turn(degrees);
+  else m.robot().turn(degrees, stepper(m));
   report(m, RobotEvent::Turn, a);
   return {};
 }
 
 Value rSpeed(Machine& m, Args& a) {
-  double s = a.num(0);
+  double s = a.within(0, kMaxDistance);
   if (s < 0) throw RuntimeError(a.describe(0) + " must not be negative");
   m.robotSpeed = s;
   if (RealRobot* r = m.realRobot()) r->speed(s);
@@ -124,8 +133,8 @@ Value rCommand(Machine& m, Args& a) {
 RB_SENSOR(rBumper, bumper())
 RB_SENSOR(rFeel, feel())
 RB_SENSOR(rSense, sense())
-RB_SENSOR(rRange, range(a.numOr(0, 0)))
-RB_SENSOR(rLook, look(a.numOr(0, 0)))
+RB_SENSOR(rRange, range(a.has(0) ? a.within(0, kMaxDegrees) : 0))
+RB_SENSOR(rLook, look(a.has(0) ? a.within(0, kMaxDegrees) : 0))
 RB_SENSOR(rBeacon, beacon(a.colour(0)))
 RB_SENSOR(rCompass, compass())
 RB_SENSOR(rGPSX, gpsX())

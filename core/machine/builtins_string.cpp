@@ -144,7 +144,8 @@ Value strToString(Machine&, Args& a) {
   if (a[0].isStr()) return a[0];
   if (a.has(1)) {
     int64_t decimals = std::clamp<int64_t>(a.integer(1), 0, 15);
-    char buf[64];
+    // The largest finite number has 309 digits before the point: room for them all.
+    char buf[400];
     std::snprintf(buf, sizeof buf, "%.*f", static_cast<int>(decimals), a.num(0));
     return Value::string(buf);
   }

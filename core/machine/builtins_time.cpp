@@ -10,7 +10,9 @@ Value timeTimer(Machine& m, Args&) {
 }
 
 Value timeDelay(Machine& m, Args& a) {
-  double ms = a.num(0);
+  // A day at most: longer waits are a mistake (the --timeout limit would stop them anyway), and
+  // the clock stays a whole number of milliseconds that fits any integer.
+  double ms = a.within(0, 86400e3);
   if (ms > 0) m.delay(ms);
   return {};
 }

@@ -389,6 +389,11 @@ void Interpreter::doCallBuiltin(const Instr& in, uint32_t pc) {
   m_.setLocation(prog_.locs[pc]);
   Args args(b, &bases_(in.b), in.count);
   Value r = b.fn(m_, args);
+  // No number that is infinite or not a number enters the program: every value stays finite,
+  // so no later conversion to an integer or a pixel meets one.
+  if (r.isNum() && !std::isfinite(r.d())) [[unlikely]]
+    throw RuntimeError(std::string(b.name) + "(): the result is " +
+                       (std::isnan(r.d()) ? "not a number" : "too large"));
   if (in.c != kNoOperand) bases_(in.c) = std::move(r);
 }
 
@@ -403,10 +408,12 @@ void Interpreter::doDim(const Instr& in) {
     }
     int64_t n = toInteger(e);
     if (n < 1) throw RuntimeError("array size must be at least 1, not " + std::to_string(n));
-    total *= static_cast<uint64_t>(n);
-    if (total > kMaxArrayElements)
+    // Checked before multiplying: a product past 2^64 would wrap to a small count while each
+    // index is still checked only against its own extent.
+    if (static_cast<uint64_t>(n) > kMaxArrayElements / total)
       throw RuntimeError("array '" + slotName(in.a) + "' is too large (more than " +
                          std::to_string(kMaxArrayElements) + " elements)");
+    total *= static_cast<uint64_t>(n);
     dims.push_back(n);
   }
   bases_(in.a) = Value::array(std::move(dims));
@@ -512,7 +519,7 @@ void Interpreter::execute(uint32_t& pcOut) {
         if (!__builtin_add_overflow(a.i(), b.i(), &r)) d.setInt(r);
         else d.setNum(static_cast<double>(a.i()) + static_cast<double>(b.i()));
       } else if (a.isNumeric() && b.isNumeric()) {
-        d.setNum(a.asDouble() + b.asDouble());
+        d.setNum(checked(a.asDouble() + b.asDouble()));
       } else if ((a.isStr() || a.isNumeric()) && (b.isStr() || b.isNumeric())) {
         concatenate(d, a, b);
       } else {
@@ -535,7 +542,7 @@ void Interpreter::execute(uint32_t& pcOut) {
         else if (in.op == Op::Sub) d.setNum(static_cast<double>(a.i()) - static_cast<double>(b.i()));
         else d.setNum(static_cast<double>(a.i()) * static_cast<double>(b.i()));
       } else if (a.isNumeric() && b.isNumeric()) {
-        d.setNum(in.op == Op::Sub ? a.asDouble() - b.asDouble() : a.asDouble() * b.asDouble());
+        d.setNum(checked(in.op == Op::Sub ? a.asDouble() - b.asDouble() : a.asDouble() * b.asDouble()));
       } else {
         operandError(in);
       }
