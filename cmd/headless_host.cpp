@@ -1,5 +1,8 @@
 #include "headless_host.h"
 
+#include <poll.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -21,7 +24,34 @@ HeadlessHost::HeadlessHost(std::FILE* out, std::istream& in, InputScript script)
       script_(std::move(script), virtualMs_),
       start_(std::chrono::steady_clock::now()) {}
 
-HeadlessHost::~HeadlessHost() { flush(); }
+HeadlessHost::~HeadlessHost() {
+  disarmDeadline();
+  flush();
+}
+
+void HeadlessHost::armDeadline(double seconds, std::atomic<bool>& passed) {
+  disarmDeadline();
+  deadline_ = &passed;
+  watchdogStop_ = false;
+  auto until = start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(seconds));
+  watchdog_ = std::thread([this, until, &passed] {
+    std::unique_lock<std::mutex> lock(watchdogMutex_);
+    if (!watchdogWake_.wait_until(lock, until, [this] { return watchdogStop_; }))
+      passed.store(true, std::memory_order_relaxed);
+  });
+}
+
+void HeadlessHost::disarmDeadline() {
+  if (!watchdog_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(watchdogMutex_);
+    watchdogStop_ = true;
+  }
+  watchdogWake_.notify_all();
+  watchdog_.join();
+  deadline_ = nullptr;
+}
 
 void HeadlessHost::output(std::string_view text) {
   if (outputHook) {
@@ -55,10 +85,43 @@ std::optional<std::string> HeadlessHost::inputLine(std::string_view prompt) {
   output(prompt);
   if (script_.given()) return script_.inputLine("input");
   flush();
+  if (inputFd >= 0) return readLineFromFd();
   std::string line;
   if (!std::getline(in_, line)) return std::nullopt;
   if (!line.empty() && line.back() == '\r') line.pop_back();
   return line;
+}
+
+/// One line from inputFd, waiting in slices so that the run's deadline can end the wait.
+std::optional<std::string> HeadlessHost::readLineFromFd() {
+  constexpr size_t kMaxLine = 16u << 20;
+  for (;;) {
+    size_t end = fdBuffer_.find('\n');
+    if (end != std::string::npos || fdEnded_ || fdBuffer_.size() >= kMaxLine) {
+      if (end == std::string::npos) {
+        if (fdBuffer_.empty()) return std::nullopt;
+        end = std::min(fdBuffer_.size(), kMaxLine);
+      }
+      std::string line = fdBuffer_.substr(0, end);
+      fdBuffer_.erase(0, std::min(end + 1, fdBuffer_.size()));
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      return line;
+    }
+    if (deadline_ && deadline_->load(std::memory_order_relaxed)) throw DeadlinePassed{};
+    pollfd pfd{inputFd, POLLIN, 0};
+    int ready = ::poll(&pfd, 1, 100);
+    if (ready < 0) {
+      if (errno == EINTR) continue;
+      fdEnded_ = true;
+      continue;
+    }
+    if (ready == 0) continue;
+    char chunk[4096];
+    ssize_t n = ::read(inputFd, chunk, sizeof chunk);
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n <= 0) fdEnded_ = true;
+    else fdBuffer_.append(chunk, static_cast<size_t>(n));
+  }
 }
 
 double HeadlessHost::clockMs() {

@@ -4,10 +4,14 @@
 // timer() or reads input, so runs are fast and repeatable. Keys, the mouse and dialog answers
 // come from scripted input (--events, --keys: core/input/input_script.h).
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <functional>
 #include <istream>
+#include <mutex>
+#include <thread>
 
 #include "machine/host.h"
 #include "input/input_script.h"
@@ -26,6 +30,13 @@ class HeadlessHost : public Host {
   double clockMs() override;
   void wait(double ms) override;
   double wallSeconds() override;
+  /// A watchdog thread sets `passed` when the limit is reached; `input` on a silent terminal or
+  /// pipe then ends too.
+  void armDeadline(double seconds, std::atomic<bool>& passed) override;
+  void disarmDeadline() override;
+  /// When >= 0, `input` reads this file descriptor itself (instead of the stream), waiting with
+  /// poll() so that --timeout ends a run that waits for a line nobody types.
+  int inputFd = -1;
   int64_t heldKey(std::string_view who) override { return script_.heldKey(who); }
   int64_t waitKey(std::string_view who) override { return script_.waitKey(who); }
   MouseState mouse(std::string_view who) override { return script_.mouse(who); }
@@ -63,6 +74,14 @@ class HeadlessHost : public Host {
   double virtualMs_ = 0;
   ScriptedInput script_;  ///< plays on virtualMs_
   std::chrono::steady_clock::time_point start_;
+  std::optional<std::string> readLineFromFd();
+  std::string fdBuffer_;    ///< bytes read from inputFd past the last line returned
+  bool fdEnded_ = false;
+  std::atomic<bool>* deadline_ = nullptr;
+  std::thread watchdog_;
+  std::mutex watchdogMutex_;
+  std::condition_variable watchdogWake_;
+  bool watchdogStop_ = false;
 };
 
 }  // namespace rb::cli

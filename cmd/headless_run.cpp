@@ -1,5 +1,7 @@
 #include "headless_run.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
@@ -105,6 +107,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
 
   run.seed = runSeed(opts);
   run.host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
+  run.host->inputFd = STDIN_FILENO;
   run.host->lineHook = std::move(onLine);
   run.host->outputHook = std::move(onOutput);
   run.host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <optional>
+#include <string>
 
 #include "check_command.h"
 #include "cli_errors.h"
@@ -41,6 +42,15 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return rb::exitcode::kUsage;
+  }
+  // Whatever a command printed must have reached its reader: a full disk or a closed pipe is
+  // a failure (exit 74), never a silent success. Commands that write a lot check as they go.
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    if (exitCode == rb::exitcode::kOk || exitCode == rb::exitcode::kRejected) {
+      std::string name = app.get_subcommands().empty() ? "rb" : "rb " + app.get_subcommands().front()->get_name();
+      std::fprintf(stderr, "%s: error: cannot write to standard output\n", name.c_str());
+      exitCode = rb::exitcode::kIoError;
+    }
   }
   return exitCode;
 }

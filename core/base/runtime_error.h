@@ -13,4 +13,9 @@ class RuntimeError : public std::runtime_error {
   explicit RuntimeError(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// Thrown from inside a long call (waiting for input, a long search) when the run's --timeout
+/// has passed: the run ends with the timeout's own status and message, not as the program's
+/// error.
+struct DeadlinePassed {};
+
 }  // namespace rb

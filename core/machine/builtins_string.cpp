@@ -2,7 +2,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <vector>
 
 #include "machine/builtins_impl.h"
 #include "base/runtime_error.h"
@@ -80,18 +82,41 @@ Value strReverse(Machine&, Args& a) {
   return Value::string(std::move(s));
 }
 
+/// The first place at or after `from` where `needle` occurs in `hay`, or npos. Short needles
+/// use the library's search; long ones the Knuth-Morris-Pratt scan, linear in both lengths, so
+/// that no pair of strings (a long run of one letter and the same run plus one other) makes a
+/// search quadratic.
+size_t findText(const std::string& hay, const std::string& needle, size_t from) {
+  constexpr size_t kShortNeedle = 64;
+  if (needle.size() < kShortNeedle || from >= hay.size()) return hay.find(needle, from);
+  size_t m = needle.size();
+  // border[i]: the length of the longest proper border of needle[0..i].
+  std::vector<uint32_t> border(m, 0);
+  for (size_t i = 1, k = 0; i < m; ++i) {
+    while (k > 0 && needle[i] != needle[k]) k = border[k - 1];
+    if (needle[i] == needle[k]) ++k;
+    border[i] = static_cast<uint32_t>(k);
+  }
+  for (size_t i = from, k = 0; i < hay.size(); ++i) {
+    while (k > 0 && hay[i] != needle[k]) k = border[k - 1];
+    if (hay[i] == needle[k]) ++k;
+    if (k == m) return i + 1 - m;
+  }
+  return std::string::npos;
+}
+
 Value strInstr(Machine&, Args& a) {
   const std::string& s = a.str(0);
   const std::string& f = a.str(1);
   int64_t start = a.intOr(2, 1);
   if (start < 1) start = 1;
   if (static_cast<uint64_t>(start) > s.size() + 1) return Value::integer(0);
-  size_t at = s.find(f, static_cast<size_t>(start - 1));
+  size_t at = findText(s, f, static_cast<size_t>(start - 1));
   return Value::integer(at == std::string::npos ? 0 : static_cast<int64_t>(at) + 1);
 }
 
 Value strContains(Machine&, Args& a) {
-  return Value::boolean(a.str(0).find(a.str(1)) != std::string::npos);
+  return Value::boolean(findText(a.str(0), a.str(1), 0) != std::string::npos);
 }
 
 Value strReplace(Machine&, Args& a) {
@@ -102,7 +127,7 @@ Value strReplace(Machine&, Args& a) {
   std::string out;
   size_t pos = 0;
   for (;;) {
-    size_t at = s.find(f, pos);
+    size_t at = findText(s, f, pos);
     if (at == std::string::npos) break;
     out.append(s, pos, at - pos);
     out += w;

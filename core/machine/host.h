@@ -4,6 +4,7 @@
 // needs. rb's commands build a Host for the terminal, for headless runs and for tests; core/
 // never touches stdin, stdout or the system clock itself.
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,13 @@ class Host {
   virtual void wait(double ms) = 0;
   /// Seconds of real time since the run started, for --timeout.
   virtual double wallSeconds() = 0;
+  /// Sets `passed` once `seconds` of real time have passed (a watchdog of the host's own, such as
+  /// a thread), until disarmDeadline(). The interpreter reads the flag after every built-in call
+  /// and long calls read it inside (Machine::checkDeadline), so --timeout holds within one
+  /// call's time even when single statements are slow. Without it (the default) the
+  /// interpreter still compares wallSeconds() with the limit every few thousand statements.
+  virtual void armDeadline(double /*seconds*/, std::atomic<bool>& /*passed*/) {}
+  virtual void disarmDeadline() {}
   /// Called regularly while the program runs; a live view redraws and reads keys here.
   /// Returning false stops the program (the user quit).
   virtual bool poll() { return true; }

@@ -287,10 +287,25 @@ RunResult Interpreter::run(const RunLimits& limits) {
   stepsLeft_ = chunk_;
   stopStatus_ = RunStatus::Finished;
 
+  // The host's watchdog sets the machine's deadline flag once the --timeout has passed.
+  struct Watchdog {
+    Host& host;
+    bool armed;
+    ~Watchdog() {
+      if (armed) host.disarmDeadline();
+    }
+  } watchdog{m_.host(), limits_.timeoutSeconds > 0};
+  m_.deadlineFlag().store(false);
+  if (watchdog.armed) m_.host().armDeadline(limits_.timeoutSeconds, m_.deadlineFlag());
+
   RunResult result;
   uint32_t pc = 0;
   try {
-    execute(pc);
+    try {
+      execute(pc);
+    } catch (const DeadlinePassed&) {
+      stopStatus_ = RunStatus::Timeout;
+    }
     result.status = stopStatus_;
     if (stopStatus_ == RunStatus::StepLimit) {
       result.error = Diagnostic{Severity::Error, prog_.locs[pc],
@@ -331,7 +346,8 @@ bool Interpreter::checkpoint() {
     stopStatus_ = RunStatus::StepLimit;
     return false;
   }
-  if (limits_.timeoutSeconds > 0 && m_.host().wallSeconds() >= limits_.timeoutSeconds) {
+  if (limits_.timeoutSeconds > 0 &&
+      (m_.pastDeadline() || m_.host().wallSeconds() >= limits_.timeoutSeconds)) {
     chunk_ = stepsLeft_ = 0;
     stopStatus_ = RunStatus::Timeout;
     return false;
@@ -820,6 +836,13 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(CallBuiltin) {
       doCallBuiltin(code[pc], pc);
       STOP_IF_ASKED();
+      if (m_.pastDeadline()) [[unlikely]] {
+        // A slow built-in (drawing, a sensor, a real robot's answer) ran past the --timeout.
+        stopStatus_ = RunStatus::Timeout;
+        stepsLeft_ = stepsLeft;
+        pcOut = pc;
+        return;
+      }
       ++pc;
       NEXT;
     }

@@ -3,6 +3,7 @@
 // generator, the screen and the robot. Built-in handlers receive the Machine; the interpreter
 // owns none of this.
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -42,6 +43,13 @@ class Machine {
   Machine& operator=(const Machine&) = delete;
 
   Host& host() { return host_; }
+  /// Set by the host's watchdog once the run's --timeout has passed (Host::armDeadline).
+  std::atomic<bool>& deadlineFlag() { return deadlinePassed_; }
+  bool pastDeadline() const { return deadlinePassed_.load(std::memory_order_relaxed); }
+  /// For long loops inside a built-in: throws DeadlinePassed once the timeout has passed.
+  void checkDeadline() const {
+    if (pastDeadline()) throw DeadlinePassed{};
+  }
   /// The random generator; using it marks the run as depending on the seed.
   Rng& rng() {
     rngUsed_ = true;
@@ -104,6 +112,7 @@ class Machine {
 
  private:
   Host& host_;
+  std::atomic<bool> deadlinePassed_{false};
   Rng rng_;
   bool rngUsed_ = false;
   Canvas canvas_;

@@ -15,6 +15,9 @@ A block is a set of `key: value` lines, blocks separated by a blank line:
   after:   a shell command run in {work} afterwards that must succeed (optional)
   sigpipe: ignore  - run rb with SIGPIPE ignored, read one line of its output, close the pipe;
            rb must end within 5 s
+  stdin:   silent  - standard input is a pipe that stays open and empty while rb runs
+  within:  seconds - rb must end within this many seconds of wall time
+  stdout-file: PATH - rb's standard output goes to this file (/dev/full: every write fails)
   timeout: seconds (default 30)
 """
 import argparse
@@ -73,12 +76,26 @@ def run_case(case, rb, source, work):
         if time.monotonic() - start > 5:
             problems.append("rb took more than 5 s to stop")
     else:
+        start = time.monotonic()
+        silent_read, silent_write = os.pipe() if case.get("stdin", [""])[0] == "silent" else (None, None)
         try:
-            r = subprocess.run(argv, cwd=work, capture_output=True, timeout=timeout)
+            out_file = open(case["stdout-file"][0], "wb") if "stdout-file" in case else None
+            r = subprocess.run(argv, cwd=work, stdout=out_file or subprocess.PIPE,
+                               stderr=subprocess.PIPE, timeout=timeout,
+                               stdin=silent_read if silent_read is not None else subprocess.DEVNULL)
         except subprocess.TimeoutExpired:
             return [f"timed out after {timeout} s"]
-        code, out = r.returncode, r.stdout.decode("utf-8", "replace")
+        finally:
+            for fd in (silent_read, silent_write):
+                if fd is not None:
+                    os.close(fd)
+        took = time.monotonic() - start
+        if out_file:
+            out_file.close()
+        code, out = r.returncode, (r.stdout or b"").decode("utf-8", "replace")
         err = r.stderr.decode("utf-8", "replace")
+        if "within" in case and took > float(case["within"][0]):
+            problems.append(f"rb took {took:.2f} s, more than {case['within'][0]} s")
     want = int(case["exit"][0])
     if code != want:
         problems.append(f"exit {code}, expected {want}")
