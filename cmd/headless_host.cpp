@@ -12,6 +12,17 @@
 namespace rb::cli {
 
 namespace {
+/// The process's resident memory in bytes (Linux: /proc/self/statm), 0 when unknown.
+uint64_t residentBytes() {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (!f) return 0;
+  unsigned long long pages = 0, resident = 0;
+  int got = std::fscanf(f, "%llu %llu", &pages, &resident);
+  std::fclose(f);
+  if (got != 2) return 0;
+  return static_cast<uint64_t>(resident) * static_cast<uint64_t>(::sysconf(_SC_PAGESIZE));
+}
+
 /// How far the virtual clock moves each time the program reads it, so that a loop waiting
 /// for timer() to pass a value ends.
 constexpr double kClockReadMs = 1.0;
@@ -25,24 +36,39 @@ HeadlessHost::HeadlessHost(std::FILE* out, std::istream& in, InputScript script)
       start_(std::chrono::steady_clock::now()) {}
 
 HeadlessHost::~HeadlessHost() {
-  disarmDeadline();
+  disarmWatchdog();
   flush();
 }
 
-void HeadlessHost::armDeadline(double seconds, std::atomic<bool>& passed) {
-  disarmDeadline();
-  deadline_ = &passed;
+void HeadlessHost::armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) {
+  disarmWatchdog();
+  alarms_ = &alarms;
   watchdogStop_ = false;
-  auto until = start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                            std::chrono::duration<double>(seconds));
-  watchdog_ = std::thread([this, until, &passed] {
+  using Clock = std::chrono::steady_clock;
+  auto deadline = limits.seconds > 0
+                      ? start_ + std::chrono::duration_cast<Clock::duration>(
+                                     std::chrono::duration<double>(limits.seconds))
+                      : Clock::time_point::max();
+  uint64_t memory = limits.memoryBytes;
+  watchdog_ = std::thread([this, deadline, memory, &alarms] {
+    constexpr auto kSample = std::chrono::milliseconds(10);
     std::unique_lock<std::mutex> lock(watchdogMutex_);
-    if (!watchdogWake_.wait_until(lock, until, [this] { return watchdogStop_; }))
-      passed.store(true, std::memory_order_relaxed);
+    for (;;) {
+      auto wake = memory > 0 ? std::min(deadline, Clock::now() + kSample) : deadline;
+      if (watchdogWake_.wait_until(lock, wake, [this] { return watchdogStop_; })) return;
+      if (Clock::now() >= deadline) {
+        alarms.raise(RunAlarms::kDeadline);
+        return;
+      }
+      if (memory > 0 && residentBytes() > memory) {
+        alarms.raise(RunAlarms::kMemory);
+        return;
+      }
+    }
   });
 }
 
-void HeadlessHost::disarmDeadline() {
+void HeadlessHost::disarmWatchdog() {
   if (!watchdog_.joinable()) return;
   {
     std::lock_guard<std::mutex> lock(watchdogMutex_);
@@ -50,7 +76,7 @@ void HeadlessHost::disarmDeadline() {
   }
   watchdogWake_.notify_all();
   watchdog_.join();
-  deadline_ = nullptr;
+  alarms_ = nullptr;
 }
 
 void HeadlessHost::output(std::string_view text) {
@@ -107,7 +133,7 @@ std::optional<std::string> HeadlessHost::readLineFromFd() {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       return line;
     }
-    if (deadline_ && deadline_->load(std::memory_order_relaxed)) throw DeadlinePassed{};
+    if (alarms_ && (alarms_->now() & RunAlarms::kDeadline)) throw DeadlinePassed{};
     pollfd pfd{inputFd, POLLIN, 0};
     int ready = ::poll(&pfd, 1, 100);
     if (ready < 0) {

@@ -30,10 +30,11 @@ class HeadlessHost : public Host {
   double clockMs() override;
   void wait(double ms) override;
   double wallSeconds() override;
-  /// A watchdog thread sets `passed` when the limit is reached; `input` on a silent terminal or
-  /// pipe then ends too.
-  void armDeadline(double seconds, std::atomic<bool>& passed) override;
-  void disarmDeadline() override;
+  /// A watchdog thread raises the alarms: the deadline when the time is up (`input` on a silent
+  /// terminal or pipe then ends too), memory when the process's resident memory, sampled every
+  /// 10 ms, passes the limit.
+  void armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) override;
+  void disarmWatchdog() override;
   /// When >= 0, `input` reads this file descriptor itself (instead of the stream), waiting with
   /// poll() so that --timeout ends a run that waits for a line nobody types.
   int inputFd = -1;
@@ -77,7 +78,7 @@ class HeadlessHost : public Host {
   std::optional<std::string> readLineFromFd();
   std::string fdBuffer_;    ///< bytes read from inputFd past the last line returned
   bool fdEnded_ = false;
-  std::atomic<bool>* deadline_ = nullptr;
+  RunAlarms* alarms_ = nullptr;
   std::thread watchdog_;
   std::mutex watchdogMutex_;
   std::condition_variable watchdogWake_;

@@ -49,6 +49,11 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
   app.add_option("--timeout", opts.timeoutSeconds,
                  "Stop the program after SECONDS of real time (0: no limit)")
       ->check(kSeconds);
+  app.add_option("--max-memory", opts.maxMemoryMiB,
+                 "Stop the program when rb uses more than MIB mebibytes of memory (default 1024; "
+                 "0: no limit)")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("MIB");
   CLI::Option* port = app.add_option(
       "--port", opts.port,
       "Serial port of the real robot: a number N (see man rb-run) or a device path; also used "

@@ -16,6 +16,7 @@ struct RunOptions {
   std::optional<uint64_t> seed;
   uint64_t maxSteps = 0;
   double timeoutSeconds = 0;
+  uint64_t maxMemoryMiB = 1024;  ///< --max-memory (0: no limit)
   // A real robot (drivers/): --real connects before the program starts; --port also names the
   // port a program's rCommPort opens.
   bool real = false;

@@ -73,6 +73,8 @@ class Value {
   /// The numeric value as a double (Int or Num only).
   double asDouble() const { return type_ == VType::Int ? static_cast<double>(i_) : d_; }
   const std::string& str() const { return s_->s; }
+  /// The string's text to change in place when no other value shares it, else nullptr.
+  std::string* uniqueStr() { return type_ == VType::Str && s_->refs == 1 ? &s_->s : nullptr; }
   ArrObj& arr() const { return *a_; }
 
   // Fast in-place setters used by the interpreter's hot paths.

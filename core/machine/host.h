@@ -5,6 +5,7 @@
 // never touches stdin, stdout or the system clock itself.
 
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,22 @@ class SystemAccess {
   virtual int64_t spawn(std::string_view who, const std::string& command, bool wait) = 0;
 };
 
+/// What a host's watchdog raises while a program runs (Host::armWatchdog), as bits of one
+/// atomic so that the interpreter's check is a single load.
+struct RunAlarms {
+  static constexpr unsigned kDeadline = 1;  ///< the --timeout has passed
+  static constexpr unsigned kMemory = 2;    ///< rb's memory went past --max-memory
+  std::atomic<unsigned> raised{0};
+  unsigned now() const { return raised.load(std::memory_order_relaxed); }
+  void raise(unsigned bit) { raised.fetch_or(bit, std::memory_order_relaxed); }
+};
+
+/// The limits a watchdog keeps (0: none).
+struct WatchdogLimits {
+  double seconds = 0;
+  uint64_t memoryBytes = 0;
+};
+
 class Host {
  public:
   virtual ~Host() = default;
@@ -47,13 +64,16 @@ class Host {
   virtual void wait(double ms) = 0;
   /// Seconds of real time since the run started, for --timeout.
   virtual double wallSeconds() = 0;
-  /// Sets `passed` once `seconds` of real time have passed (a watchdog of the host's own, such as
-  /// a thread), until disarmDeadline(). The interpreter reads the flag after every built-in call
-  /// and long calls read it inside (Machine::checkDeadline), so --timeout holds within one
-  /// call's time even when single statements are slow. Without it (the default) the
-  /// interpreter still compares wallSeconds() with the limit every few thousand statements.
-  virtual void armDeadline(double /*seconds*/, std::atomic<bool>& /*passed*/) {}
-  virtual void disarmDeadline() {}
+  /// Starts the host's watchdog (a thread of its own, say) for one run: it raises
+  /// RunAlarms::kDeadline once `limits.seconds` of real time have passed since the run started
+  /// and RunAlarms::kMemory when rb's memory goes past `limits.memoryBytes` (0: that limit is
+  /// off), until disarmWatchdog(). The interpreter reads the alarms after every built-in call,
+  /// in string and array growth and at its checkpoints, and long calls read them inside
+  /// (Machine::checkAlarms), so both limits hold within one call's time even when single
+  /// statements are slow. Without a watchdog (the default) the interpreter still compares
+  /// wallSeconds() with the timeout every few thousand statements.
+  virtual void armWatchdog(const WatchdogLimits& /*limits*/, RunAlarms& /*alarms*/) {}
+  virtual void disarmWatchdog() {}
   /// Called regularly while the program runs; a live view redraws and reads keys here.
   /// Returning false stops the program (the user quit).
   virtual bool poll() { return true; }

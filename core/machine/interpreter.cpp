@@ -32,12 +32,30 @@ constexpr size_t kMaxStringLength = 64u << 20;
 
 [[noreturn]] RB_COLD void raise(const char* message) { throw RuntimeError(message); }
 
-/// `+` with a string: the printed forms joined.
+[[noreturn]] RB_COLD void stringTooLong() {
+  throw RuntimeError("string too long (more than " + std::to_string(kMaxStringLength) + " characters)");
+}
+
+/// `+` with a string: the printed forms joined. `s = s + x`, where no other value shares s,
+/// appends in place, so a string grown a piece at a time costs its length, not its square.
 void concatenate(Value& d, const Value& a, const Value& b) {
+  if (&d == &a) {
+    if (std::string* s = d.uniqueStr()) {
+      if (b.isStr()) {
+        if (s->size() + b.str().size() > kMaxStringLength) stringTooLong();
+        s->append(b.str());  // also right when b is s itself
+      } else {
+        std::string right = formatValue(b);
+        if (s->size() + right.size() > kMaxStringLength) stringTooLong();
+        s->append(right);
+      }
+      return;
+    }
+  }
   std::string left = formatValue(a), right = formatValue(b);
-  if (left.size() + right.size() > kMaxStringLength)
-    throw RuntimeError("string too long (more than " + std::to_string(kMaxStringLength) + " characters)");
-  d = Value::string(left + right);
+  if (left.size() + right.size() > kMaxStringLength) stringTooLong();
+  left += right;
+  d = Value::string(std::move(left));
 }
 
 std::string typeName(const Value& v) {
@@ -287,16 +305,18 @@ RunResult Interpreter::run(const RunLimits& limits) {
   stepsLeft_ = chunk_;
   stopStatus_ = RunStatus::Finished;
 
-  // The host's watchdog sets the machine's deadline flag once the --timeout has passed.
+  // The host's watchdog raises the machine's alarms once the --timeout has passed or memory
+  // goes past --max-memory.
   struct Watchdog {
     Host& host;
     bool armed;
     ~Watchdog() {
-      if (armed) host.disarmDeadline();
+      if (armed) host.disarmWatchdog();
     }
-  } watchdog{m_.host(), limits_.timeoutSeconds > 0};
-  m_.deadlineFlag().store(false);
-  if (watchdog.armed) m_.host().armDeadline(limits_.timeoutSeconds, m_.deadlineFlag());
+  } watchdog{m_.host(), limits_.timeoutSeconds > 0 || limits_.maxMemoryBytes > 0};
+  m_.alarms().raised.store(0);
+  m_.memoryLimit = limits_.maxMemoryBytes;
+  if (watchdog.armed) m_.host().armWatchdog({limits_.timeoutSeconds, limits_.maxMemoryBytes}, m_.alarms());
 
   RunResult result;
   uint32_t pc = 0;
@@ -347,7 +367,7 @@ bool Interpreter::checkpoint() {
     return false;
   }
   if (limits_.timeoutSeconds > 0 &&
-      (m_.pastDeadline() || m_.host().wallSeconds() >= limits_.timeoutSeconds)) {
+      ((m_.alarms().now() & RunAlarms::kDeadline) || m_.host().wallSeconds() >= limits_.timeoutSeconds)) {
     chunk_ = stepsLeft_ = 0;
     stopStatus_ = RunStatus::Timeout;
     return false;
@@ -432,6 +452,10 @@ void Interpreter::doDim(const Instr& in) {
     total *= static_cast<uint64_t>(n);
     dims.push_back(n);
   }
+  if (m_.memoryLimit && total * sizeof(Value) > m_.memoryLimit)
+    throw RuntimeError("out of memory: array '" + slotName(in.a) + "' would need " +
+                       std::to_string((total * sizeof(Value)) >> 20) + " MiB, more than the " +
+                       std::to_string(m_.memoryLimit >> 20) + " MiB of the --max-memory limit");
   bases_(in.a) = Value::array(std::move(dims));
 }
 
@@ -446,6 +470,7 @@ void Interpreter::doDataAppend(const Instr& in) {
   if (a.items.size() >= kMaxArrayElements) raise("data: array too large");
   a.items.push_back(v);
   a.dims[0] = static_cast<int64_t>(a.items.size());
+  m_.checkAlarms();
 }
 
 void Interpreter::doPrint(const Instr& in) {
@@ -538,6 +563,7 @@ void Interpreter::execute(uint32_t& pcOut) {
         d.setNum(checked(a.asDouble() + b.asDouble()));
       } else if ((a.isStr() || a.isNumeric()) && (b.isStr() || b.isNumeric())) {
         concatenate(d, a, b);
+        m_.checkAlarms();
       } else {
         operandError(in);
       }
@@ -836,12 +862,11 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(CallBuiltin) {
       doCallBuiltin(code[pc], pc);
       STOP_IF_ASKED();
-      if (m_.pastDeadline()) [[unlikely]] {
-        // A slow built-in (drawing, a sensor, a real robot's answer) ran past the --timeout.
-        stopStatus_ = RunStatus::Timeout;
+      if (m_.alarmed()) [[unlikely]] {
+        // A slow built-in (drawing, a sensor, a real robot's answer) ran past the --timeout, or
+        // memory went past --max-memory: DeadlinePassed or a runtime error at this call.
         stepsLeft_ = stepsLeft;
-        pcOut = pc;
-        return;
+        m_.raiseAlarm();
       }
       ++pc;
       NEXT;

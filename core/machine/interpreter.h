@@ -15,6 +15,7 @@ namespace rb {
 struct RunLimits {
   uint64_t maxSteps = 0;        ///< statements to run at most (0: no limit)
   double timeoutSeconds = 0;    ///< real seconds at most (0: no limit)
+  uint64_t maxMemoryBytes = 0;  ///< memory rb may use at most, watched by the host (0: no limit)
   uint32_t maxCallDepth = 100000;  ///< nested gosub/call frames at most
 };
 

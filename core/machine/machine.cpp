@@ -37,6 +37,14 @@ void Machine::printPrompt(std::string_view prompt) {
   promptPrintedAt_ = prints_;
 }
 
+void Machine::raiseAlarm() const {
+  if (alarms_.now() & RunAlarms::kMemory) {
+    throw RuntimeError("out of memory: rb uses more than " + std::to_string(memoryLimit >> 20) +
+                       " MiB (the --max-memory limit)");
+  }
+  throw DeadlinePassed{};
+}
+
 void Machine::useCommPort(int64_t port) {
   real_.reset();  // closes the previous port, if any
   if (port != 0) connectRobot(host_.openRobot(port));

@@ -43,13 +43,18 @@ class Machine {
   Machine& operator=(const Machine&) = delete;
 
   Host& host() { return host_; }
-  /// Set by the host's watchdog once the run's --timeout has passed (Host::armDeadline).
-  std::atomic<bool>& deadlineFlag() { return deadlinePassed_; }
-  bool pastDeadline() const { return deadlinePassed_.load(std::memory_order_relaxed); }
-  /// For long loops inside a built-in: throws DeadlinePassed once the timeout has passed.
-  void checkDeadline() const {
-    if (pastDeadline()) throw DeadlinePassed{};
+  /// What the host's watchdog has raised for this run (Host::armWatchdog).
+  RunAlarms& alarms() { return alarms_; }
+  bool alarmed() const { return alarms_.now() != 0; }
+  /// For long loops inside a built-in, and growth of strings and arrays: ends the run when an
+  /// alarm is up (DeadlinePassed for the timeout; a runtime error for memory).
+  void checkAlarms() const {
+    if (alarmed()) [[unlikely]] raiseAlarm();
   }
+  /// Throws what the raised alarm means; the memory limit's message names the limit.
+  [[noreturn]] void raiseAlarm() const;
+  /// The --max-memory limit in bytes, for messages (0: none).
+  uint64_t memoryLimit = 0;
   /// The random generator; using it marks the run as depending on the seed.
   Rng& rng() {
     rngUsed_ = true;
@@ -112,7 +117,7 @@ class Machine {
 
  private:
   Host& host_;
-  std::atomic<bool> deadlinePassed_{false};
+  RunAlarms alarms_;
   Rng rng_;
   bool rngUsed_ = false;
   Canvas canvas_;
