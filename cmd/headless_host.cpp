@@ -23,6 +23,8 @@ HeadlessHost::HeadlessHost(std::FILE* out, std::istream& in, InputScript script)
 
 HeadlessHost::~HeadlessHost() { flush(); }
 
+void HeadlessHost::attachMachine(Machine& machine) { script_.useControls(&machine.controls); }
+
 void HeadlessHost::output(std::string_view text) {
   buffer_ += text;
   if (buffer_.size() >= kFlushAt) flush();

@@ -28,8 +28,6 @@ constexpr double kMinFactor = 1.0 / 64, kMaxFactor = 64;
 constexpr int64_t kCtrlB = 2, kCtrlC = 3, kCtrlD = 4, kCtrlF = 6, kCtrlP = 16, kCtrlQ = 17,
                   kCtrlS = 19, kCtrlV = 22;
 
-bool printable(int64_t key) { return key >= 32 && key < 127; }
-
 const char* modeName(render::CellMode m) {
   switch (m) {
     case render::CellMode::Ascii: return "ascii";
@@ -121,11 +119,7 @@ void TuiHost::wait(double ms) {
 }
 
 bool TuiHost::poll() {
-  try {
-    pump(0);
-  } catch (const TuiQuit&) {
-    return false;
-  }
+  pump(0);  // throws StopRun when the user quit
   return true;
 }
 
@@ -170,7 +164,7 @@ void TuiHost::pump(int waitMs) {
   if (e.kind != TermEvent::None) handle(e);
   lastTick_ = Clock::now();
   if (lastTick_ - lastFrame_ >= kFrameInterval) draw();
-  if (quit_) throw TuiQuit{};
+  if (quit_) throw StopRun{};
 }
 
 int64_t TuiHost::currentKey() {
@@ -228,12 +222,8 @@ MouseState TuiHost::waitClick(std::string_view) {
   return click;
 }
 
-void TuiHost::updateControls(Controls& controls, std::string_view) {
-  tick();
-  if (!pendingButton_.empty()) {
-    controls.pressed = std::move(pendingButton_);
-    pendingButton_.clear();
-  }
+void TuiHost::updateControls(Controls&, std::string_view) {
+  tick();  // a click on a button presses it at once (InputRules::press)
 }
 
 namespace {
@@ -314,7 +304,7 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
   }
   try {
     blockUntil("", [this] { return endKey_; });
-  } catch (const TuiQuit&) {
+  } catch (const StopRun&) {
     // quitting ends the final screen too
   }
 }
@@ -352,26 +342,21 @@ void TuiHost::handleKey(int64_t key) {
     return;
   }
   if (box_) {
-    if (key == keys::kEnter || key == keys::kEsc || key == keys::kSpace) boxAnswered_ = true;
+    if (InputRules::answersMessageBox(key)) boxAnswered_ = true;
     return;
   }
   if (inputActive_) {
-    if (key == keys::kEnter) inputDone_ = true;
-    else if (key == keys::kBackspace && !inputText_.empty()) inputText_.pop_back();
-    else if (key == kCtrlD && inputText_.empty()) inputDone_ = inputEof_ = true;
-    else if (printable(key)) inputText_ += static_cast<char>(key);
+    switch (InputRules::editLine(inputText_, key)) {
+      case InputRules::LineKey::Done: inputDone_ = true; break;
+      case InputRules::LineKey::EndOfInput: inputDone_ = inputEof_ = true; break;
+      default: break;
+    }
     lastFrame_ = {};
     return;
   }
-  if (!focusedEdit_.empty() && machine_) {
-    if (EditBox* e = machine_->controls.edit(focusedEdit_)) {
-      if (key == keys::kEnter || key == keys::kTab || key == keys::kEsc) focusedEdit_.clear();
-      else if (key == keys::kBackspace && !e->text.empty()) e->text.pop_back();
-      else if (printable(key)) e->text += static_cast<char>(key);
-      lastFrame_ = {};
-      return;
-    }
-    focusedEdit_.clear();
+  if (machine_ && rules_.typeInto(machine_->controls, key)) {
+    lastFrame_ = {};
+    return;
   }
   if (!programKeys_) {
     // Until the program reads the keyboard, single keys control the view too.
@@ -404,25 +389,17 @@ void TuiHost::handleMouse(const TermEvent& e) {
   bool inArena = layout_.arena.contains(e.col, e.row);
   auto [x, y] = cellToPixel(layout_.arena, e.col, e.row);
   if (box_) {
-    if (e.pressed & mouse::kLeft) boxAnswered_ = true;
+    if (InputRules::clickAnswersMessageBox(e.pressed)) boxAnswered_ = true;
     return;
   }
   if (e.pressed && inArena && machine_) {
-    // Controls are hit where they are drawn: on their cells (the last added is on top).
-    const Controls& c = machine_->controls;
-    for (auto b = c.buttons.rbegin(); b != c.buttons.rend(); ++b) {
-      if (buttonCells(*b).contains(e.col, e.row)) {
-        pendingButton_ = b->name;
-        return;
-      }
+    // A press goes to the button or edit box that the cell shows part of, if any.
+    Rect p = cellPixels(layout_.arena, e.col, e.row);
+    if (rules_.press(machine_->controls, p.col, p.row, p.width, p.height) !=
+        InputRules::Target::Program) {
+      lastFrame_ = {};
+      return;
     }
-    for (auto ed = c.edits.rbegin(); ed != c.edits.rend(); ++ed) {
-      if (editCells(*ed).contains(e.col, e.row)) {
-        focusedEdit_ = ed->name;
-        return;
-      }
-    }
-    focusedEdit_.clear();
   }
   // Outside the arena the pointer stays at the nearest edge while a drag goes on.
   if (inArena || mouse_.buttons) {
@@ -438,14 +415,8 @@ void TuiHost::handleMouse(const TermEvent& e) {
   mouse_.buttons &= ~e.released;
 }
 
-Rect TuiHost::buttonCells(const Button& b) const {
-  auto [col, row] = pixelToCell(layout_.arena, b.x, b.y);
-  return {col, row, static_cast<int>(b.name.size()) + 2, 1};
-}
-
-Rect TuiHost::editCells(const EditBox& e) const {
-  auto [col, row] = pixelToCell(layout_.arena, e.x, e.y);
-  return {col, row, std::max(4, e.width * layout_.arena.width / Canvas::kWidth), 1};
+Rect TuiHost::controlCells(int x, int y, int width, int height) const {
+  return cellsShowing(layout_.arena, x, y, width, height);
 }
 
 void TuiHost::setPaused(bool paused) {
@@ -527,15 +498,14 @@ void TuiHost::draw() {
 
 void TuiHost::drawArena() {
   Machine& m = *machine_;
-  bool flipped = m.flipMode && !m.flipped.empty();
   render::RobotView robot = render::robotView(m);
   const Rect& a = layout_.arena;
   bool stale = frame_.cols != a.width || frame_.rows != a.height || frameMode_ != mode_ ||
-               frameCanvasVersion_ != m.canvas().version() || flipped ||
+               frameCanvasVersion_ != m.canvas().version() || m.showsFlip() ||
                !sameRobot(robot, frameRobot_);
   if (stale) {
-    frame_ = render::renderArena(flipped ? m.flipped : m.canvas().pixels(), m.canvas().background(),
-                                 robot, {a.width, a.height, mode_});
+    frame_ = render::renderArena(m.shownScreen(), m.canvas().background(), robot,
+                                 {a.width, a.height, mode_});
     frameCanvasVersion_ = m.canvas().version();
     frameRobot_ = robot;
     frameMode_ = mode_;
@@ -558,24 +528,34 @@ void TuiHost::drawOverlays() {
     if (static_cast<int>(s.size()) > room) s.resize(static_cast<size_t>(room));
     screen_.drawText(col, row, s, style);
   };
+  // The program's controls, on the cells that show them (a click there hits them).
   const Controls& controls = machine_->controls;
   for (const Button& b : controls.buttons) {
-    Rect cells = buttonCells(b);
+    Rect cells = controlCells(b.x, b.y, b.width, b.height);
+    if (cells.width <= 0) continue;
     TermStyle s;
     s.reverse = true;
-    s.bold = b.name == pendingButton_;
-    put(cells.col, cells.row, "[" + b.name + "]", s);
+    s.bold = b.name == controls.pressed;
+    std::string label = b.name;
+    if (static_cast<int>(label.size()) + 2 <= cells.width) label = "[" + label + "]";
+    label.resize(static_cast<size_t>(cells.width), ' ');
+    int labelRow = cells.row + cells.height / 2;
+    for (int r = 0; r < cells.height; ++r)
+      put(cells.col, cells.row + r,
+          r + cells.row == labelRow ? label : std::string(static_cast<size_t>(cells.width), ' '), s);
   }
   for (const EditBox& e : controls.edits) {
-    Rect cells = editCells(e);
-    int col = cells.col, row = cells.row, width = cells.width;
+    Rect cells = controlCells(e.x, e.y, e.width, e.height);
+    if (cells.width <= 0) continue;
+    int width = std::max(cells.width, 1);
     std::string field = e.text;
-    if (static_cast<int>(field.size()) > width - 2)
-      field = field.substr(field.size() - static_cast<size_t>(width - 2));
-    field.resize(static_cast<size_t>(width - 2), '_');
+    if (static_cast<int>(field.size()) > width)
+      field = field.substr(field.size() - static_cast<size_t>(width));
+    field.resize(static_cast<size_t>(width), '_');
     TermStyle s;
-    s.reverse = e.name == focusedEdit_;
-    put(col, row, "[" + field + "]", s);
+    s.reverse = e.name == rules_.focusedEdit();
+    s.underline = !s.reverse;
+    put(cells.col, cells.row + cells.height / 2, field, s);
   }
   TermStyle banner;
   banner.reverse = true;

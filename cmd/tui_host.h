@@ -14,6 +14,7 @@
 
 #include "arena_view.h"
 #include "curses_screen.h"
+#include "input/input_rules.h"
 #include "machine/host.h"
 #include "machine/interpreter.h"
 #include "machine/machine.h"
@@ -21,17 +22,14 @@
 
 namespace rb::cli {
 
-/// Thrown from the host's hooks when the user quits: it ends the run without a program error.
-struct TuiQuit {};
-
 class TuiHost : public Host, public RobotObserver {
  public:
   using Clock = std::chrono::steady_clock;
 
   TuiHost(render::CursesScreen& screen, std::string fileName, render::CellMode mode);
 
-  /// The machine the view shows; set before the run starts.
-  void attach(Machine& machine) { machine_ = &machine; }
+  /// The machine the view shows (the run sequence sets it before the run starts).
+  void attachMachine(Machine& machine) override { machine_ = &machine; }
 
   void output(std::string_view text) override;
   std::optional<std::string> inputLine(std::string_view prompt) override;
@@ -80,7 +78,7 @@ class TuiHost : public Host, public RobotObserver {
   };
 
   /// Reads the terminal (waiting up to `waitMs` for the first event) and draws a frame when
-  /// one is due. Throws TuiQuit when the user quit.
+  /// one is due. Throws StopRun when the user quit.
   void pump(int waitMs);
   /// pump(0), at most every few milliseconds: for hooks called very often.
   void tick();
@@ -101,9 +99,8 @@ class TuiHost : public Host, public RobotObserver {
   /// Blocks until `done` holds, showing `state`.
   void blockUntil(const char* state, const std::function<bool()>& done);
   void appendOutput(std::string_view text);
-  /// The cells a button's label or an edit box's field covers in the arena.
-  Rect buttonCells(const Button& b) const;
-  Rect editCells(const EditBox& e) const;
+  /// The arena cells that show a button or an edit box (where a click hits it).
+  Rect controlCells(int x, int y, int width, int height) const;
 
   void draw();
   void drawArena();
@@ -145,8 +142,7 @@ class TuiHost : public Host, public RobotObserver {
   MouseState mouse_;
   int latched_ = 0;
   std::deque<MouseState> clicks_;  ///< presses not yet taken by waitClick
-  std::string pendingButton_;
-  std::string focusedEdit_;
+  InputRules rules_;               ///< which edit box has the keyboard
 
   // Dialogs.
   struct Box {

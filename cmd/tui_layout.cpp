@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <initializer_list>
 #include <string_view>
@@ -93,6 +94,32 @@ std::pair<int, int> pixelToCell(const Rect& arena, int x, int y) {
   int c = static_cast<int>(std::floor(static_cast<double>(x) * arena.width / Canvas::kWidth));
   int r = static_cast<int>(std::floor(static_cast<double>(y) * arena.height / Canvas::kHeight));
   return {arena.col + c, arena.row + r};
+}
+
+namespace {
+/// The first pixel of `cell` along an axis of `pixels` shown in `cells` cells: the smallest x
+/// with floor(x * cells / pixels) >= cell.
+int firstPixel(int cell, int cells, int pixels) {
+  return static_cast<int>((static_cast<int64_t>(cell) * pixels + cells - 1) / cells);
+}
+}  // namespace
+
+Rect cellPixels(const Rect& arena, int col, int row) {
+  int c = std::clamp(col - arena.col, 0, std::max(arena.width - 1, 0));
+  int r = std::clamp(row - arena.row, 0, std::max(arena.height - 1, 0));
+  int x0 = firstPixel(c, arena.width, Canvas::kWidth), x1 = firstPixel(c + 1, arena.width, Canvas::kWidth);
+  int y0 = firstPixel(r, arena.height, Canvas::kHeight),
+      y1 = firstPixel(r + 1, arena.height, Canvas::kHeight);
+  return {x0, y0, std::max(x1 - x0, 1), std::max(y1 - y0, 1)};
+}
+
+Rect cellsShowing(const Rect& arena, int x, int y, int w, int h) {
+  int x0 = std::max(x, 0), y0 = std::max(y, 0);
+  int x1 = std::min(x + w, Canvas::kWidth), y1 = std::min(y + h, Canvas::kHeight);
+  if (arena.width <= 0 || arena.height <= 0 || x1 <= x0 || y1 <= y0) return {};
+  auto [c0, r0] = pixelToCell(arena, x0, y0);
+  auto [c1, r1] = pixelToCell(arena, x1 - 1, y1 - 1);
+  return {c0, r0, c1 - c0 + 1, r1 - r0 + 1};
 }
 
 std::string bumperText(int bits) {

@@ -37,6 +37,12 @@ TuiLayout layoutTui(int cols, int rows);
 std::pair<int, int> cellToPixel(const Rect& arena, int col, int row);
 /// The terminal cell that shows a screen pixel.
 std::pair<int, int> pixelToCell(const Rect& arena, int x, int y);
+/// The screen pixels an arena cell shows (x, y, width, height in pixels): exactly the pixels
+/// that pixelToCell maps to that cell.
+Rect cellPixels(const Rect& arena, int col, int row);
+/// The arena cells that show some pixel of the screen area [x, x + w) x [y, y + h), clipped to
+/// the arena; empty when the area is off the screen.
+Rect cellsShowing(const Rect& arena, int x, int y, int w, int h);
 
 /// What the status panel shows.
 struct TuiStatus {

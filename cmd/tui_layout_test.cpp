@@ -100,3 +100,28 @@ TEST_CASE("tui status panel", "[tui]") {
   CHECK(speedText(8) == "x8");
   CHECK(bumperText(0) == "0");
 }
+
+TEST_CASE("tui: the pixels of a cell and the cells of an area agree", "[tui]") {
+  Rect arena{1, 2, 61, 23};
+  // Every pixel maps to a cell whose pixel area holds it.
+  for (int x = 0; x < 800; x += 7) {
+    for (int y = 0; y < 600; y += 11) {
+      auto [c, r] = pixelToCell(arena, x, y);
+      Rect p = cellPixels(arena, c, r);
+      CHECK(x >= p.col);
+      CHECK(x < p.col + p.width);
+      CHECK(y >= p.row);
+      CHECK(y < p.row + p.height);
+    }
+  }
+  // Neighbouring cells tile the screen without gaps or overlaps.
+  Rect a = cellPixels(arena, 10, 5), b = cellPixels(arena, 11, 5);
+  CHECK(a.col + a.width == b.col);
+  // A button of 48 x 24 pixels at (700, 20) shows on the cells its pixels fall in.
+  Rect cells = cellsShowing(arena, 700, 20, 48, 24);
+  CHECK(cells.col == 1 + 700 * 61 / 800);
+  CHECK(cells.col + cells.width - 1 == 1 + 747 * 61 / 800);
+  CHECK(cells.height >= 1);
+  // Off the screen: no cells.
+  CHECK(cellsShowing(arena, 900, 20, 10, 10).width == 0);
+}

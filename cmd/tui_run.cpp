@@ -4,8 +4,7 @@
 
 #include "curses_screen.h"
 #include "exit_codes.h"
-#include "headless_run.h"
-#include "machine/interpreter.h"
+#include "program_run.h"
 #include "robot_port.h"
 #include "tui_host.h"
 
@@ -49,8 +48,8 @@ int runTui(const RunOptions& opts) {
   }
   CompileOptions compile;
   compile.lineTracing = true;  // single steps stop before every statement
-  LoadedFile loaded;
-  if (int code = loadForRun(kCommand, opts, compile, loaded)) return code;
+  ProgramRun run;
+  if (int code = run.load(kCommand, opts, compile)) return code;
 
   std::string why;
   std::unique_ptr<render::CursesScreen> screen = render::CursesScreen::open(why);
@@ -60,47 +59,29 @@ int runTui(const RunOptions& opts) {
     return exitcode::kIoError;
   }
 
-  uint64_t seed = runSeed(opts);
-  TuiHost host(*screen, baseName(opts.file), startMode(*screen, opts.cells));
-  host.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
-  std::unique_ptr<Sandbox> sandbox = runSandbox(opts);
-  host.setSystem(sandbox.get());
-  Machine machine(host, seed);
-  host.attach(machine);
-  machine.setObserver(&host);
-  if (std::string failed = connectRealRobot(opts, machine); !failed.empty()) {
+  auto host = std::make_unique<TuiHost>(*screen, baseName(opts.file), startMode(*screen, opts.cells));
+  TuiHost& view = *host;
+  view.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
+  if (std::string failed = run.start(opts, std::move(host), &view); !failed.empty()) {
     screen.reset();
     std::fprintf(stderr, "%s: %s\n", kCommand, failed.c_str());
     return exitcode::kIoError;
   }
 
-  RunResult result;
-  bool quit = false;
   try {
-    Interpreter interp(*loaded.compiled, machine);
-    result = interp.run(runLimits(opts));
-    quit = result.status == RunStatus::Stopped;
+    run.run(opts);
     std::string error;
-    if (result.error) {
-      error = formatDiagnostic(loaded.program->sources, *result.error);
+    if (run.result.error) {
+      error = formatDiagnostic(run.loaded.program->sources, *run.result.error);
       error = error.substr(0, error.find('\n'));
     }
-    host.showEnd(result, error);
-  } catch (const TuiQuit&) {
-    quit = true;
+    view.showEnd(run.result, error);
   } catch (...) {
     screen.reset();  // never leave the terminal in raw mode
     throw;
   }
   screen.reset();  // the terminal is back to normal before anything is printed
-
-  reportSeed(kCommand, opts, seed, machine);
-  if (quit) return exitcode::kOk;  // the user ended the program on purpose
-  if (result.error) {
-    printDiagnostic(stderr, loaded.program->sources, *result.error);
-    return exitcode::kRuntime;
-  }
-  return exitcode::kOk;
+  return run.conclude(kCommand, opts, exitcode::kOk);  // quitting ends the run on purpose
 }
 
 }  // namespace rb::cli

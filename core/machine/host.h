@@ -16,6 +16,8 @@
 
 namespace rb {
 
+class Machine;
+
 /// Files and other programs a RobotBASIC program may reach (FileExists, FileRename, DirSet,
 /// Spawn). Student programs are untrusted: rb's commands give an implementation that confines
 /// files to the program's folder and refuses Spawn unless the user allows more
@@ -32,9 +34,17 @@ class SystemAccess {
   virtual int64_t spawn(std::string_view who, const std::string& command, bool wait) = 0;
 };
 
+/// Thrown by a Host's hook to end the run at once (the user quit a live view): the interpreter
+/// stops with RunStatus::Stopped.
+struct StopRun {};
+
 class Host {
  public:
   virtual ~Host() = default;
+
+  /// Called once the machine the host serves exists, before the program starts: a live view
+  /// draws its screen, and input reaches its buttons and edit boxes.
+  virtual void attachMachine(Machine& /*machine*/) {}
 
   /// Text the program prints (already formatted; "\n" ends lines).
   virtual void output(std::string_view text) = 0;

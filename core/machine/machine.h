@@ -87,9 +87,17 @@ class Machine {
 
   double robotSpeed = 0;  ///< rSpeed: milliseconds per pixel or degree
 
-  // flip on/off: while on, a live view shows the screen as it was at the last flip.
+  // flip on/off: while on, what is shown of the screen (a live view, rb render's picture) is
+  // the screen as it was at the last flip.
   bool flipMode = false;
   std::vector<Colour> flipped;  ///< the screen at the last flip
+  /// The screen's pixels as a viewer sees them: the last flip's while flip is on, else the
+  /// canvas itself.
+  const std::vector<Colour>& shownScreen() const {
+    return flipMode && !flipped.empty() ? flipped : canvas_.pixels();
+  }
+  /// True while what is shown is not the canvas (flip is on and the canvas changed since).
+  bool showsFlip() const { return flipMode && !flipped.empty(); }
 
   /// AddButton, AddEdit: the program's dialog controls. Live views draw them; they are never
   /// drawn into the canvas, so the robot does not sense them.
