@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "robot_view.h"
+#include "svg_writer.h"
+#include "tui_panes.h"
 
 namespace rb::cli {
 
@@ -14,19 +17,23 @@ using render::TermStyle;
 
 constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // at most ~30 frames a second
 constexpr auto kTickInterval = std::chrono::milliseconds(8);    // how often hot hooks read keys
-/// Terminals report key presses, never releases: a key counts as held this long after its last
-/// press (auto-repeat presses keep a held key down), and always until a read has seen it.
-constexpr auto kKeyHold = std::chrono::milliseconds(150);
+/// How often the variables pane takes a new look while the program runs.
+constexpr auto kVariablesInterval = std::chrono::milliseconds(250);
 /// Waits that start within this many run-clock milliseconds of the previous one's end continue
 /// its schedule, so the time between waits does not slow the animation down.
 constexpr double kPaceSlackMs = 50;
 constexpr size_t kMaxOutputLines = 1000;
+/// What the transcript keeps at most (printed after the view closes); later output is dropped.
+constexpr size_t kMaxTranscript = 64u << 20;
 constexpr size_t kMaxTypedAhead = 8;
 constexpr double kMinFactor = 1.0 / 64, kMaxFactor = 64;
 
-// Control characters of the keys rb keeps (raw mode delivers them as keys).
-constexpr int64_t kCtrlB = 2, kCtrlC = 3, kCtrlD = 4, kCtrlF = 6, kCtrlP = 16, kCtrlQ = 17,
-                  kCtrlS = 19, kCtrlV = 22;
+// Control characters of the keys rb keeps (raw mode delivers them as keys). None is a common
+// prefix of tmux (Ctrl-B) or screen (Ctrl-A).
+constexpr int64_t kCtrlC = 3, kCtrlF = 6, kCtrlL = 12, kCtrlN = 14, kCtrlP = 16, kCtrlQ = 17,
+                  kCtrlR = 18, kCtrlS = 19, kCtrlT = 20, kCtrlV = 22, kCtrlW = 23;
+
+int64_t fKey(int n) { return keys::kF1 + n - 1; }
 
 const char* modeName(render::CellMode m) {
   switch (m) {
@@ -54,6 +61,12 @@ class Waiting {
   const char*& slot_;
 };
 
+std::string hex2(unsigned v) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%02x", v & 0xFF);
+  return buf;
+}
+
 }  // namespace
 
 // ---- the run clock
@@ -79,12 +92,19 @@ void TuiHost::RunClock::setFactor(double factor) {
 
 // ---- Host
 
-TuiHost::TuiHost(render::CursesScreen& screen, std::string fileName, render::CellMode mode)
-    : screen_(screen), file_(std::move(fileName)), mode_(mode) {}
+TuiHost::TuiHost(render::CursesScreen& screen, TuiSettings settings)
+    : screen_(screen), settings_(std::move(settings)), mode_(settings_.mode) {
+  clock_.setFactor(std::clamp(settings_.speed, kMinFactor, kMaxFactor));
+  held_.setReportsReleases(screen_.reportsKeyReleases());
+  // --paused: a step armed from the start ends before the first statement.
+  if (settings_.paused) debugger_.step(Debugger::Step::Into, 0);
+}
 
 void TuiHost::output(std::string_view text) { appendOutput(text); }
 
 void TuiHost::appendOutput(std::string_view text) {
+  if (transcript_.size() + text.size() <= kMaxTranscript) transcript_ += text;
+  else transcriptCut_ = true;
   for (char c : text) {
     if (c == '\n') {
       lines_.push_back(std::move(partial_));
@@ -125,7 +145,12 @@ bool TuiHost::poll() {
 
 void TuiHost::onLine(SourceLoc loc) {
   loc_ = loc;
-  if (stepArmed_ || paused_) {
+  depth_ = interp_ ? interp_->callDepth() : 0;
+  if (debugger_.pauseAtStatement(loc, depth_)) {
+    pauseHere();
+    return;
+  }
+  if (paused_) {
     holdWhilePaused();
     return;
   }
@@ -133,21 +158,27 @@ void TuiHost::onLine(SourceLoc loc) {
 }
 
 void TuiHost::animate() {
-  if (stepArmed_ || paused_) {
+  if (debugger_.pauseAtRobotStep()) {
+    pauseHere();
+    return;
+  }
+  if (paused_) {
     holdWhilePaused();
     return;
   }
   tick();
 }
 
+void TuiHost::pauseHere() {
+  setPaused(true);
+  holdWhilePaused();
+}
+
 void TuiHost::holdWhilePaused() {
-  if (stepArmed_) {
-    stepArmed_ = false;
-    setPaused(true);
-  }
   if (!paused_) return;
+  refreshVariables();
   draw();
-  while (paused_) pump(50);
+  while (paused_ && debugger_.armed() == Debugger::Step::None) pump(50);
 }
 
 void TuiHost::tick() {
@@ -167,16 +198,6 @@ void TuiHost::pump(int waitMs) {
   if (quit_) throw StopRun{};
 }
 
-int64_t TuiHost::currentKey() {
-  if (key_ == 0) return 0;
-  if (!keySeen_ || Clock::now() - keyAt_ < kKeyHold) {
-    keySeen_ = true;
-    return key_;
-  }
-  key_ = 0;
-  return 0;
-}
-
 void TuiHost::blockUntil(const char* state, const std::function<bool()>& done) {
   if (!paused_ && done()) {
     tick();
@@ -193,7 +214,7 @@ int64_t TuiHost::heldKey(std::string_view) {
   tick();
   // A program that polls sees presses here: a later waitKey must not get them again.
   typed_.clear();
-  return currentKey();
+  return held_.read(Clock::now());
 }
 
 int64_t TuiHost::waitKey(std::string_view) {
@@ -226,31 +247,8 @@ void TuiHost::updateControls(Controls&, std::string_view) {
   tick();  // a click on a button presses it at once (InputRules::press)
 }
 
-namespace {
-std::string base64(std::string_view in) {
-  static constexpr char kDigits[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  size_t i = 0;
-  for (; i + 2 < in.size(); i += 3) {
-    uint32_t v = (uint32_t(uint8_t(in[i])) << 16) | (uint32_t(uint8_t(in[i + 1])) << 8) |
-                 uint8_t(in[i + 2]);
-    for (int k = 18; k >= 0; k -= 6) out += kDigits[(v >> k) & 63];
-  }
-  if (size_t left = in.size() - i; left > 0) {
-    uint32_t v = uint32_t(uint8_t(in[i])) << 16;
-    if (left == 2) v |= uint32_t(uint8_t(in[i + 1])) << 8;
-    out += kDigits[(v >> 18) & 63];
-    out += kDigits[(v >> 12) & 63];
-    out += left == 2 ? kDigits[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
-}  // namespace
-
 void TuiHost::clipboardChanged(std::string_view text) {
-  std::string seq = "\033]52;c;" + base64(text) + "\a";
+  std::string seq = "\033]52;c;" + render::base64Encode({text.begin(), text.end()}) + "\a";
   std::fwrite(seq.data(), 1, seq.size(), stdout);
   std::fflush(stdout);
 }
@@ -292,7 +290,8 @@ void TuiHost::robotEvent(const RobotEvent& e) {
 void TuiHost::showEnd(const RunResult& result, const std::string& error) {
   if (result.status == RunStatus::Stopped) return;
   ended_ = true;
-  paused_ = stepArmed_ = false;
+  paused_ = false;
+  debugger_.cancelStep();
   clock_.setRunning(false);
   box_.reset();
   inputActive_ = false;
@@ -302,11 +301,18 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
     case RunStatus::RuntimeError: endState_ = "error"; break;
     default: endState_ = "stopped (limit)"; break;
   }
+  refreshVariables();
   try {
     blockUntil("", [this] { return endKey_; });
   } catch (const StopRun&) {
     // quitting ends the final screen too
   }
+}
+
+void TuiHost::refreshVariables() {
+  lastVariables_ = Clock::now();
+  if (!interp_ || layout_.vars.width <= 0) return;
+  varLines_ = variableLines(interp_->variables(), interp_->runningSub(), layout_.vars.width);
 }
 
 // ---- keys and the mouse
@@ -317,30 +323,51 @@ void TuiHost::handle(const TermEvent& e) {
       needLayout_ = true;
       lastFrame_ = {};  // draw at once
       break;
-    case TermEvent::Key: handleKey(e.key); break;
+    case TermEvent::Key:
+      if (e.release) held_.release(e.key, Clock::now());
+      else handleKey(e.key);
+      break;
     case TermEvent::Mouse: handleMouse(e); break;
     case TermEvent::None: break;
   }
 }
 
 bool TuiHost::viewKey(int64_t key) {
-  if (key == keys::kF1 + 1 || key == kCtrlP) setPaused(!paused_);
-  else if (key == keys::kF1 + 2 || key == kCtrlS) step();
-  else if (key == keys::kF1 + 3 || key == kCtrlB) changeSpeed(0.5);
-  else if (key == keys::kF1 + 4 || key == kCtrlF) changeSpeed(2);
-  else if (key == keys::kF1 + 5 || key == kCtrlV) cycleMode();
-  else if (key == keys::kF1 + 9 || key == kCtrlQ || key == kCtrlC) quit_ = true;
+  if (key == fKey(2) || key == kCtrlP) setPaused(!paused_);
+  else if (key == fKey(3) || key == kCtrlS) step(Debugger::Step::Into);
+  else if (key == fKey(7) || key == kCtrlN) step(Debugger::Step::Over);
+  else if (key == fKey(8) || key == kCtrlR) step(Debugger::Step::Robot);
+  else if (key == fKey(9) || key == kCtrlT) toggleBreakpoint();
+  else if (key == fKey(4) || key == kCtrlW) changeSpeed(0.5);
+  else if (key == fKey(5) || key == kCtrlF) changeSpeed(2);
+  else if (key == fKey(6) || key == kCtrlV) cycleMode();
+  else if (key == kCtrlL) redraw_ = true;
+  else if (key == fKey(10) || key == kCtrlQ) quit(0);
+  else if (key == kCtrlC) quit(kInterruptedExit);
   else return false;
   lastFrame_ = {};  // show the change at once
+  return true;
+}
+
+bool TuiHost::scrollKey(int64_t key) {
+  int page = std::max(layout_.vars.height - 1, 1);
+  int by = key == keys::kUp ? -1 : key == keys::kDown ? 1 : key == keys::kPageUp ? -page
+         : key == keys::kPageDown ? page : 0;
+  if (by == 0) return false;
+  int most = std::max(static_cast<int>(varLines_.size()) - layout_.vars.height, 0);
+  varScroll_ = std::clamp(varScroll_ + by, 0, most);
+  lastFrame_ = {};
   return true;
 }
 
 void TuiHost::handleKey(int64_t key) {
   if (viewKey(key)) return;
   if (ended_) {
-    endKey_ = true;
+    if (!scrollKey(key)) endKey_ = true;
     return;
   }
+  // Paused, the arrows and page keys scroll the variables pane; the rest wait for the program.
+  if (paused_ && scrollKey(key)) return;
   if (box_) {
     if (InputRules::answersMessageBox(key)) boxAnswered_ = true;
     return;
@@ -362,22 +389,20 @@ void TuiHost::handleKey(int64_t key) {
     // Until the program reads the keyboard, single keys control the view too.
     switch (key) {
       case 'p':
-      case ' ':
-        setPaused(!paused_);
-        lastFrame_ = {};
-        return;
-      case 's': step(); return;
+      case ' ': setPaused(!paused_); lastFrame_ = {}; return;
+      case 's': step(Debugger::Step::Into); return;
+      case 'n': step(Debugger::Step::Over); return;
+      case 'r': step(Debugger::Step::Robot); return;
+      case 'b': toggleBreakpoint(); return;
       case '-': changeSpeed(0.5); return;
       case '+':
       case '=': changeSpeed(2); return;
       case 'v': cycleMode(); return;
-      case 'q': quit_ = true; return;
+      case 'q': quit(0); return;
       default: break;
     }
   }
-  key_ = key;
-  keyAt_ = Clock::now();
-  keySeen_ = false;
+  held_.press(key, Clock::now());
   typed_.push_back(key);
   // Bounded, so that the auto-repeat of a key held while the program is busy does not run on
   // long after the key is let go.
@@ -392,7 +417,7 @@ void TuiHost::handleMouse(const TermEvent& e) {
     if (InputRules::clickAnswersMessageBox(e.pressed)) boxAnswered_ = true;
     return;
   }
-  if (e.pressed && inArena && machine_) {
+  if (e.pressed && inArena && machine_ && !ended_) {
     // A press goes to the button or edit box that the cell shows part of, if any.
     Rect p = cellPixels(layout_.arena, e.col, e.row);
     if (rules_.press(machine_->controls, p.col, p.row, p.width, p.height) !=
@@ -422,20 +447,31 @@ Rect TuiHost::controlCells(int x, int y, int width, int height) const {
 void TuiHost::setPaused(bool paused) {
   if (ended_) return;
   paused_ = paused;
-  if (!paused) stepArmed_ = false;
+  if (!paused) debugger_.cancelStep();
+  else held_.clear();  // keys held when the view paused are let go
   clock_.setRunning(!paused);
 }
 
-void TuiHost::step() {
+void TuiHost::step(Debugger::Step kind) {
   if (ended_) return;
-  // Paused: run one statement or one robot step. Running: stop at the next one.
+  // Paused: run to the step's end, then pause again. Running: pause at the step's end.
+  debugger_.step(kind, depth_);
   paused_ = false;
   clock_.setRunning(true);
-  stepArmed_ = true;
+}
+
+void TuiHost::toggleBreakpoint() {
+  if (ended_ || !loc_.valid()) return;
+  debugger_.toggleBreakpoint(loc_.file, loc_.line);
 }
 
 void TuiHost::changeSpeed(double by) {
   clock_.setFactor(std::clamp(clock_.factor() * by, kMinFactor, kMaxFactor));
+}
+
+void TuiHost::quit(int code) {
+  quit_ = true;
+  quitCode_ = code;
 }
 
 void TuiHost::cycleMode() {
@@ -469,6 +505,11 @@ void TuiHost::draw() {
   if (needLayout_) {
     layout_ = layoutTui(screen_.cols(), screen_.rows());
     needLayout_ = false;
+    refreshVariables();
+  }
+  if (redraw_) {
+    screen_.redrawAll();
+    redraw_ = false;
   }
   screen_.beginFrame();
   if (layout_.tooSmall) {
@@ -479,9 +520,11 @@ void TuiHost::draw() {
     screen_.present();
     return;
   }
+  if (!paused_ && !ended_ && lastFrame_ - lastVariables_ >= kVariablesInterval) refreshVariables();
   TermStyle bar;
   bar.reverse = true;
-  std::string title = " rb run " + file_ + "   " + stateText();
+  std::string title = " rb run " + settings_.fileName + "   " + stateText() + "   view " +
+                      modeName(mode_);
   if (ended_) title += "   (press any key to exit)";
   title.resize(static_cast<size_t>(layout_.title.width), ' ');
   screen_.drawText(0, 0, title, bar);
@@ -492,7 +535,13 @@ void TuiHost::draw() {
     drawOverlays();
     drawStatus();
   }
+  drawSource();
+  drawVariables();
   drawOutput();
+  TermStyle dim;
+  dim.dim = true;
+  screen_.drawText(layout_.keys.col, layout_.keys.row,
+                   keysLine(layout_.keys.width, paused_, programKeys_), dim);
   screen_.present();
 }
 
@@ -500,15 +549,18 @@ void TuiHost::drawArena() {
   Machine& m = *machine_;
   render::RobotView robot = render::robotView(m);
   const Rect& a = layout_.arena;
+  const std::vector<DrawOp>& ops = m.canvas().displayList();
   bool stale = frame_.cols != a.width || frame_.rows != a.height || frameMode_ != mode_ ||
                frameCanvasVersion_ != m.canvas().version() || m.showsFlip() ||
-               !sameRobot(robot, frameRobot_);
+               frameTextOps_ != ops.size() || !sameRobot(robot, frameRobot_);
   if (stale) {
-    frame_ = render::renderArena(m.shownScreen(), m.canvas().background(), robot,
-                                 {a.width, a.height, mode_});
+    render::ArenaOptions options{a.width, a.height, mode_};
+    options.textOps = &ops;
+    frame_ = render::renderArena(m.shownScreen(), m.canvas().background(), robot, options);
     frameCanvasVersion_ = m.canvas().version();
     frameRobot_ = robot;
     frameMode_ = mode_;
+    frameTextOps_ = ops.size();
   }
   screen_.drawArena(frame_, a.col, a.row);
 }
@@ -560,7 +612,7 @@ void TuiHost::drawOverlays() {
   TermStyle banner;
   banner.reverse = true;
   banner.bold = true;
-  if (paused_ && !ended_) put(a.col + 1, a.row, " PAUSED  F2 resume  F3 step ", banner);
+  if (paused_ && !ended_) put(a.col + 1, a.row, " PAUSED  F2 run  F3 step  F7 over ", banner);
   if (box_) {
     int width = std::min(
         a.width - 2,
@@ -586,30 +638,97 @@ void TuiHost::drawOverlays() {
 void TuiHost::drawStatus() {
   Machine& m = *machine_;
   TuiStatus s;
-  s.file = file_;
-  s.line = static_cast<int>(loc_.line);
   s.state = stateText();
   s.speedFactor = clock_.factor();
   s.rSpeed = m.robotSpeed;
-  s.located = m.robot().located() || m.realRobot();
+  RealRobot* real = m.realRobot();
+  s.located = m.robot().located() || real;
   const Pose& pose = m.robotPose();
   s.x = pose.pos.x();
   s.y = pose.pos.y();
   s.heading = pose.heading;
   s.pen = m.robotPenDown();
-  // Read straight from the simulator: no trace event, no random number, no robot command.
-  if (m.robot().located() && !m.realRobot()) {
+  if (real) {
+    // What the robot itself reported last: no command is sent for the view.
+    const RealRobot::LinkStats& link = real->linkStats();
+    s.real = true;
+    s.port = real->name();
+    s.commands = link.commands;
+    if (link.replies > 0) {
+      s.bumper = link.last.bumper;
+      s.feel = link.last.feel;
+      s.lastReply = "cmd " + std::to_string(link.lastCode) + "," + std::to_string(link.lastParam) +
+                    " -> " + hex2(link.last.feel) + " " + hex2(link.last.bumper) + " " +
+                    hex2(link.last.sense) + " = " + std::to_string(link.last.result);
+    }
+    if (!link.fault.empty()) s.lastReply = link.fault;
+  } else if (m.robot().located()) {
+    // Read straight from the simulator: no trace event, no random number, no robot command.
     s.bumper = m.robot().bumper();
     s.feel = m.robot().feel();
   }
   s.range = lastRange_;
-  s.mode = modeName(mode_);
-  s.programKeys = programKeys_;
   const Rect& r = layout_.status;
-  std::vector<std::string> lines =
-      r.height >= 8 ? statusLines(s, r.width - 1) : compactStatusLines(s, r.width);
+  std::vector<std::string> lines = r.height >= static_cast<int>(statusLines(s, r.width).size())
+                                       ? statusLines(s, r.width - 1)
+                                       : compactStatusLines(s, r.width);
   for (int i = 0; i < r.height && i < static_cast<int>(lines.size()); ++i)
     screen_.drawText(r.col, r.row + i, lines[static_cast<size_t>(i)]);
+}
+
+void TuiHost::drawSource() {
+  const Rect& box = layout_.sourceBox;
+  if (box.height <= 0 || !sources_ || sources_->size() == 0) return;
+  uint32_t fileIndex = loc_.valid() && loc_.file < sources_->size() ? loc_.file : 0;
+  const SourceFile& file = sources_->file(fileIndex);
+  std::string name = file.name();
+  size_t slash = name.find_last_of('/');
+  if (slash != std::string::npos) name = name.substr(slash + 1);
+  // A box when there is room for one, else a header line.
+  Rect inner = layout_.source;
+  if (inner.height <= 0) {
+    TermStyle dim;
+    dim.dim = true;
+    std::string header = "-- " + name + " ";
+    header.resize(static_cast<size_t>(box.width), '-');
+    screen_.drawText(box.col, box.row, header, dim);
+    inner = {box.col, box.row + 1, box.width, box.height - 1};
+  } else {
+    screen_.drawBox(box.col, box.row, box.width, box.height, name);
+  }
+  auto marked = [&](uint32_t line) { return debugger_.hasBreakpoint(fileIndex, line); };
+  std::vector<PaneLine> lines = sourceLines(file, loc_.line, inner.height, inner.width, marked);
+  for (size_t i = 0; i < lines.size(); ++i) {
+    TermStyle s;
+    std::string text = lines[i].text;
+    if (lines[i].highlight) {
+      s.reverse = true;
+      s.bold = true;
+      text.resize(static_cast<size_t>(inner.width), ' ');
+    } else if (lines[i].marked) {
+      s.colour = screen_.colour();
+      s.fg = 0xFF5555;
+      s.bg = 0x000000;
+      s.bold = !screen_.colour();
+    }
+    screen_.drawText(inner.col, inner.row + static_cast<int>(i), text, s);
+  }
+}
+
+void TuiHost::drawVariables() {
+  const Rect& box = layout_.varsBox;
+  if (box.height <= 0 || layout_.vars.height <= 0) return;
+  std::string title = "variables";
+  int shown = layout_.vars.height;
+  int total = static_cast<int>(varLines_.size());
+  varScroll_ = std::clamp(varScroll_, 0, std::max(total - shown, 0));
+  if (total > shown)
+    title += " " + std::to_string(varScroll_ + 1) + "-" +
+             std::to_string(std::min(varScroll_ + shown, total)) + " of " + std::to_string(total);
+  screen_.drawBox(box.col, box.row, box.width, box.height, title);
+  for (int i = 0; i < shown && varScroll_ + i < total; ++i)
+    screen_.drawText(layout_.vars.col, layout_.vars.row + i,
+                     varLines_[static_cast<size_t>(varScroll_ + i)]);
 }
 
 void TuiHost::drawOutput() {
@@ -633,11 +752,13 @@ void TuiHost::drawOutput() {
     errorStyle.fg = 0xFF5555;
     errorStyle.bg = 0x000000;
     errorStyle.reverse = !screen_.colour();
-    screen_.drawText(r.col, r.row + r.height - 1, error_, errorStyle);
+    screen_.drawText(r.col, r.row + r.height - 1, error_.substr(0, static_cast<size_t>(r.width)),
+                     errorStyle);
   }
   int first = std::max(0, static_cast<int>(shown.size()) - room);
   for (int i = 0; i < room && first + i < static_cast<int>(shown.size()); ++i)
-    screen_.drawText(r.col, r.row + 1 + i, shown[static_cast<size_t>(first + i)]);
+    screen_.drawText(r.col, r.row + 1 + i,
+                     shown[static_cast<size_t>(first + i)].substr(0, static_cast<size_t>(r.width)));
 }
 
 }  // namespace rb::cli

@@ -63,6 +63,10 @@ class Host {
   virtual void onLine(SourceLoc /*loc*/) {}
   /// Called after each pixel or degree the robot moves, so a live view can animate it.
   virtual void animate() {}
+  /// Milliseconds each pixel or degree of robot motion takes besides rSpeed's: 0 for a run that
+  /// does not show the motion (a move at rSpeed 0 is then instantaneous); a live view gives the
+  /// time RobotBASIC takes to draw a step, so that motion is visible at rSpeed 0 too.
+  virtual double robotStepMs() const { return 0; }
 
   // ---- keyboard, mouse and dialogs (core/input/input.h). `who` names the built-in that asks, for
   // messages. The defaults are a run without keyboard or mouse: reads that do not block see

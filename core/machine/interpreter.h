@@ -54,6 +54,10 @@ class Interpreter {
   std::vector<VariableView> variables() const;
   /// Nested gosub and sub-call frames now (0: the main code).
   size_t callDepth() const { return frames_.size(); }
+  /// The name of the sub running now ("" in the main code and its gosubs).
+  std::string_view runningSub() const {
+    return sub_ >= 0 ? std::string_view(prog_.subs[static_cast<size_t>(sub_)].name) : std::string_view();
+  }
 
  private:
   struct Frame {

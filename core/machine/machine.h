@@ -79,8 +79,12 @@ class Machine {
   std::string input(std::string_view prompt);
   /// `delay`: lets time pass on the run's clock.
   void delay(double ms);
-  /// After each pixel or degree of robot motion: paces it at rSpeed and lets a live view draw.
+  /// After each pixel or degree of robot motion: paces it at rSpeed (plus the host's drawing
+  /// time, Host::robotStepMs) and lets a live view draw.
   void robotStepped();
+  /// Whether robot motion goes a pixel or degree at a time (rSpeed paces it, or a live view
+  /// shows it); otherwise a move is instantaneous.
+  bool animatesRobot() const;
   /// waitKey's prompt: printed like `print` without a line end, except when the same prompt is
   /// still the last thing printed (a loop that waits for a held key would fill the screen).
   void printPrompt(std::string_view prompt);

@@ -97,7 +97,7 @@ class Session:
 
 def status(screen, label):
     """A value of the status panel ("x", "state", ...)."""
-    m = re.search(r"\| " + re.escape(label) + r" +(\S[^|]*?)\s*$", screen, re.M)
+    m = re.search(r"[|+] " + re.escape(label) + r" +(\S[^|]*?)\s*$", screen, re.M)
     return m.group(1) if m else None
 
 
