@@ -4,8 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "lang/builtins.h"
+#include "machine/builtins.h"
 #include "lang/checker.h"
+#include "lang/code_dump.h"
 #include "exit_codes.h"
 #include "files.h"
 #include "program_loader.h"
@@ -19,6 +20,7 @@ struct CheckOptions {
   std::string format = "text";
   bool werror = false;
   bool listBuiltins = false;
+  bool dumpCode = false;  ///< also print each program's compiled code
   std::string target;  ///< "rb9": also warn about what the RB-9 robot cannot do
 };
 
@@ -34,7 +36,7 @@ const char* kindName(BuiltinKind k) {
 void listBuiltins(bool json) {
   if (json) std::printf("[\n");
   bool first = true;
-  for (const Builtin& b : builtinTable()) {
+  for (const Builtin& b : standardBuiltins().rows()) {
     std::string usage = std::string(b.name);
     if (b.kind == BuiltinKind::Function) usage += "(" + std::string(b.signature) + ")";
     else if (b.kind == BuiltinKind::Command && !b.signature.empty()) usage += " " + std::string(b.signature);
@@ -62,6 +64,10 @@ int executeCheck(const CheckOptions& opts) {
   }
   if (opts.files.empty()) {
     std::fprintf(stderr, "rb check: no files given (see rb check --help)\n");
+    return exitcode::kUsage;
+  }
+  if (opts.dumpCode && json) {
+    std::fprintf(stderr, "rb check: --dump-code prints text; leave out --format json\n");
     return exitcode::kUsage;
   }
   std::vector<std::string> files = expandProgramPaths(opts.files);
@@ -102,6 +108,10 @@ int executeCheck(const CheckOptions& opts) {
     } else {
       printDiagnostics(stdout, loaded.program->sources, loaded.diags, false);
     }
+    if (opts.dumpCode && loaded.compiled) {
+      std::string code = dumpCode(*loaded.compiled, loaded.program->sources);
+      std::fwrite(code.data(), 1, code.size(), stdout);
+    }
   }
   if (json) std::printf("%s]\n", firstJson ? "" : "\n");
   std::fflush(stdout);
@@ -126,6 +136,9 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember({"rb9"}));
   check->add_flag("--list-builtins", opts->listBuiltins,
                   "List every built-in command, function and constant, then exit");
+  check->add_flag("--dump-code", opts->dumpCode,
+                  "Also print each program's compiled code: one instruction a line, with its "
+                  "operands, jump targets, labels, subs and source lines");
   check->footer(
       "Reports every error rb run would reject before running, plus warnings: variables read but "
       "never assigned, blocks left open. Exit status: 0 no errors, 65 errors (or warnings with "

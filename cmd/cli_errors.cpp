@@ -32,7 +32,7 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& na
 std::vector<std::string> commandNames(const CLI::App& app) {
   std::vector<std::string> names;
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    names.push_back(sub->get_name());
+    if (!sub->get_group().empty()) names.push_back(sub->get_name());  // not the hidden ones
   names.push_back("help");
   return names;
 }

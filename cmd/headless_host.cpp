@@ -26,6 +26,10 @@ HeadlessHost::~HeadlessHost() { flush(); }
 void HeadlessHost::attachMachine(Machine& machine) { script_.useControls(&machine.controls); }
 
 void HeadlessHost::output(std::string_view text) {
+  if (outputHook) {
+    outputHook(text);
+    return;
+  }
   buffer_ += text;
   if (buffer_.size() >= kFlushAt) flush();
   // Output that cannot be written stops the program at once (runHeadless reports it, exit 74).

@@ -52,6 +52,8 @@ class HeadlessHost : public Host {
 
   /// Called before each statement of a program compiled for line tracing.
   std::function<void(SourceLoc)> lineHook;
+  /// When set, program output goes here instead of the output stream (rb trace's events).
+  std::function<void(std::string_view)> outputHook;
   /// Opens a real robot's port for rCommPort.
   std::function<std::unique_ptr<RobotLink>(int64_t)> robotOpener;
 

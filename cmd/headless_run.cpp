@@ -1,5 +1,6 @@
 #include "headless_run.h"
 
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 
@@ -44,9 +45,15 @@ int loadInputScript(const char* command, const RunOptions& opts, InputScript& sc
   return exitcode::kOk;
 }
 
+uint64_t countedSteps(const RunResult& result, uint64_t started) {
+  if (result.status == RunStatus::StepLimit) return result.steps;
+  return std::max(result.steps, started);
+}
+
 int runHeadless(const char* command, const RunOptions& opts, const CompileOptions& compile,
                 std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
-                std::function<void(SourceLoc)> onLine) {
+                std::function<void(SourceLoc)> onLine,
+                std::function<void(std::string_view)> onOutput) {
   if (int code = run.load(command, opts, compile)) return code;
 
   InputScript script;
@@ -54,6 +61,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
 
   auto host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
   host->lineHook = std::move(onLine);
+  host->outputHook = std::move(onOutput);
   host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
   if (std::string why = run.start(opts, std::move(host), observer); !why.empty()) {
     std::fprintf(stderr, "%s: %s\n", command, why.c_str());

@@ -25,8 +25,16 @@ int loadInputScript(const char* command, const RunOptions& opts, InputScript& sc
 /// errors and the runtime error are printed on stderr prefixed by `command` ("rb render").
 /// Returns the exit code rb should end with.
 /// `onLine`, when set, is called before each statement (compile with lineTracing for it).
+/// `onOutput`, when set, receives the program's output instead of `programOutput`.
 int runHeadless(const char* command, const RunOptions& opts, const CompileOptions& compile,
                 std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
-                std::function<void(SourceLoc)> onLine = nullptr);
+                std::function<void(SourceLoc)> onLine = nullptr,
+                std::function<void(std::string_view)> onOutput = nullptr);
+
+/// The statements a run executed, counting the one that failed. The interpreter counts steps
+/// in blocks, so after a runtime error its count stops at the last jump; a program compiled
+/// with lineTracing counts each statement as it starts (`started`), which is exact. At
+/// --max-steps the interpreter's count (the limit) is the one to report.
+uint64_t countedSteps(const RunResult& result, uint64_t started);
 
 }  // namespace rb::cli

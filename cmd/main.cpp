@@ -7,13 +7,16 @@
 #include "check_command.h"
 #include "cli_errors.h"
 #include "exit_codes.h"
+#include "ports_command.h"
 #include "render_command.h"
 #include "robot_command.h"
 #include "run_command.h"
+#include "test_command.h"
+#include "test_job.h"
 #include "trace_command.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"rb: run, check, trace and render RobotBASIC programs", "rb"};
+  CLI::App app{"rb: run, check, trace, render and test RobotBASIC programs", "rb"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rb " RB_VERSION);
   int exitCode = rb::exitcode::kOk;
@@ -22,6 +25,9 @@ int main(int argc, char** argv) {
   rb::cli::addTraceCommand(app, exitCode);
   rb::cli::addRenderCommand(app, exitCode);
   rb::cli::addRobotCommand(app, exitCode);
+  rb::cli::addPortsCommand(app, exitCode);
+  rb::cli::addTestCommand(app, exitCode);
+  rb::cli::addTestJobCommand(app, exitCode);
   app.footer("Run 'rb COMMAND --help' (or 'rb help COMMAND') for the options of a command. "
              "Manual: man rb.");
   rb::cli::useRbFailureMessages(app);

@@ -1,6 +1,7 @@
 #include "program_loader.h"
 
 #include "lang/checker.h"
+#include "machine/builtins.h"
 #include "exit_codes.h"
 #include "files.h"
 
@@ -22,7 +23,7 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
   FileSourceReader reader;
   LoadOptions loadOptions;
   loadOptions.libraryDirs = libraryDirs();
-  out.program = loadProgram(name, std::move(text), reader, loadOptions, out.diags);
+  out.program = loadProgram(name, std::move(text), reader, standardBuiltins(), loadOptions, out.diags);
   out.compiled = compileProgram(*out.program, options, out.diags);
   if (lint) lintProgram(*out.program, out.diags);
   out.diags.sort();

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "exit_codes.h"
+#include "robot_port.h"
 
 namespace rb::cli {
 
@@ -36,7 +37,7 @@ std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts) {
 std::string connectRealRobot(const RunOptions& opts, Machine& machine) {
   if (!opts.real) return "";
   try {
-    machine.useCommPort(-1);  // -1: the port --port names
+    machine.connectRobot(openRobotPort(std::nullopt, opts));  // the port --port names
   } catch (const RuntimeError& e) {
     return e.what();
   }
@@ -61,6 +62,7 @@ std::string ProgramRun::start(const RunOptions& opts, std::unique_ptr<Host> runH
   host->setSystem(sandbox.get());
   machine = std::make_unique<Machine>(*host, seed);
   machine->setObserver(observer);
+  machine->canvas().keepDisplayList(keepDisplayList);
   host->attachMachine(*machine);
   interpreter = std::make_unique<Interpreter>(*loaded.compiled, *machine);
   return connectRealRobot(opts, *machine);

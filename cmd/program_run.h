@@ -36,6 +36,9 @@ struct ProgramRun {
   /// Set to false before conclude() when reaching --max-steps is not a failure (rb render
   /// uses it to choose the moment of its picture): then it is neither printed nor exit 70.
   bool stepLimitIsError = true;
+  /// Set before start() when the screen's display list is needed afterwards (an SVG) or while
+  /// the run goes on (the live view's text as characters).
+  bool keepDisplayList = false;
 
   /// Loads and compiles FILE and prints its load errors on stderr, prefixed by `command`.
   /// Returns 0, or the exit code when it cannot run (66: no such file, 65: errors).

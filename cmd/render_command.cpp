@@ -107,6 +107,7 @@ int executeRender(const RenderOptions& opts) {
   HeadlessRun run;
   // For a picture, stopping after N steps is a way to choose the moment, not a failure.
   run.stepLimitIsError = false;
+  run.keepDisplayList = format == Format::Svg;
   int code = runHeadless("rb render", opts.run, CompileOptions{}, nullptr, nullptr, run);
   if (!run.ran) return code;  // nothing ran (load error, missing file): there is no picture
   if (run.result.status == RunStatus::StepLimit)

@@ -6,14 +6,14 @@
 
 namespace rb::cli {
 
-std::unique_ptr<RobotLink> openRobotPort(int64_t port, const RunOptions& opts) {
+std::unique_ptr<RobotLink> openRobotPort(std::optional<int64_t> programPort, const RunOptions& opts) {
   std::string path;
   if (!opts.port.empty()) {
     path = drivers::resolvePortOption(opts.port);
-  } else if (port < 0) {
+  } else if (!programPort) {
     throw RuntimeError("--real needs --port: the robot's serial port, a number (5 = COM5) or a device path");
   } else {
-    path = drivers::devicePathForPort(port);
+    path = drivers::devicePathForPort(*programPort);
   }
   drivers::SerialLinkOptions link;
   link.baud = opts.baud;

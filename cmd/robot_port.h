@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "robot/robot_link.h"
@@ -11,9 +12,10 @@
 
 namespace rb::cli {
 
-/// Opens the robot for `rCommPort port` (or --real, which passes -1): a non-empty --port wins
-/// over the program's number. Throws RuntimeError with a clear message naming the port when it
-/// cannot be opened, and when --real comes without --port.
-std::unique_ptr<RobotLink> openRobotPort(int64_t port, const RunOptions& opts);
+/// Opens the robot's serial link. `programPort` is the number of a program's `rCommPort`, or
+/// nullopt for --real: the port --port names. A non-empty --port wins over the program's number.
+/// Throws RuntimeError with a clear message naming the port when it cannot be opened, and when
+/// --real comes without --port.
+std::unique_ptr<RobotLink> openRobotPort(std::optional<int64_t> programPort, const RunOptions& opts);
 
 }  // namespace rb::cli

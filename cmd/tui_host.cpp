@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
+#include "png_writer.h"
 #include "robot_view.h"
+#include "sixel_image.h"
 #include "svg_writer.h"
 #include "tui_panes.h"
 
@@ -96,6 +100,8 @@ TuiHost::TuiHost(render::CursesScreen& screen, TuiSettings settings)
     : screen_(screen), settings_(std::move(settings)), mode_(settings_.mode) {
   clock_.setFactor(std::clamp(settings_.speed, kMinFactor, kMaxFactor));
   held_.setReportsReleases(screen_.reportsKeyReleases());
+  pixels_ = settings_.pixels && screen_.sixel();
+  if (settings_.pixels && !pixels_) pixelsNote_ = "(no pixels: the terminal shows no sixel images)";
   // --paused: a step armed from the start ends before the first statement.
   if (settings_.paused) debugger_.step(Debugger::Step::Into, 0);
 }
@@ -128,7 +134,7 @@ void TuiHost::wait(double ms) {
   paceTarget_ = target;
   for (;;) {
     double left = target - clock_.now();
-    if (left <= 0) break;
+    if (left <= 0 || stopRequested()) break;
     if (paused_) {
       pump(50);
       continue;
@@ -139,8 +145,8 @@ void TuiHost::wait(double ms) {
 }
 
 bool TuiHost::poll() {
-  pump(0);  // throws StopRun when the user quit
-  return true;
+  pump(0);
+  return !stopRequested();
 }
 
 void TuiHost::onLine(SourceLoc loc) {
@@ -178,7 +184,7 @@ void TuiHost::holdWhilePaused() {
   if (!paused_) return;
   refreshVariables();
   draw();
-  while (paused_ && debugger_.armed() == Debugger::Step::None) pump(50);
+  while (paused_ && debugger_.armed() == Debugger::Step::None && !stopRequested()) pump(50);
 }
 
 void TuiHost::tick() {
@@ -195,7 +201,6 @@ void TuiHost::pump(int waitMs) {
   if (e.kind != TermEvent::None) handle(e);
   lastTick_ = Clock::now();
   if (lastTick_ - lastFrame_ >= kFrameInterval) draw();
-  if (quit_) throw StopRun{};
 }
 
 void TuiHost::blockUntil(const char* state, const std::function<bool()>& done) {
@@ -206,7 +211,7 @@ void TuiHost::blockUntil(const char* state, const std::function<bool()>& done) {
   Waiting waiting(waitingFor_, state);
   draw();
   // Paused, the program takes nothing: what arrives waits until the view resumes.
-  while (paused_ || !done()) pump(20);
+  while (!stopRequested() && (paused_ || !done())) pump(20);
 }
 
 int64_t TuiHost::heldKey(std::string_view) {
@@ -221,6 +226,7 @@ int64_t TuiHost::waitKey(std::string_view) {
   programKeys_ = true;
   // Each press (or auto-repeat of a held key) answers one waitKey, in the order typed.
   blockUntil("waiting for a key", [this] { return !typed_.empty(); });
+  if (typed_.empty()) return 0;  // the user quit
   int64_t key = typed_.front();
   typed_.pop_front();
   return key;
@@ -237,6 +243,7 @@ MouseState TuiHost::mouse(std::string_view) {
 
 MouseState TuiHost::waitClick(std::string_view) {
   blockUntil("waiting for a click", [this] { return !clicks_.empty(); });
+  if (clicks_.empty()) return {};  // the user quit
   MouseState click = clicks_.front();
   clicks_.pop_front();
   latched_ = 0;
@@ -256,12 +263,7 @@ void TuiHost::clipboardChanged(std::string_view text) {
 void TuiHost::messageBox(std::string_view text, std::string_view title) {
   box_ = Box{std::string(title), std::string(text)};
   boxAnswered_ = false;
-  try {
-    blockUntil("message box", [this] { return boxAnswered_; });
-  } catch (...) {
-    box_.reset();
-    throw;
-  }
+  blockUntil("message box", [this] { return boxAnswered_; });
   box_.reset();
 }
 
@@ -271,13 +273,9 @@ std::optional<std::string> TuiHost::inputLine(std::string_view prompt) {
   inputDone_ = inputEof_ = false;
   inputPrompt_ = prompt;
   inputText_.clear();
-  try {
-    blockUntil("input", [this] { return inputDone_; });
-  } catch (...) {
-    inputActive_ = false;
-    throw;
-  }
+  blockUntil("input", [this] { return inputDone_; });
   inputActive_ = false;
+  if (stopRequested()) return std::nullopt;  // the user quit
   appendOutput(inputPrompt_ + inputText_ + "\n");
   if (inputEof_) return std::nullopt;
   return inputText_;
@@ -302,11 +300,7 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
     default: endState_ = "stopped (limit)"; break;
   }
   refreshVariables();
-  try {
-    blockUntil("", [this] { return endKey_; });
-  } catch (const StopRun&) {
-    // quitting ends the final screen too
-  }
+  blockUntil("", [this] { return endKey_; });  // quitting ends the final screen too
 }
 
 void TuiHost::refreshVariables() {
@@ -321,6 +315,7 @@ void TuiHost::handle(const TermEvent& e) {
   switch (e.kind) {
     case TermEvent::Resize:
       needLayout_ = true;
+      sixelSent_ = false;
       lastFrame_ = {};  // draw at once
       break;
     case TermEvent::Key:
@@ -470,25 +465,24 @@ void TuiHost::changeSpeed(double by) {
 }
 
 void TuiHost::quit(int code) {
-  quit_ = true;
   quitCode_ = code;
+  requestStop();
 }
 
 void TuiHost::cycleMode() {
   using render::CellMode;
-  CellMode order[] = {CellMode::Ascii, CellMode::HalfBlock, CellMode::Braille};
-  int at = 0;
-  for (int i = 0; i < 3; ++i)
-    if (order[i] == mode_) at = i;
-  for (int k = 1; k <= 3; ++k) {
-    CellMode m = order[(at + k) % 3];
-    bool ok =
-        m == CellMode::Ascii || (screen_.unicode() && (m == CellMode::Braille || screen_.colour()));
-    if (ok) {
-      mode_ = m;
-      return;
-    }
-  }
+  // The character modes the terminal can show, then pixels when it shows sixel images.
+  std::vector<std::pair<CellMode, bool>> modes = {{CellMode::Ascii, false}};
+  if (screen_.unicode() && screen_.colour()) modes.push_back({CellMode::HalfBlock, false});
+  if (screen_.unicode()) modes.push_back({CellMode::Braille, false});
+  if (screen_.sixel()) modes.push_back({mode_, true});
+  size_t at = 0;
+  for (size_t i = 0; i < modes.size(); ++i)
+    if (modes[i].second == pixels_ && (pixels_ || modes[i].first == mode_)) at = i;
+  auto next = modes[(at + 1) % modes.size()];
+  if (!next.second) mode_ = next.first;
+  pixels_ = next.second;
+  sixelSent_ = false;
 }
 
 // ---- drawing
@@ -502,14 +496,19 @@ std::string TuiHost::stateText() const {
 
 void TuiHost::draw() {
   lastFrame_ = Clock::now();
+  // A real robot connected (or gone, rCommPort 0) changes the status panel's size.
+  if (machine_ && (machine_->realRobot() != nullptr) != layoutReal_) needLayout_ = true;
   if (needLayout_) {
-    layout_ = layoutTui(screen_.cols(), screen_.rows());
+    bool real = machine_ && machine_->realRobot();
+    layout_ = layoutTui(screen_.cols(), screen_.rows(), kStatusRows + (real ? kLinkRows : 0));
+    layoutReal_ = real;
     needLayout_ = false;
     refreshVariables();
   }
   if (redraw_) {
     screen_.redrawAll();
     redraw_ = false;
+    sixelSent_ = false;
   }
   screen_.beginFrame();
   if (layout_.tooSmall) {
@@ -524,7 +523,8 @@ void TuiHost::draw() {
   TermStyle bar;
   bar.reverse = true;
   std::string title = " rb run " + settings_.fileName + "   " + stateText() + "   view " +
-                      modeName(mode_);
+                      (pixels_ ? "pixels" : modeName(mode_));
+  if (!pixelsNote_.empty()) title += "   " + pixelsNote_;
   if (ended_) title += "   (press any key to exit)";
   title.resize(static_cast<size_t>(layout_.title.width), ' ');
   screen_.drawText(0, 0, title, bar);
@@ -561,8 +561,25 @@ void TuiHost::drawArena() {
     frameRobot_ = robot;
     frameMode_ = mode_;
     frameTextOps_ = ops.size();
+    sixelSent_ = false;
   }
-  screen_.drawArena(frame_, a.col, a.row);
+  if (!pixels_) {
+    screen_.drawArena(frame_, a.col, a.row);
+    return;
+  }
+  // Pixels: the arena's cells stay blank (curses leaves them alone) and the image goes over them,
+  // sent again only when the picture changed or the terminal was cleared.
+  std::string blank(static_cast<size_t>(a.width), ' ');
+  for (int r = 0; r < a.height; ++r) screen_.drawText(a.col, a.row + r, blank);
+  if (sixelSent_) return;
+  auto [cw, ch] = screen_.cellPixels();
+  if (cw <= 0 || ch <= 0) {
+    cw = 10;  // a terminal that does not tell its cell size: a common one
+    ch = 20;
+  }
+  render::RgbImage image = render::composeImage(m.shownScreen(), robot, 1);
+  screen_.overlayAt(a.col, a.row, render::sixelImage(image, a.width * cw, a.height * ch));
+  sixelSent_ = true;
 }
 
 void TuiHost::drawOverlays() {
@@ -612,7 +629,9 @@ void TuiHost::drawOverlays() {
   TermStyle banner;
   banner.reverse = true;
   banner.bold = true;
-  if (paused_ && !ended_) put(a.col + 1, a.row, " PAUSED  F2 run  F3 step  F7 over ", banner);
+  // (Over a sixel image the banner would be drawn over again: the title says paused.)
+  if (paused_ && !ended_ && !pixels_)
+    put(a.col + 1, a.row, " PAUSED  F2 run  F3 step  F7 over ", banner);
   if (box_) {
     int width = std::min(
         a.width - 2,

@@ -113,7 +113,8 @@ class TuiHost : public Host, public RobotObserver {
   };
 
   /// Reads the terminal (waiting up to `waitMs` for the first event) and draws a frame when
-  /// one is due. Throws StopRun when the user quit.
+  /// one is due. A quit key requests the run's stop (Host::requestStop): every loop that waits
+  /// here ends at once then, and the interpreter stops after the call in progress.
   void pump(int waitMs);
   /// pump(0), at most every few milliseconds: for hooks called very often.
   void tick();
@@ -161,6 +162,7 @@ class TuiHost : public Host, public RobotObserver {
   render::CellMode mode_;
   TuiLayout layout_;
   bool needLayout_ = true;
+  bool layoutReal_ = false;  ///< the layout has room for a real robot's link rows
   bool redraw_ = false;  ///< Ctrl-L: draw every cell again
 
   RunClock clock_;
@@ -173,7 +175,6 @@ class TuiHost : public Host, public RobotObserver {
 
   Debugger debugger_;
   bool paused_ = false;
-  bool quit_ = false;
   int quitCode_ = 0;
   bool ended_ = false;  ///< the run is over: the final screen is shown
   bool endKey_ = false;
@@ -223,6 +224,10 @@ class TuiHost : public Host, public RobotObserver {
   render::RobotView frameRobot_;
   render::CellMode frameMode_ = render::CellMode::Ascii;
   size_t frameTextOps_ = 0;
+  // --cells pixels: the arena as a sixel image.
+  bool pixels_ = false;
+  bool sixelSent_ = false;  ///< the image of frame_ is on the terminal
+  std::string pixelsNote_;  ///< why --cells pixels shows characters instead
 };
 
 }  // namespace rb::cli

@@ -55,7 +55,7 @@ std::string bitsText(int bits, const int* values, const char* const* names, int 
 
 }  // namespace
 
-TuiLayout layoutTui(int cols, int rows) {
+TuiLayout layoutTui(int cols, int rows, int statusRows) {
   TuiLayout l;
   if (cols < kMinCols || rows < kMinRows) {
     l.tooSmall = true;
@@ -78,7 +78,7 @@ TuiLayout layoutTui(int cols, int rows) {
     l.output = {0, below, l.arenaBox.width, bottom - below};
     // The panel: status, then the source and the variables in boxes.
     int col = l.arenaBox.width + 1, width = cols - col, top = 1, height = bottom - top;
-    int status = height >= kStatusRows + 12 ? kStatusRows : 3;
+    int status = height >= statusRows + 12 ? statusRows : 3;
     l.status = {col, top, width, status};
     int rest = height - status;
     int source = rest >= 10 ? rest / 2 : rest;

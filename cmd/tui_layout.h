@@ -33,13 +33,16 @@ struct TuiLayout {
 
 constexpr int kMinCols = 40;
 constexpr int kMinRows = 12;
-/// The status panel's lines when it has room for all of them.
+/// The status panel's lines when it has room for all of them (a real robot adds kLinkRows).
 constexpr int kStatusRows = 9;
+constexpr int kLinkRows = 3;
 
 /// Lays out a terminal of cols x rows cells. With room (72 columns or more) the arena is on the
 /// left with the output under it, and the status, source and variables panes on the right;
-/// narrower, everything is stacked and the variables pane is left out.
-TuiLayout layoutTui(int cols, int rows);
+/// narrower, everything is stacked and the variables pane is left out. The status panel gets
+/// `statusRows` rows beside the arena when 12 rows are left for the source and variables, else
+/// three (its compact form).
+TuiLayout layoutTui(int cols, int rows, int statusRows = kStatusRows);
 
 /// The screen pixel shown at the centre of an arena cell (terminal coordinates), clamped to the
 /// 800 x 600 screen when the cell is outside the arena.

@@ -102,6 +102,7 @@ int runTui(const RunOptions& opts) {
     }
     view.debugger().addBreakpoint(at->first, at->second);
   }
+  run.keepDisplayList = true;  // the text the program draws, shown as characters
   if (std::string failed = run.start(opts, std::move(host), &view); !failed.empty()) {
     screen.reset();
     std::fprintf(stderr, "%s: %s\n", kCommand, failed.c_str());

@@ -12,9 +12,11 @@
 #include <string>
 
 #include "lang/checker.h"
+#include "lang/code_dump.h"
 #include "lang/compiler.h"
 #include "base/diagnostic.h"
 #include "lang/loader.h"
+#include "machine/builtins.h"
 
 namespace {
 
@@ -79,7 +81,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   rb::LoadOptions options;
   options.libraryDirs.push_back("lib");  // so `#include "helpers.bas"` resolves through a lib dir
   std::unique_ptr<rb::LoadedProgram> loaded =
-      rb::loadProgram("fuzz.bas", text, reader, options, loadDiags);
+      rb::loadProgram("fuzz.bas", text, reader, rb::standardBuiltins(), options, loadDiags);
   if (!loaded) __builtin_trap();  // loadProgram promises a usable result
 
   for (bool lineTracing : {false, true}) {
@@ -89,6 +91,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::unique_ptr<rb::Program> program = rb::compileProgram(*loaded, compileOptions, diags);
     // The contract of compileProgram: a program exactly when there are no errors.
     if ((program != nullptr) == diags.hasErrors()) __builtin_trap();
+    if (program) sink += rb::dumpCode(*program, loaded->sources).size();  // the dump reads every operand
     if (!lineTracing) rb::lintProgram(*loaded, diags);
     formatAll(loaded->sources, diags);
   }

@@ -191,6 +191,13 @@ void overlayText(ArenaFrame& frame, const std::vector<DrawOp>& ops,
   }
   const double cellW = static_cast<double>(kScreenW) / frame.cols;
   const double cellH = static_cast<double>(kScreenH) / frame.rows;
+  // A character's cell: the one under the centre of its box.
+  struct Placed {
+    int col, row;
+    std::string glyph;
+    Colour colour, background;
+  };
+  std::vector<Placed> placed;
   for (size_t i = from; i < ops.size(); ++i) {
     const DrawOp& op = ops[i];
     if (op.kind != DrawOp::Text || op.text.empty() || op.points.size() < 2) continue;
@@ -200,8 +207,6 @@ void overlayText(ArenaFrame& frame, const std::vector<DrawOp>& ops,
     const int row = static_cast<int>(std::floor((y0 + y1) / 2.0 / cellH));
     if (row < 0 || row >= frame.rows) continue;
     for (size_t k = 0; k < op.text.size(); ++k) {
-      std::string glyph = cellCharacter(static_cast<unsigned char>(op.text[k]));
-      if (glyph.empty()) continue;
       const int bx0 = static_cast<int>(std::floor(x0 + advance * static_cast<double>(k)));
       const int bx1 = static_cast<int>(std::floor(x0 + advance * static_cast<double>(k + 1)));
       const int col = static_cast<int>(std::floor((bx0 + bx1) / 2.0 / cellW));
@@ -217,12 +222,30 @@ void overlayText(ArenaFrame& frame, const std::vector<DrawOp>& ops,
           else around.add(c, 1);
         }
       if (!shows) continue;
-      Cell& cell = frame.at(col, row);
-      setGlyph(cell, glyph);
-      cell.fg = colourToRgb(op.colour);
-      cell.bg = colourToRgb(around.any() ? around.dominant() : background);
+      Colour bg = around.any() ? around.dominant() : background;
+      placed.push_back({col, row, cellCharacter(static_cast<unsigned char>(op.text[k])), op.colour, bg});
+      // The other cells whose centres the character's box covers show its background: the
+      // pixels of the glyph are shown by the character itself.
+      for (int r = 0; r < frame.rows; ++r) {
+        const double cy = (r + 0.5) * cellH;
+        if (cy < y0 || cy >= y1) continue;
+        for (int c = 0; c < frame.cols; ++c) {
+          const double cx = (c + 0.5) * cellW;
+          if (cx < bx0 || cx >= bx1) continue;
+          placed.push_back({c, r, "", op.colour, bg});
+        }
+      }
     }
   }
+  // Blanks first, so that a neighbour's blank never covers a character.
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Placed& p : placed) {
+      if (p.glyph.empty() != (pass == 0)) continue;
+      Cell& cell = frame.at(p.col, p.row);
+      setGlyph(cell, p.glyph.empty() ? std::string(" ") : p.glyph);
+      cell.fg = colourToRgb(p.colour);
+      cell.bg = colourToRgb(p.background);
+    }
 }
 
 }  // namespace

@@ -41,10 +41,11 @@ inline std::unique_ptr<PictureRun> runForPicture(const std::string& text, RunLim
   rb::test::MemoryReader reader;
   reader.files["test.bas"] = text;
   DiagnosticList diags;
-  auto loaded = loadProgram("test.bas", text, reader, {}, diags);
+  auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
   auto program = compileProgram(*loaded, {}, diags);
   for (const Diagnostic& d : diags.all()) run->diagnostics += formatDiagnostic(loaded->sources, d);
   run->machine = std::make_unique<Machine>(run->host, 1);
+  run->machine->canvas().keepDisplayList(true);  // the SVG tests read it
   if (!program) return run;
   run->loaded = true;
   Interpreter interp(*program, *run->machine);

@@ -7,8 +7,12 @@ packages=(
   cmake ninja-build g++ pkg-config
   libcli11-dev catch2 libeigen3-dev libpng-dev libncurses-dev
   libfreetype-dev fonts-liberation2   # text: FreeType rasterizes the Liberation fonts compiled into rb
+  libtomlplusplus-dev nlohmann-json3-dev   # rb test's assignment files (TOML) and JSON reports
+  libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
+  libserialport-dev     # rb ports: the serial ports and what is known of each
+  libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
   python3               # golden-test helpers and PNG checks
   lua5.4 yabasic brandy hyperfine   # benchmark peers
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)

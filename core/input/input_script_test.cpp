@@ -57,7 +57,7 @@ Run runWith(const std::string& program, std::string_view events) {
   DiagnosticList diags;
   test::MemoryReader reader;
   reader.files["test.bas"] = program;
-  auto loaded = loadProgram("test.bas", program, reader, {}, diags);
+  auto loaded = loadProgram("test.bas", program, reader, standardBuiltins(), {}, diags);
   auto compiled = compileProgram(*loaded, {}, diags);
   Run r;
   if (!compiled) {

@@ -8,92 +8,129 @@ namespace {
 
 using Visit = std::function<void(std::string_view, SourceLoc, NameUse)>;
 
-void walkExpr(const Expr* e, const Visit& visit) {
-  if (!e) return;
-  switch (e->kind) {
-    case ExprKind::Var:
-      if (!findAnyBuiltin(e->text)) visit(e->text, e->loc, NameUse::Read);
-      break;
-    case ExprKind::Index:
-      if (!findAnyBuiltin(e->text)) visit(e->text, e->loc, NameUse::Read);
-      for (const Expr* a : e->args) walkExpr(a, visit);
-      break;
-    default:
-      for (const Expr* a : e->args) walkExpr(a, visit);
-      break;
-  }
-}
+/// Walks the names of one statement; built-in names are not variables and are skipped.
+class NameWalker {
+ public:
+  NameWalker(const BuiltinTable& builtins, const Visit& visit) : builtins_(builtins), visit_(visit) {}
 
-/// A target that receives a value: a variable or an array element.
-void walkTarget(const Expr* e, NameUse use, const Visit& visit) {
-  if (!e) return;
-  if (findAnyBuiltin(e->text)) return;
-  if (e->kind == ExprKind::Index) {
-    visit(e->text, e->loc, use == NameUse::Write ? NameUse::ArrayWrite : NameUse::ReadWrite);
-    for (const Expr* a : e->args) walkExpr(a, visit);
-  } else if (e->kind == ExprKind::Var) {
-    visit(e->text, e->loc, use);
-  } else {
-    walkExpr(e, visit);
+  void expr(const Expr* e) const {
+    if (!e) return;
+    switch (e->kind) {
+      case ExprKind::Var:
+        name(e->text, e->loc, NameUse::Read);
+        break;
+      case ExprKind::Index:
+        name(e->text, e->loc, NameUse::Read);
+        for (const Expr* a : e->args) expr(a);
+        break;
+      default:
+        for (const Expr* a : e->args) expr(a);
+        break;
+    }
   }
-}
+
+  /// A target that receives a value: a variable or an array element (nothing of a built-in's
+  /// name, which the compiler rejects).
+  void target(const Expr* e, NameUse use) const {
+    if (!e || builtins_.findAny(e->text)) return;
+    if (e->kind == ExprKind::Index) {
+      name(e->text, e->loc, use == NameUse::Write ? NameUse::ArrayWrite : NameUse::ReadWrite);
+      for (const Expr* a : e->args) expr(a);
+    } else if (e->kind == ExprKind::Var) {
+      name(e->text, e->loc, use);
+    } else {
+      expr(e);
+    }
+  }
+
+  void name(std::string_view text, SourceLoc loc, NameUse use) const {
+    if (!builtins_.findAny(text)) visit_(text, loc, use);
+  }
+
+ private:
+  const BuiltinTable& builtins_;
+  const Visit& visit_;
+};
 
 }  // namespace
 
-void forEachName(const Stmt& s, const Visit& visit,
+void forEachName(const Stmt& s, const BuiltinTable& builtins, const Visit& visit,
                  const std::function<bool(std::string_view, size_t)>& isByRefArg) {
+  NameWalker walk(builtins, visit);
   switch (s.kind) {
     case StmtKind::Assign:
-      walkTarget(s.target, s.op == Tok::Assign ? NameUse::Write : NameUse::ReadWrite, visit);
-      walkExpr(s.value, visit);
+      walk.target(s.target, s.op == Tok::Assign ? NameUse::Write : NameUse::ReadWrite);
+      walk.expr(s.value);
       break;
     case StmtKind::Input:
-      walkExpr(s.value, visit);
-      walkTarget(s.target, NameUse::Write, visit);
+      walk.expr(s.value);
+      walk.target(s.target, NameUse::Write);
       break;
     case StmtKind::For:
-      for (const Expr* e : s.exprs) walkExpr(e, visit);
-      walkTarget(s.target, NameUse::Write, visit);
+      for (const Expr* e : s.exprs) walk.expr(e);
+      walk.target(s.target, NameUse::Write);
       break;
     case StmtKind::Dim:
       for (const Expr* e : s.exprs) {
-        if (!findAnyBuiltin(e->text)) visit(e->text, e->loc, NameUse::Write);
-        for (const Expr* a : e->args) walkExpr(a, visit);
+        walk.name(e->text, e->loc, NameUse::Write);
+        for (const Expr* a : e->args) walk.expr(a);
       }
       break;
     case StmtKind::Data:
       visit(s.name, s.nameLoc, NameUse::ArrayWrite);
-      for (const Expr* e : s.exprs) walkExpr(e, visit);
+      for (const Expr* e : s.exprs) walk.expr(e);
       break;
     case StmtKind::Command: {
-      const Builtin* b = findBuiltin(s.name, BuiltinKind::Command);
+      const Builtin* b = builtins.find(s.name, BuiltinKind::Command);
       int n = static_cast<int>(s.exprs.size());
       for (int i = 0; i < n; ++i) {
         bool out = b && !b->printList && b->acceptsCount(n) && b->param(n, i).out;
-        if (out) walkTarget(s.exprs[static_cast<size_t>(i)], NameUse::Write, visit);
-        else walkExpr(s.exprs[static_cast<size_t>(i)], visit);
+        if (out) walk.target(s.exprs[static_cast<size_t>(i)], NameUse::Write);
+        else walk.expr(s.exprs[static_cast<size_t>(i)]);
       }
       break;
     }
     case StmtKind::Call:
       for (size_t i = 0; i < s.exprs.size(); ++i) {
-        if (isByRefArg(s.name, i)) walkTarget(s.exprs[i], NameUse::ReadWrite, visit);
-        else walkExpr(s.exprs[i], visit);
+        if (isByRefArg(s.name, i)) walk.target(s.exprs[i], NameUse::ReadWrite);
+        else walk.expr(s.exprs[i]);
       }
       break;
     case StmtKind::Sub:
       for (const Param& p : s.params) visit(p.name, p.loc, NameUse::Write);
       break;
     case StmtKind::IfLine:
-      walkExpr(s.value, visit);
-      for (const Stmt* b : s.body) forEachName(*b, visit, isByRefArg);
+      walk.expr(s.value);
+      for (const Stmt* b : s.body) forEachName(*b, builtins, visit, isByRefArg);
       break;
     default:
-      walkExpr(s.value, visit);
-      walkExpr(s.target, visit);
-      for (const Expr* e : s.exprs) walkExpr(e, visit);
+      walk.expr(s.value);
+      walk.expr(s.target);
+      for (const Expr* e : s.exprs) walk.expr(e);
       break;
   }
+}
+
+std::vector<SubSpan> subSpans(const std::vector<Stmt*>& stmts) {
+  std::vector<SubSpan> spans;
+  for (size_t i = 0; i < stmts.size(); ++i) {
+    if (stmts[i]->kind != StmtKind::Sub) continue;
+    SubSpan span{i, stmts.size(), SubEnd::EndOfFile};
+    for (size_t j = i + 1; j < stmts.size(); ++j) {
+      const Stmt* s = stmts[j];
+      if (s->loc.file != stmts[i]->loc.file) {
+        span = {i, j, SubEnd::EndOfFile};
+        break;
+      }
+      if (s->kind == StmtKind::Sub || s->kind == StmtKind::EndSub) {
+        span = {i, j, s->kind == StmtKind::Sub ? SubEnd::NextSub : SubEnd::EndSub};
+        break;
+      }
+    }
+    spans.push_back(span);
+    i = span.end - 1;  // the next sub starts at `end` at the earliest
+  }
+  return spans;
 }
 
 namespace {

@@ -1,21 +1,24 @@
 #pragma once
-// The one table of built-in commands, functions and constants. The parser asks it which names
-// are commands, the compiler resolves calls and checks argument counts against it, the
-// interpreter dispatches through its handlers, and `rb check --list-builtins` and the docs print
-// it. To add a built-in: one row in builtins.cpp and one handler in the builtins_*.cpp of its
-// family.
+// The built-in table's mechanism: what a built-in command, function or constant is (`Builtin`),
+// how its signature is read, the table a program is compiled against (`BuiltinTable`) and the
+// arguments a handler receives (`Args`). The rows of the standard table, with their handlers,
+// live in machine/builtins.cpp: the language knows how to use a table, not what is in it.
+//
+// The front end (loader, parser, compiler, checker) is given the table it compiles against;
+// the compiled Program keeps it, so the interpreter dispatches through the same rows.
 
 #include <cstdint>
-#include <span>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "lang/value.h"
 
 namespace rb {
 
-class Machine;
+class Machine;  // what a handler works on; defined in machine/, opaque to the language
 class Args;
 
 enum class BuiltinKind : uint8_t { Command, Function, Constant };
@@ -28,6 +31,7 @@ struct ParamSpec {
   bool out = false;  ///< written `&name`: the argument must be a variable that receives a result
 };
 
+/// One row of a built-in table.
 struct Builtin {
   Builtin(std::string_view name_, BuiltinKind kind_, std::string_view group_,
           std::string_view signature_, BuiltinFn fn_, int64_t constant_, std::string_view help_)
@@ -37,7 +41,10 @@ struct Builtin {
   std::string_view name;       ///< canonical spelling, e.g. "rForward"
   BuiltinKind kind;
   std::string_view group;      ///< "math", "string", "time", "robot", "graphics", "input", ...
-  std::string_view signature;  ///< e.g. "x, y [, heading [, radius [, colour]]]", "[prompt,] &key"
+  /// `[...]` is optional, `&name` receives a result (the argument must be a variable),
+  /// `name...` repeats, and a final `items...` takes a print-style list (items separated by
+  /// ',' or ';'). E.g. "x, y [, heading [, radius [, colour]]]", "[prompt,] &key".
+  std::string_view signature;
   BuiltinFn fn;                ///< commands and functions
   int64_t constant;            ///< constants
   std::string_view help;       ///< one line
@@ -56,16 +63,63 @@ struct Builtin {
   std::string arityText() const;
 };
 
-/// Every built-in, in table order.
-const std::vector<Builtin>& builtinTable();
-/// Case-insensitive lookup of a name of the given kind; nullptr when there is none.
-const Builtin* findBuiltin(std::string_view name, BuiltinKind kind);
-/// Any kind.
-const Builtin* findAnyBuiltin(std::string_view name);
-/// Index of a builtin in builtinTable().
-inline uint32_t builtinIndex(const Builtin* b) {
-  return static_cast<uint32_t>(b - builtinTable().data());
-}
+/// Where a program puts a name, for the one rule about built-in names (BuiltinTable::misuse).
+enum class NamePlace : uint8_t {
+  Statement,  ///< the first word of a statement: `name args`
+  Value,      ///< read in an expression: `x = name`
+  Call,       ///< called in an expression: `x = name(args)`
+  Array,      ///< used as an array: `name[i]`, `dim name[n]`
+  Store,      ///< receives a value: assignment, input, for, data, an output or by-reference argument
+  Sub,        ///< a sub's name, where it is declared or called with `call`
+};
+
+/// A table of built-ins, looked up by name without regard to case. A name may be a command and
+/// a function at once (MsgBox), never two of one kind.
+class BuiltinTable {
+ public:
+  /// Derives every row's arity and parameter forms from its signature. A malformed signature
+  /// or a name given twice for one kind is a programming error: std::logic_error.
+  explicit BuiltinTable(std::vector<Builtin> rows);
+
+  BuiltinTable(const BuiltinTable&) = delete;
+  BuiltinTable& operator=(const BuiltinTable&) = delete;
+
+  /// Every row, in table order.
+  const std::vector<Builtin>& rows() const { return rows_; }
+  /// The row at `index` (as indexOf gives it; compiled code calls built-ins by index).
+  const Builtin& at(uint32_t index) const { return rows_[index]; }
+  uint32_t indexOf(const Builtin& b) const { return static_cast<uint32_t>(&b - rows_.data()); }
+
+  /// The built-in of that kind named `name` (any case), or nullptr.
+  const Builtin* find(std::string_view name, BuiltinKind kind) const;
+  /// A built-in of any kind named `name` (a constant, else a function, else a command).
+  const Builtin* findAny(std::string_view name) const;
+  /// The canonical names of one kind, for "did you mean".
+  const std::vector<std::string_view>& names(BuiltinKind kind) const {
+    return names_[static_cast<size_t>(kind)];
+  }
+
+  /// The one place that decides what a built-in name may be: nullopt when `name` may stand at
+  /// `place` (it names no built-in, or a command as a statement, a constant as a value, a
+  /// function called, a constant as a sub name), otherwise the error, always shaped
+  /// "cannot <use> 'name': it is a built-in <kind>[; <how to use it>]".
+  std::optional<std::string> misuse(std::string_view name, NamePlace place) const;
+
+ private:
+  /// Hashing and comparing names without regard to ASCII case, without building a lower-case
+  /// copy for every lookup.
+  struct FoldedHash {
+    size_t operator()(std::string_view s) const;
+  };
+  struct FoldedEqual {
+    bool operator()(std::string_view a, std::string_view b) const;
+  };
+  using Index = std::unordered_map<std::string_view, uint32_t, FoldedHash, FoldedEqual>;
+
+  std::vector<Builtin> rows_;
+  Index byKind_[3];
+  std::vector<std::string_view> names_[3];
+};
 
 /// The arguments a handler receives, with typed accessors that raise runtime errors naming the
 /// built-in and the argument.

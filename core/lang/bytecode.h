@@ -3,9 +3,11 @@
 // addresses, variables are slots, so goto/gosub may enter and leave blocks freely.
 //
 // Operands are 32-bit: the top two bits select a base (global slots, the current frame, the
-// constant pool) and the rest is an index into it. Jump-like instructions keep their target in
-// `a` and carry in `n` the number of statements that began since the previous control transfer,
-// which is how the interpreter counts steps without an instruction per statement.
+// constant pool) and the rest is an index into it. Control transfers (jumps, calls, returns,
+// for loops, Steps, End) keep their target in `a` and carry in `steps` the number of statements
+// that began since the previous transfer, which is how the interpreter counts steps without an
+// instruction per statement; other instructions use the same field as `count`, the number of
+// consecutive operands they read.
 
 #include <cstdint>
 #include <string>
@@ -17,6 +19,8 @@
 
 namespace rb {
 
+class BuiltinTable;
+
 // Every instruction, in one list: the enum and the interpreter's dispatch table both come
 // from it. Operand use is given beside each.
 #define RB_OPCODES(X)                                                                        \
@@ -25,19 +29,20 @@ namespace rb {
   X(Move)                                                                                    \
   /* R[a] = R[b] op R[c] */                                                                  \
   X(Add) X(Sub) X(Mul) X(Div) X(Mod) X(Pow) X(BitAnd) X(BitOr) X(Shl) X(Shr)                 \
+  /* R[a] = (R[b] cmp R[c]) as 0 or 1; the three compare families list Cmp's order */         \
   X(Eq) X(Ne) X(Lt) X(Le) X(Gt) X(Ge)                                                        \
   /* R[a] = op R[b] */                                                                       \
   X(Neg) X(Not) X(BitNot)                                                                    \
   /* R[a] += 1 / -= 1 in place */                                                            \
   X(Inc) X(Dec)                                                                              \
-  /* pc = a (n statements counted) */                                                        \
+  /* pc = a */                                                                               \
   X(Jump)                                                                                    \
   /* if (!R[b]) pc = a / if (R[b]) pc = a */                                                 \
   X(JumpIfFalse) X(JumpIfTrue)                                                               \
-  /* if (!(R[b] op R[c])) pc = a */                                                          \
-  X(JumpIfNotLt) X(JumpIfNotLe) X(JumpIfNotGt) X(JumpIfNotGe) X(JumpIfNotEq) X(JumpIfNotNe)  \
-  /* if (R[b] op R[c]) pc = a */                                                             \
-  X(JumpIfLt) X(JumpIfLe) X(JumpIfGt) X(JumpIfGe) X(JumpIfEq) X(JumpIfNe)                    \
+  /* if (!(R[b] cmp R[c])) pc = a */                                                         \
+  X(JumpIfNotEq) X(JumpIfNotNe) X(JumpIfNotLt) X(JumpIfNotLe) X(JumpIfNotGt) X(JumpIfNotGe)  \
+  /* if (R[b] cmp R[c]) pc = a */                                                            \
+  X(JumpIfEq) X(JumpIfNe) X(JumpIfLt) X(JumpIfLe) X(JumpIfGt) X(JumpIfGe)                    \
   /* for: a = control variable, b = limit (step at b+1), c = exit / body target */           \
   X(ForPrep) X(ForLoop)                                                                      \
   /* push a return address, frame base += b; pc = a */                                      \
@@ -46,27 +51,27 @@ namespace rb {
   X(Return)                                                                                  \
   /* call sub a with arguments in frame slots b..; result to operand c (or kNoOperand) */     \
   X(CallSub)                                                                                 \
-  /* call built-in a, arguments in R[b]..R[b+n-1], result to operand c (or kNoOperand) */     \
+  /* call built-in a, arguments in R[b]..R[b+count-1], result to operand c (or kNoOperand) */ \
   X(CallBuiltin)                                                                             \
-  /* R[a] = R[b][R[c]..R[c+n-1]] */                                                          \
+  /* R[a] = R[b][R[c]..R[c+count-1]] */                                                      \
   X(IndexGet)                                                                                \
-  /* R[a][R[c]..R[c+n-1]] = R[b] */                                                          \
+  /* R[a][R[c]..R[c+count-1]] = R[b] */                                                      \
   X(IndexSet)                                                                                \
-  /* R[a] = new array with the n extents R[c].. */                                           \
+  /* R[a] = new array with the `count` extents R[c].. */                                     \
   X(Dim)                                                                                     \
   /* append R[b] to the 1-D array R[a] (creating it) */                                      \
   X(DataAppend)                                                                              \
-  /* print R[b]..R[b+n-1] with separator list c */                                           \
+  /* print R[b]..R[b+count-1] with separator list c */                                       \
   X(Print)                                                                                   \
-  /* R[a] = the items R[b]..R[b+n-1] formatted with separator list c */                      \
+  /* R[a] = the items R[b]..R[b+count-1] formatted with separator list c */                  \
   X(Format)                                                                                  \
   /* R[a] = a line typed by the user, prompt R[b] when c = 1 */                              \
   X(Input)                                                                                   \
-  /* count n statements (where more than kMaxPending piled up) */                            \
+  /* count `steps` statements (where more than kMaxPending piled up) */                      \
   X(Steps)                                                                                   \
   /* statement boundary, emitted only in line-tracing mode */                                \
   X(Line)                                                                                    \
-  /* stop the program (n statements counted) */                                              \
+  /* stop the program (`steps` statements counted) */                                        \
   X(End)
 
 enum class Op : uint8_t {
@@ -75,14 +80,62 @@ enum class Op : uint8_t {
 #undef RB_OPCODE_ENUM
 };
 
+/// An opcode's name as RB_OPCODES spells it ("JumpIfNotLt"), for the code dump.
+inline const char* opName(Op op) {
+  static constexpr const char* kNames[] = {
+#define RB_OPCODE_NAME(name) #name,
+      RB_OPCODES(RB_OPCODE_NAME)
+#undef RB_OPCODE_NAME
+  };
+  return kNames[static_cast<uint8_t>(op)];
+}
+
+/// A comparison, in the order of each compare family of RB_OPCODES (Eq..Ge, JumpIfNotEq..,
+/// JumpIfEq..): the offset of an opcode in its family.
+enum class Cmp : uint8_t { Eq, Ne, Lt, Le, Gt, Ge };
+
+constexpr bool isCompareValue(Op op) { return op >= Op::Eq && op <= Op::Ge; }
+constexpr bool isCompareJump(Op op) { return op >= Op::JumpIfNotEq && op <= Op::JumpIfGe; }
+/// The comparison of an opcode of one of the three compare families.
+constexpr Cmp compareOf(Op op) {
+  auto i = static_cast<uint8_t>(op);
+  uint8_t first = static_cast<uint8_t>(isCompareValue(op) ? Op::Eq
+                                       : op >= Op::JumpIfEq ? Op::JumpIfEq : Op::JumpIfNotEq);
+  return static_cast<Cmp>(i - first);
+}
+
 constexpr uint8_t kMoveMayBeUnassigned = 1;
 
 struct Instr {
   Op op;
-  uint8_t flags = 0;
-  uint16_t n = 0;
+  uint8_t flags = 0;  ///< Move: kMoveMayBeUnassigned; conditional transfers: steps given back when taken
+  union {
+    uint16_t count = 0;  ///< consecutive operands read (arguments, indices, items, extents)
+    int16_t steps;       ///< control transfers: statements counted since the previous one
+  };
   uint32_t a = 0, b = 0, c = 0;
 };
+static_assert(sizeof(Instr) == 16, "an instruction stays 16 bytes");
+
+/// Instructions that report the statements counted since the previous one (in `steps`).
+constexpr bool isTransfer(Op op) {
+  switch (op) {
+    case Op::Jump: case Op::JumpIfFalse: case Op::JumpIfTrue: case Op::ForPrep:
+    case Op::ForLoop: case Op::Gosub: case Op::Return: case Op::CallSub: case Op::Steps:
+    case Op::End:
+      return true;
+    default:
+      return isCompareJump(op);
+  }
+}
+
+/// Control transfers that may fall through: they count `steps` on both paths, and when they jump
+/// they give back `flags` steps, the statements the fall-through path counted before the target
+/// (which the target's next transfer reports again).
+constexpr bool isConditionalTransfer(Op op) {
+  return op == Op::JumpIfFalse || op == Op::JumpIfTrue || op == Op::ForPrep || op == Op::ForLoop ||
+         isCompareJump(op);
+}
 
 constexpr uint32_t kBaseShift = 30;
 constexpr uint32_t kIndexMask = (1u << kBaseShift) - 1;
@@ -99,6 +152,7 @@ struct SubInfo {
   std::string name;
   SourceLoc loc;
   uint32_t entry = 0;        ///< first instruction of the body
+  uint32_t end = 0;          ///< one past the body's last instruction (its final Return)
   uint32_t paramCount = 0;
   uint32_t frameSize = 0;    ///< parameters + locals + temporaries
   uint32_t localCount = 0;   ///< parameters + locals (named slots)
@@ -106,8 +160,16 @@ struct SubInfo {
   std::vector<bool> byRef;
 };
 
+/// A label of the program and the instruction it stands for (for the code dump).
+struct LabelEntry {
+  std::string name;
+  uint32_t pc = 0;
+};
+
 /// A compiled program: instructions, their source positions, constants and slot names.
 struct Program {
+  /// The built-ins CallBuiltin's index refers to (the table the program was compiled against).
+  const BuiltinTable* builtins = nullptr;
   std::vector<Instr> code;
   std::vector<SourceLoc> locs;         ///< one per instruction
   std::vector<Value> constants;
@@ -116,6 +178,7 @@ struct Program {
   uint32_t mainFrameSize = 0;          ///< temporaries of code outside subs
   std::vector<SubInfo> subs;
   std::vector<std::vector<Tok>> separatorLists;  ///< for Print/Format
+  std::vector<LabelEntry> labels;      ///< in order of name
   bool lineTracing = false;
 };
 

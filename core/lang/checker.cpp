@@ -22,8 +22,6 @@ struct ScopeUse {
   std::map<std::string_view, SourceLoc> firstRead;  // ordered for stable output
 };
 
-bool isGlobalRef(std::string_view name) { return name.size() > 1 && name[0] == '_'; }
-
 }  // namespace
 
 void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
@@ -41,27 +39,37 @@ void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
 
   ScopeUse global;
   std::vector<ScopeUse> subs;
-  ScopeUse* local = nullptr;
-  uint32_t subFile = 0;
+  ScopeUse* local = nullptr;      // the sub being read, if any
+  bool skip = false;              // a sub whose line had a syntax error: its names are unknown
   // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
   std::unordered_set<std::string_view> arrays = ast::arrayNames(program.stmts);
   std::unordered_set<std::string_view> params;
-  for (const ast::Stmt* s : program.stmts) {
-    if (local && s->loc.file != subFile) local = nullptr;  // a sub ends with its file
-    if (s->kind == ast::StmtKind::Sub && !s->broken) {
-      subFile = s->loc.file;
-      subs.emplace_back();
-      local = &subs.back();
-      params.clear();
-      for (const ast::Param& p : s->params) params.insert(p.name);
-    } else if (s->kind == ast::StmtKind::EndSub) {
+  std::vector<ast::SubSpan> spans = ast::subSpans(program.stmts);
+  auto nextSpan = spans.begin();
+  size_t subEnd = 0;
+  for (size_t i = 0; i < program.stmts.size(); ++i) {
+    const ast::Stmt* s = program.stmts[i];
+    if ((local || skip) && i == subEnd) {
       local = nullptr;
-      continue;
+      skip = false;
     }
-    ast::forEachName(*s, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
-      bool globalName = isGlobalRef(name) || (arrays.count(name) && !params.count(name));
+    if (nextSpan != spans.end() && nextSpan->begin == i) {
+      subEnd = nextSpan->end;
+      ++nextSpan;
+      params.clear();
+      if (s->broken) {
+        skip = true;
+      } else {
+        subs.emplace_back();
+        local = &subs.back();
+        for (const ast::Param& p : s->params) params.insert(p.name);
+      }
+    }
+    if (skip || s->kind == ast::StmtKind::EndSub) continue;
+    ast::forEachName(*s, program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
+      bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !params.count(name));
       ScopeUse* scope = local && !globalName ? local : &global;
-      if (isGlobalRef(name)) name.remove_prefix(1);
+      name = ast::globalName(name);
       if (use != ast::NameUse::Read) scope->written.insert(name);
       if (use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) scope->firstRead.try_emplace(name, loc);
     }, isByRef);
@@ -116,36 +124,36 @@ std::string missingOnRb9(std::string_view name) {
   return "";
 }
 
-void checkExpr(const ast::Expr* e, DiagnosticList& diags) {
+void checkExpr(const ast::Expr* e, const BuiltinTable& builtins, DiagnosticList& diags) {
   if (!e) return;
   if (e->kind == ast::ExprKind::Call) {
-    if (const Builtin* b = findBuiltin(e->text, BuiltinKind::Function)) {
+    if (const Builtin* b = builtins.find(e->text, BuiltinKind::Function)) {
       std::string why = missingOnRb9(b->name);
       if (!why.empty()) diags.warning(e->loc, why);
     }
   }
-  for (const ast::Expr* a : e->args) checkExpr(a, diags);
+  for (const ast::Expr* a : e->args) checkExpr(a, builtins, diags);
 }
 
-void checkStmt(const ast::Stmt* s, DiagnosticList& diags) {
+void checkStmt(const ast::Stmt* s, const BuiltinTable& builtins, DiagnosticList& diags) {
   if (s->kind == ast::StmtKind::Command && !s->exprs.empty()) {
-    const Builtin* b = findBuiltin(s->name, BuiltinKind::Command);
+    const Builtin* b = builtins.find(s->name, BuiltinKind::Command);
     std::optional<double> n = constantNumber(s->exprs[0]);
     if (b && b->name == "rForward" && n && std::abs(*n) > kRb9MaxMove)
       diags.warning(s->loc, "rForward " + formatNumber(*n) +
                                 ": the RB-9 moves at most about 250 per command (the seed "
                                 "recommends staying below 200); use several shorter moves");
   }
-  checkExpr(s->target, diags);
-  checkExpr(s->value, diags);
-  for (const ast::Expr* e : s->exprs) checkExpr(e, diags);
-  for (const ast::Stmt* b : s->body) checkStmt(b, diags);
+  checkExpr(s->target, builtins, diags);
+  checkExpr(s->value, builtins, diags);
+  for (const ast::Expr* e : s->exprs) checkExpr(e, builtins, diags);
+  for (const ast::Stmt* b : s->body) checkStmt(b, builtins, diags);
 }
 
 }  // namespace
 
 void checkRb9Target(const LoadedProgram& program, DiagnosticList& diags) {
-  for (const ast::Stmt* s : program.stmts) checkStmt(s, diags);
+  for (const ast::Stmt* s : program.stmts) checkStmt(s, program.builtins, diags);
 }
 
 }  // namespace rb

@@ -27,7 +27,7 @@ class Loader {
  private:
   void parseFile(uint32_t index, int depth, std::vector<ast::Stmt*>& dest) {
     std::vector<Token> tokens = lex(out_.sources, index, diags_);
-    std::vector<ast::Stmt*> stmts = parseTokens(tokens, out_.arena, diags_);
+    std::vector<ast::Stmt*> stmts = parseTokens(tokens, out_.arena, out_.builtins, diags_);
     for (ast::Stmt* s : stmts) {
       if (s->kind == ast::StmtKind::Include) {
         include(*s, index, depth, dest);
@@ -88,9 +88,9 @@ class Loader {
 }  // namespace
 
 std::unique_ptr<LoadedProgram> loadProgram(const std::string& name, std::string text,
-                                           SourceReader& reader, const LoadOptions& options,
-                                           DiagnosticList& diags) {
-  auto out = std::make_unique<LoadedProgram>();
+                                           SourceReader& reader, const BuiltinTable& builtins,
+                                           const LoadOptions& options, DiagnosticList& diags) {
+  auto out = std::make_unique<LoadedProgram>(builtins);
   Loader(*out, reader, options, diags).loadMain(name, std::move(text));
   return out;
 }

@@ -14,6 +14,8 @@
 
 namespace rb {
 
+class BuiltinTable;
+
 /// Where program text comes from.
 class SourceReader {
  public:
@@ -32,15 +34,19 @@ struct LoadOptions {
 
 /// A parsed program with every include spliced in.
 struct LoadedProgram {
+  explicit LoadedProgram(const BuiltinTable& table) : builtins(table) {}
+  /// The built-ins the program was parsed against; it is compiled and checked against them too.
+  const BuiltinTable& builtins;
   SourceSet sources;
   ast::Arena arena;
   std::vector<ast::Stmt*> stmts;
 };
 
-/// Loads `text` as the main file named `name` (already read by the caller). Diagnostics go to
-/// `diags`; the result is usable for checks even when there are errors.
+/// Loads `text` as the main file named `name` (already read by the caller), against the
+/// built-ins of `builtins` (which must outlive the result and what is compiled from it).
+/// Diagnostics go to `diags`; the result is usable for checks even when there are errors.
 std::unique_ptr<LoadedProgram> loadProgram(const std::string& name, std::string text,
-                                           SourceReader& reader, const LoadOptions& options,
-                                           DiagnosticList& diags);
+                                           SourceReader& reader, const BuiltinTable& builtins,
+                                           const LoadOptions& options, DiagnosticList& diags);
 
 }  // namespace rb

@@ -1,8 +1,10 @@
 #include "lang/parser.h"
 
 #include <cctype>
+#include <optional>
 #include <string>
 
+#include "lang/abandon.h"
 #include "lang/builtins.h"
 #include "lang/suggest.h"
 
@@ -44,12 +46,11 @@ std::string quoted(std::string_view text, char quote = '\'') {
   return out;
 }
 
-struct SyntaxError {};
-
 class Parser {
  public:
-  Parser(const std::vector<Token>& toks, ast::Arena& arena, DiagnosticList& diags)
-      : toks_(toks), arena_(arena), diags_(diags) {}
+  Parser(const std::vector<Token>& toks, ast::Arena& arena, const BuiltinTable& builtins,
+         DiagnosticList& diags)
+      : toks_(toks), arena_(arena), builtins_(builtins), diags_(diags) {}
 
   std::vector<Stmt*> run() {
     std::vector<Stmt*> out;
@@ -61,7 +62,7 @@ class Parser {
       size_t start = pos_;
       try {
         line(out);
-      } catch (const SyntaxError&) {
+      } catch (const StatementAbandoned&) {
         keepBlockOpener(start, out);
         while (cur().kind != Tok::Newline && cur().kind != Tok::Eof) ++pos_;
       }
@@ -117,8 +118,32 @@ class Parser {
   [[noreturn]] void fail(SourceLoc loc, std::string message) {
     // One error per line: a lexical error already explains what follows it.
     if (!diags_.hasErrorOnLine(loc.file, loc.line)) diags_.error(loc, std::move(message));
-    throw SyntaxError{};
+    throw StatementAbandoned{};
   }
+  /// One level of nesting (a parenthesis, an operator's operand, a single-line if's
+  /// statements) while it lives. The count goes down however the level is left, also when a
+  /// syntax error unwinds through it, so an error on one line leaves no depth behind for the
+  /// next.
+  class Nested {
+   public:
+    Nested(Parser& p, SourceLoc loc) : p_(p) {
+      if (p_.depth_ >= kMaxNesting) p_.fail(loc, "expression nested too deeply");
+      ++p_.depth_;
+    }
+    ~Nested() { --p_.depth_; }
+    Nested(const Nested&) = delete;
+    Nested& operator=(const Nested&) = delete;
+
+   private:
+    Parser& p_;
+  };
+  /// Runs `parse` one level deeper.
+  template <typename F>
+  auto nested(SourceLoc loc, F parse) {
+    Nested level(*this, loc);
+    return parse();
+  }
+
   [[noreturn]] void failHere(const std::string& expected) {
     std::string found(tokName(cur().kind));
     if (cur().kind == Tok::Ident) found = quoted(cur().text);
@@ -357,10 +382,9 @@ class Parser {
     if (!then) failHere("'then' or the end of the line after the if condition");
     Stmt* s = newStmt(StmtKind::IfLine, loc);
     s->value = cond;
-    enter(loc);
+    Nested level(*this, loc);
     s->body.push_back(statement(true));
     if (accept(Tok::KwElse)) s->body.push_back(statement(true));
-    leave();
     return s;
   }
 
@@ -449,11 +473,10 @@ class Parser {
     const Token& name = cur();
     Tok next = peek().kind;
     if (isAssignOp(next) || next == Tok::LBracket) return assignment();
-    if (const Builtin* b = findBuiltin(name.text, BuiltinKind::Command)) return command(*b);
+    if (const Builtin* b = builtins_.find(name.text, BuiltinKind::Command)) return command(*b);
+    if (std::optional<std::string> why = builtins_.misuse(name.text, NamePlace::Statement))
+      fail(name.loc, std::move(*why));
     if (next == Tok::LParen) {
-      if (const Builtin* f = findBuiltin(name.text, BuiltinKind::Function))
-        fail(name.loc, "'" + std::string(f->name) + "' is a function: use its value, as in x = " +
-                           std::string(f->name) + "(...)");
       Stmt* s = newStmt(StmtKind::Call, name.loc);
       s->name = name.text;
       s->nameLoc = name.loc;
@@ -463,13 +486,8 @@ class Parser {
       expect(Tok::RParen, "')' to close the argument list");
       return s;
     }
-    if (const Builtin* f = findBuiltin(name.text, BuiltinKind::Function))
-      fail(name.loc, "'" + std::string(f->name) + "' is a function: use its value, as in x = " +
-                         std::string(f->name) + "(...)");
-    if (findBuiltin(name.text, BuiltinKind::Constant))
-      fail(name.loc, "'" + std::string(name.text) + "' is a constant, not a command");
     std::string msg = "unknown command '" + std::string(name.text) + "'";
-    std::string hint = suggestCommand(name.text);
+    std::string hint = suggestCommand(builtins_, name.text);
     if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
     fail(name.loc, msg);
   }
@@ -477,11 +495,6 @@ class Parser {
   // assignment -> lvalue ('=' | '+=' | '-=' | '*=' | '/=') expr | lvalue ('++' | '--')
   Stmt* assignment() {
     SourceLoc loc = cur().loc;
-    if (const Builtin* b = findAnyBuiltin(cur().text)) {
-      const char* what = b->kind == BuiltinKind::Constant ? "a built-in constant"
-                         : b->kind == BuiltinKind::Command ? "a command" : "a built-in function";
-      fail(loc, "cannot assign to '" + std::string(cur().text) + "': it is " + what);
-    }
     Stmt* s = newStmt(StmtKind::Assign, loc);
     s->target = lvalue();
     if (!isAssignOp(cur().kind)) failHere("'=' in an assignment");
@@ -549,8 +562,6 @@ class Parser {
   // lvalue -> name | name '[' expr {',' expr} ']'
   Expr* lvalue() {
     const Token& name = expect(Tok::Ident, "a variable name");
-    if (findBuiltin(name.text, BuiltinKind::Constant))
-      fail(name.loc, "cannot assign to '" + std::string(name.text) + "': it is a built-in constant");
     Expr* e = varExpr(name);
     if (accept(Tok::LBracket)) {
       e->kind = ExprKind::Index;
@@ -571,9 +582,7 @@ class Parser {
       if (info.prec == 0 || info.prec < minPrec) return left;
       SourceLoc loc = cur().loc;
       ++pos_;
-      enter(loc);
-      Expr* right = binary(info.rightAssoc ? info.prec : info.prec + 1);
-      leave();
+      Expr* right = nested(loc, [&] { return binary(info.rightAssoc ? info.prec : info.prec + 1); });
       Expr* e = arena_.expr();
       e->kind = ExprKind::Binary;
       e->op = op;
@@ -589,9 +598,7 @@ class Parser {
     if (k == Tok::Minus || k == Tok::Plus || k == Tok::KwNot || k == Tok::Bang || k == Tok::Tilde) {
       SourceLoc loc = cur().loc;
       ++pos_;
-      enter(loc);
-      Expr* operand = unary();
-      leave();
+      Expr* operand = nested(loc, [&] { return unary(); });
       // Fold a minus sign into a number literal so that -5 is a constant.
       if (k == Tok::Minus && operand->kind == ExprKind::Int && operand->ival != INT64_MIN) {
         operand->ival = -operand->ival;
@@ -637,9 +644,7 @@ class Parser {
         return e;
       case Tok::LParen: {
         ++pos_;
-        enter(t.loc);
-        Expr* inner = expression();
-        leave();
+        Expr* inner = nested(t.loc, [&] { return expression(); });
         expect(Tok::RParen, "')'");
         return inner;
       }
@@ -648,17 +653,13 @@ class Parser {
         ++pos_;
         if (accept(Tok::LParen)) {
           e->kind = ExprKind::Call;
-          enter(t.loc);
-          if (!at(Tok::RParen)) argList(e->args);
-          leave();
+          if (!at(Tok::RParen)) nested(t.loc, [&] { argList(e->args); });
           expect(Tok::RParen, "')' to close the argument list");
           return e;
         }
         if (accept(Tok::LBracket)) {
           e->kind = ExprKind::Index;
-          enter(t.loc);
-          argList(e->args);
-          leave();
+          nested(t.loc, [&] { argList(e->args); });
           expect(Tok::RBracket, "']' to close the index");
           return e;
         }
@@ -673,13 +674,10 @@ class Parser {
     failHere("an expression");
   }
 
-  void enter(SourceLoc loc) {
-    if (++depth_ > kMaxNesting) fail(loc, "expression nested too deeply");
-  }
-  void leave() { --depth_; }
 
   const std::vector<Token>& toks_;
   ast::Arena& arena_;
+  const BuiltinTable& builtins_;
   DiagnosticList& diags_;
   size_t pos_ = 0;
   int depth_ = 0;
@@ -688,8 +686,8 @@ class Parser {
 }  // namespace
 
 std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena& arena,
-                                    DiagnosticList& diags) {
-  return Parser(tokens, arena, diags).run();
+                                    const BuiltinTable& builtins, DiagnosticList& diags) {
+  return Parser(tokens, arena, builtins, diags).run();
 }
 
 }  // namespace rb

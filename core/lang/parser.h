@@ -10,9 +10,12 @@
 
 namespace rb {
 
-/// Parses one file's tokens. `#include` lines become StmtKind::Include entries.
+class BuiltinTable;
+
+/// Parses one file's tokens. `#include` lines become StmtKind::Include entries. `builtins`
+/// says which names are commands (and how their arguments are written).
 std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena& arena,
-                                    DiagnosticList& diags);
+                                    const BuiltinTable& builtins, DiagnosticList& diags);
 
 /// The binary operator table: precedence (higher binds tighter, 0 = not a binary operator) and
 /// associativity. Unary operators bind tighter than every binary one.

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "lang/builtins.h"
 #include "lang/lexer.h"
 #include "lang/parser.h"
 
@@ -8,6 +9,16 @@ using ast::ExprKind;
 using ast::StmtKind;
 
 namespace {
+/// The built-ins these tests parse against: the parser needs only to know the commands.
+const BuiltinTable& testBuiltins() {
+  static const BuiltinTable table({
+      {"randomize", BuiltinKind::Command, "math", "seed", nullptr, 0, "restarts the random numbers"},
+      {"mid", BuiltinKind::Function, "string", "s, start [, count]", nullptr, 0, "part of s"},
+      {"Red", BuiltinKind::Constant, "colour", "", nullptr, 4, "colour 4"},
+  });
+  return table;
+}
+
 struct Parsed {
   SourceSet sources;
   ast::Arena arena;
@@ -18,7 +29,7 @@ std::unique_ptr<Parsed> parse(const std::string& text) {
   auto p = std::make_unique<Parsed>();
   uint32_t f = p->sources.add("t.bas", text);
   auto toks = lex(p->sources, f, p->diags);
-  p->stmts = parseTokens(toks, p->arena, p->diags);
+  p->stmts = parseTokens(toks, p->arena, testBuiltins(), p->diags);
   return p;
 }
 /// A compact rendering of an expression tree: (op a b).
@@ -88,7 +99,18 @@ TEST_CASE("print(x) is print with a parenthesised expression", "[parser]") {
 TEST_CASE("a command may take its arguments in parentheses", "[parser]") {
   auto p = parse("randomize(5)\nmid = 1");
   CHECK(p->stmts[0]->kind == StmtKind::Command);
-  CHECK(p->diags.errorCount() == 1);  // mid is a function name
+  CHECK(p->stmts[0]->exprs.size() == 1);
+  // An assignment to a built-in's name parses; the compiler rejects it (BuiltinTable::misuse).
+  CHECK(p->stmts[1]->kind == StmtKind::Assign);
+  CHECK_FALSE(p->diags.hasErrors());
+}
+
+TEST_CASE("a built-in that is no command cannot start a statement", "[parser]") {
+  auto p = parse("mid(1, 2)\nRED\n");
+  REQUIRE(p->diags.errorCount() == 2);
+  CHECK(p->diags.all()[0].message ==
+        "cannot use 'mid' as a statement: it is a built-in function; use its value, as in x = mid(...)");
+  CHECK(p->diags.all()[1].message == "cannot use 'RED' as a statement: it is a built-in constant");
 }
 
 TEST_CASE("one error per bad line, parsing goes on", "[parser]") {

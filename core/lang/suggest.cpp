@@ -67,24 +67,9 @@ std::string closestMatch(std::string_view word, const std::vector<std::string_vi
   return std::string(prefixWord);
 }
 
-std::string suggestCommand(std::string_view word) {
-  static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> v;
-    for (const Builtin& b : builtinTable())
-      if (b.kind == BuiltinKind::Command) v.push_back(b.name);
-    for (std::string_view k : keywordSpellings()) v.push_back(k);
-    return v;
-  }();
-  return closestMatch(word, names, true);
-}
-
-std::string suggestFunction(std::string_view word) {
-  static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> v;
-    for (const Builtin& b : builtinTable())
-      if (b.kind == BuiltinKind::Function) v.push_back(b.name);
-    return v;
-  }();
+std::string suggestCommand(const BuiltinTable& builtins, std::string_view word) {
+  std::vector<std::string_view> names = builtins.names(BuiltinKind::Command);
+  for (std::string_view k : keywordSpellings()) names.push_back(k);
   return closestMatch(word, names, true);
 }
 

@@ -8,6 +8,8 @@
 
 namespace rb {
 
+class BuiltinTable;
+
 /// Optimal-string-alignment distance (insert, delete, substitute, swap neighbours).
 /// `ignoreCase` compares letters without case.
 int editDistance(std::string_view a, std::string_view b, bool ignoreCase);
@@ -17,9 +19,7 @@ int editDistance(std::string_view a, std::string_view b, bool ignoreCase);
 std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates,
                          bool ignoreCase);
 
-/// A command or statement keyword close to `word` ("prit" -> "print").
-std::string suggestCommand(std::string_view word);
-/// A function name close to `word`.
-std::string suggestFunction(std::string_view word);
+/// A command of `builtins` or a statement keyword close to `word` ("prit" -> "print").
+std::string suggestCommand(const BuiltinTable& builtins, std::string_view word);
 
 }  // namespace rb

@@ -3,7 +3,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 namespace rb {
@@ -24,15 +23,6 @@ Value Value::array(std::vector<int64_t> dims) {
   r.a_->dims = std::move(dims);
   r.a_->items.resize(n, Value::integer(0));
   return r;
-}
-
-std::string formatNumber(double d) {
-  if (d == 0) return "0";  // also turns -0 into 0
-  if (std::isnan(d)) return "nan";
-  if (std::isinf(d)) return d > 0 ? "inf" : "-inf";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.15g", d);
-  return buf;
 }
 
 std::string formatValue(const Value& v) {

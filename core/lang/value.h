@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "base/number.h"  // formatNumber
+
 namespace rb {
 
 enum class VType : uint8_t { Undef, Int, Num, Str, Arr };
@@ -101,9 +103,6 @@ class Value {
   };
 };
 
-/// A number as `print` shows it: integers plainly, doubles with up to 15 significant digits and
-/// no trailing zeros ("3.5", "0.333333333333333", "1e+20").
-std::string formatNumber(double d);
 /// A value as `print` shows it.
 std::string formatValue(const Value& v);
 /// Parses text the way `input` and toNumber() do: the whole text (spaces trimmed) must be a

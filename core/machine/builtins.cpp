@@ -1,12 +1,6 @@
-#include "lang/builtins.h"
-
-#include <cctype>
-#include <cmath>
-#include <stdexcept>
-#include <unordered_map>
+#include "machine/builtins.h"
 
 #include "machine/builtins_impl.h"
-#include "base/runtime_error.h"
 
 namespace rb {
 
@@ -14,7 +8,7 @@ namespace {
 
 using K = BuiltinKind;
 
-// The table. Signatures name the parameters: `[...]` is optional, `&name` receives a result
+// The rows. Signatures name the parameters: `[...]` is optional, `&name` receives a result
 // (the argument must be a variable), `name...` repeats, and a final `items...` takes a
 // print-style list (items separated by ',' or ';').
 std::vector<Builtin> makeTable() {
@@ -123,203 +117,11 @@ std::vector<Builtin> makeTable() {
   return t;
 }
 
-// ---- signature parsing
-
-struct SigNode {
-  enum Kind { Param, Optional } kind;
-  ParamSpec param;
-  bool repeats = false;
-  std::vector<SigNode> children;
-};
-
-std::vector<SigNode> parseSignature(std::string_view sig, size_t& pos, std::string_view name) {
-  std::vector<SigNode> out;
-  while (pos < sig.size()) {
-    char c = sig[pos];
-    if (c == ' ' || c == ',') {
-      ++pos;
-    } else if (c == '[') {
-      ++pos;
-      SigNode n{SigNode::Optional, {}, false, parseSignature(sig, pos, name)};
-      if (pos >= sig.size() || sig[pos] != ']')
-        throw std::logic_error("builtin signature: missing ] in " + std::string(name));
-      ++pos;
-      out.push_back(std::move(n));
-    } else if (c == ']') {
-      return out;
-    } else {
-      SigNode n{SigNode::Param, {}, false, {}};
-      if (c == '&') {
-        n.param.out = true;
-        ++pos;
-      }
-      size_t start = pos;
-      while (pos < sig.size() && (std::isalnum(static_cast<unsigned char>(sig[pos])) || sig[pos] == '_'))
-        ++pos;
-      n.param.name = sig.substr(start, pos - start);
-      if (n.param.name.empty())
-        throw std::logic_error("builtin signature: bad character in " + std::string(name));
-      if (sig.substr(pos, 3) == "...") {
-        n.repeats = true;
-        pos += 3;
-      }
-      out.push_back(std::move(n));
-    }
-  }
-  return out;
-}
-
-void expand(const std::vector<SigNode>& seq, size_t i, std::vector<ParamSpec> cur,
-            std::vector<std::vector<ParamSpec>>& out, bool& repeats) {
-  if (i == seq.size()) {
-    out.push_back(std::move(cur));
-    return;
-  }
-  const SigNode& n = seq[i];
-  if (n.kind == SigNode::Param) {
-    cur.push_back(n.param);
-    if (n.repeats) repeats = true;
-    expand(seq, i + 1, std::move(cur), out, repeats);
-    return;
-  }
-  // Optional group: with it (longer forms first) and without.
-  std::vector<std::vector<ParamSpec>> inner;
-  expand(n.children, 0, {}, inner, repeats);
-  for (auto& in : inner) {
-    std::vector<ParamSpec> with = cur;
-    with.insert(with.end(), in.begin(), in.end());
-    expand(seq, i + 1, std::move(with), out, repeats);
-  }
-  expand(seq, i + 1, std::move(cur), out, repeats);
-}
-
-void derive(Builtin& b) {
-  if (b.kind == BuiltinKind::Constant) return;
-  size_t pos = 0;
-  std::vector<SigNode> seq = parseSignature(b.signature, pos, b.name);
-  std::vector<std::vector<ParamSpec>> forms;
-  bool repeats = false;
-  expand(seq, 0, {}, forms, repeats);
-  b.minArgs = INT32_MAX;
-  b.maxArgs = 0;
-  for (const auto& f : forms) {
-    int n = static_cast<int>(f.size());
-    b.minArgs = std::min(b.minArgs, n);
-    b.maxArgs = std::max(b.maxArgs, n);
-    if (static_cast<int>(b.forms.size()) <= n) b.forms.resize(static_cast<size_t>(n) + 1);
-    if (b.forms[static_cast<size_t>(n)].empty()) b.forms[static_cast<size_t>(n)] = f;
-  }
-  if (repeats) {
-    b.maxArgs = -1;
-    const auto& longest = b.forms.back();
-    if (!longest.empty() && longest.back().name == "items") b.printList = true;
-  }
-}
-
 }  // namespace
 
-const ParamSpec& Builtin::param(int n, int i) const {
-  static const ParamSpec none{"argument", false};
-  if (n >= 0 && static_cast<size_t>(n) < forms.size() && !forms[static_cast<size_t>(n)].empty() &&
-      i < static_cast<int>(forms[static_cast<size_t>(n)].size()))
-    return forms[static_cast<size_t>(n)][static_cast<size_t>(i)];
-  // Beyond the listed forms, the repeated last parameter.
-  if (maxArgs < 0 && !forms.empty() && !forms.back().empty()) return forms.back().back();
-  return none;
-}
-
-std::string Builtin::arityText() const {
-  if (maxArgs < 0) return "at least " + std::to_string(minArgs);
-  if (minArgs == maxArgs) return std::to_string(minArgs);
-  return std::to_string(minArgs) + " to " + std::to_string(maxArgs);
-}
-
-const std::vector<Builtin>& builtinTable() {
-  static const std::vector<Builtin> table = [] {
-    std::vector<Builtin> t = makeTable();
-    for (Builtin& b : t) derive(b);
-    return t;
-  }();
+const BuiltinTable& standardBuiltins() {
+  static const BuiltinTable table(makeTable());
   return table;
-}
-
-namespace {
-std::string lowerName(std::string_view s) {
-  std::string r(s);
-  for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return r;
-}
-
-struct Index {
-  std::unordered_map<std::string, const Builtin*> byKind[3];
-};
-
-const Index& index() {
-  static const Index idx = [] {
-    Index i;
-    for (const Builtin& b : builtinTable()) i.byKind[static_cast<int>(b.kind)].emplace(lowerName(b.name), &b);
-    return i;
-  }();
-  return idx;
-}
-}  // namespace
-
-const Builtin* findBuiltin(std::string_view name, BuiltinKind kind) {
-  if (name.size() > 40) return nullptr;
-  const auto& m = index().byKind[static_cast<int>(kind)];
-  auto it = m.find(lowerName(name));
-  return it == m.end() ? nullptr : it->second;
-}
-
-const Builtin* findAnyBuiltin(std::string_view name) {
-  for (BuiltinKind k : {BuiltinKind::Constant, BuiltinKind::Function, BuiltinKind::Command})
-    if (const Builtin* b = findBuiltin(name, k)) return b;
-  return nullptr;
-}
-
-// ---- Args
-
-std::string Args::describe(int i) const {
-  std::string what = builtin_.kind == BuiltinKind::Function ? std::string(builtin_.name) + "()"
-                                                            : std::string(builtin_.name);
-  return "argument " + std::to_string(i + 1) + " (" + std::string(builtin_.param(n_, i).name) +
-         ") of " + what;
-}
-
-double Args::num(int i) const {
-  const Value& v = v_[i];
-  if (v.isInt()) return static_cast<double>(v.i());
-  if (v.isNum()) return v.d();
-  throw RuntimeError(describe(i) + " must be a number, not " +
-                     (v.isStr() ? "a string" : v.isArr() ? "an array" : "nothing"));
-}
-
-int64_t Args::integer(int i) const {
-  const Value& v = v_[i];
-  if (v.isInt()) return v.i();
-  double d = std::trunc(num(i));
-  if (!(d >= -9.2e18 && d <= 9.2e18)) throw RuntimeError(describe(i) + " is too large");
-  return static_cast<int64_t>(d);
-}
-
-uint32_t Args::colour(int i) const {
-  int64_t c = integer(i);
-  if (c < 0 || c > 0xFFFFFF) throw RuntimeError(describe(i) + " must be a colour: 0..15 or an RGB() value");
-  return static_cast<uint32_t>(c);
-}
-
-int Args::coordinate(int i) const {
-  double v = std::round(num(i));
-  if (v < -1e6) v = -1e6;
-  if (v > 1e6) v = 1e6;
-  return static_cast<int>(v);
-}
-
-const std::string& Args::str(int i) const {
-  const Value& v = v_[i];
-  if (v.isStr()) return v.str();
-  throw RuntimeError(describe(i) + " must be a string, not " +
-                     (v.isNumeric() ? "a number" : v.isArr() ? "an array" : "nothing"));
 }
 
 }  // namespace rb

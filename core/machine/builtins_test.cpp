@@ -2,26 +2,26 @@
 
 #include <set>
 
-#include "lang/builtins.h"
 #include "lang/suggest.h"
+#include "machine/builtins.h"
 
 using namespace rb;
 
 TEST_CASE("signatures give arity and output parameters", "[builtins]") {
-  const Builtin* mid = findBuiltin("MID", BuiltinKind::Function);
+  const Builtin* mid = standardBuiltins().find("MID", BuiltinKind::Function);
   REQUIRE(mid);
   CHECK(mid->minArgs == 2);
   CHECK(mid->maxArgs == 3);
   CHECK(mid->arityText() == "2 to 3");
   CHECK(mid->param(3, 2).name == "count");
-  const Builtin* mn = findBuiltin("min", BuiltinKind::Function);
+  const Builtin* mn = standardBuiltins().find("min", BuiltinKind::Function);
   CHECK(mn->maxArgs == -1);
   CHECK(mn->param(7, 6).name == "b");
 }
 
 TEST_CASE("every built-in has a unique name per kind, a group and help", "[builtins]") {
   std::set<std::string> seen;
-  for (const Builtin& b : builtinTable()) {
+  for (const Builtin& b : standardBuiltins().rows()) {
     std::string key = std::to_string(static_cast<int>(b.kind)) + ":";
     for (char c : b.name) key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     CHECK(seen.insert(key).second);
@@ -35,8 +35,8 @@ TEST_CASE("edit distance and suggestions", "[suggest]") {
   CHECK(editDistance("prit", "print", false) == 1);
   CHECK(editDistance("pirnt", "print", false) == 1);  // a swap counts once
   CHECK(editDistance("Real", "real", true) == 0);
-  CHECK(suggestCommand("prit") == "print");
-  CHECK(suggestCommand("xyzzy").empty());
+  CHECK(suggestCommand(standardBuiltins(), "prit") == "print");
+  CHECK(suggestCommand(standardBuiltins(), "xyzzy").empty());
   CHECK(closestMatch("InitializeRobot", {"InitializeSimulator", "DrawSquare", "Main"}, false) ==
         "InitializeSimulator");
 }

@@ -34,10 +34,6 @@ class SystemAccess {
   virtual int64_t spawn(std::string_view who, const std::string& command, bool wait) = 0;
 };
 
-/// Thrown by a Host's hook to end the run at once (the user quit a live view): the interpreter
-/// stops with RunStatus::Stopped.
-struct StopRun {};
-
 class Host {
  public:
   virtual ~Host() = default;
@@ -59,6 +55,12 @@ class Host {
   /// Called regularly while the program runs; a live view redraws and reads keys here.
   /// Returning false stops the program (the user quit).
   virtual bool poll() { return true; }
+  /// True once the host has asked the run to end (the user quit a live view). The interpreter
+  /// stops as soon as the call in progress returns, with RunStatus::Stopped: what that call
+  /// answered, and any runtime error it raised meanwhile, are not the program's doing and are
+  /// dropped. This is how a host ends a run from inside a blocking call (waitKey, input, a
+  /// delay): it requests the stop and returns at once, with any answer.
+  bool stopRequested() const { return stopRequested_; }
   /// Called before each statement when the program was compiled for line tracing.
   virtual void onLine(SourceLoc /*loc*/) {}
   /// Called after each pixel or degree the robot moves, so a live view can animate it.
@@ -104,7 +106,11 @@ class Host {
   }
 
  protected:
+  /// Ends the run (see stopRequested); from now on blocking calls should return at once.
+  void requestStop() { stopRequested_ = true; }
+
   SystemAccess* system_ = nullptr;
+  bool stopRequested_ = false;
 
   static RuntimeError noInput(std::string_view who, std::string_view what) {
     return RuntimeError(std::string(who) + ": cannot wait for " + std::string(what) +

@@ -68,10 +68,11 @@ class Interpreter {
     int32_t callerSub;   ///< the sub the caller ran (-1: main code)
   };
 
-  /// A runtime error to report at another instruction than the current one.
-  struct ReturnAtCall {
-    uint32_t pc;
-    std::string message;
+  /// Where operands point: operand x names bases[operandBase(x)][operandIndex(x)].
+  struct OperandBases {
+    Value* at[3] = {nullptr, nullptr, nullptr};
+    Value*& operator[](Base b) { return at[static_cast<uint32_t>(b)]; }
+    Value& operator()(uint32_t x) const { return at[x >> kBaseShift][x & kIndexMask]; }
   };
 
   void execute(uint32_t& pc);
@@ -81,9 +82,22 @@ class Interpreter {
   void doPrint(const Instr& in);
   void doFormat(const Instr& in);
   void doInput(const Instr& in);
-  bool checkpoint(uint32_t pc);
-  void ensureStack(size_t size);
+  void doDataAppend(const Instr& in);
+  bool checkpoint();
+  void pushFrame(const Frame& f);
+  /// Makes the stack hold at least `size` values (growing it moves the frame base).
+  void ensureStack(size_t size) {
+    if (size > stack_.size()) growStack(size);
+  }
+  void growStack(size_t size);
+  /// Points the frame base at the current frame (after a call, a return or a stack growth).
+  void syncFrame() { bases_[Base::Frame] = stack_.data() + base_; }
+  bool compare(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
+  bool compareOthers(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
+  Value& element(const OperandBases& B, uint32_t arrOp, uint32_t idxOp, uint16_t count);
+  [[noreturn]] void operandError(const Instr& in) const;
   [[noreturn]] void undefined(uint32_t op) const;
+  [[noreturn]] void tooDeep() const;
   std::string slotName(uint32_t op) const;
   Value& arrayOperand(uint32_t op);
   size_t elementOffset(ArrObj& a, uint32_t arrOp, const Value* idx, uint32_t n);
@@ -95,7 +109,11 @@ class Interpreter {
   std::vector<Frame> frames_;
   uint32_t base_ = 0;
   int32_t sub_ = -1;
-  Value* bases_[3] = {nullptr, nullptr, nullptr};
+  OperandBases bases_;
+  static constexpr uint32_t kNoPc = UINT32_MAX;
+  /// Where a runtime error being thrown belongs when that is not the current instruction (a
+  /// sub that returned no value to an expression: the call's instruction); kNoPc otherwise.
+  uint32_t errorPc_ = kNoPc;
 
   RunLimits limits_;
   uint64_t stepsDone_ = 0;   ///< steps counted before the current chunk

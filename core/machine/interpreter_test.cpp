@@ -84,3 +84,45 @@ TEST_CASE("deep recursion in subs grows the stack safely", "[interpreter]") {
   auto o = runProgram("print Sum(20000)\nend\nsub Sum(n)\n  if n = 0 then return 0\n  return n + Sum(n - 1)\n");
   CHECK(o.out == "200010000\n");
 }
+
+namespace {
+/// A live view whose user quits while the program waits: the host asks for the stop and
+/// answers the waiting call at once.
+class QuittingHost : public rb::test::TestHost {
+ public:
+  int64_t waitKey(std::string_view) override {
+    requestStop();
+    return 0;
+  }
+  std::optional<std::string> inputLine(std::string_view) override {
+    requestStop();
+    return std::nullopt;  // no line: the machine raises "no more input", which is dropped
+  }
+};
+
+RunResult runQuitting(const std::string& text, std::string& out) {
+  DiagnosticList diags;
+  rb::test::MemoryReader reader;
+  reader.files["test.bas"] = text;
+  auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
+  auto program = compileProgram(*loaded, {}, diags);
+  REQUIRE(program);
+  QuittingHost host;
+  Machine machine(host, 1);
+  RunResult r = Interpreter(*program, machine).run({});
+  out = host.out;
+  return r;
+}
+}  // namespace
+
+TEST_CASE("a host that stops the run inside a call ends it as Stopped", "[interpreter]") {
+  std::string out;
+  RunResult r = runQuitting("print 1\nwaitKey k\nprint 2\n", out);
+  CHECK(r.status == RunStatus::Stopped);
+  CHECK_FALSE(r.error);
+  CHECK(out == "1\n");  // nothing after the call that was answered by the quit
+  r = runQuitting("print 1\ninput x\nprint 2\n", out);
+  CHECK(r.status == RunStatus::Stopped);
+  CHECK_FALSE(r.error);
+  CHECK(out == "1\n");
+}

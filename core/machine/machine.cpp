@@ -42,7 +42,12 @@ void Machine::printPrompt(std::string_view prompt) {
 
 void Machine::useCommPort(int64_t port) {
   real_.reset();  // closes the previous port, if any
-  if (port != 0) real_ = std::make_unique<RealRobot>(host_.openRobot(port));
+  if (port != 0) connectRobot(host_.openRobot(port));
+}
+
+void Machine::connectRobot(std::unique_ptr<RobotLink> link) {
+  real_.reset();
+  real_ = std::make_unique<RealRobot>(std::move(link));
 }
 
 void Machine::emit(RobotEvent::Kind kind, std::string_view command, std::string args,

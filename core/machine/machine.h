@@ -57,6 +57,9 @@ class Machine {
   RealRobot* realRobot() { return real_.get(); }
   /// rCommPort n: opens port n through the host (n = 0: back to the simulator, closing it).
   void useCommPort(int64_t port);
+  /// Sends robot commands to the real robot at the end of `link` from now on (rb's --real
+  /// opens the link itself), closing any earlier one.
+  void connectRobot(std::unique_ptr<RobotLink> link);
   /// The pose and pen a trace or a live view should show: the real robot's dead-reckoned one
   /// when connected, else the simulator's.
   const Pose& robotPose() const { return real_ ? real_->pose() : robot_.pose(); }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "lang/compiler.h"
+#include "machine/builtins.h"
 #include "machine/host.h"
 #include "machine/interpreter.h"
 #include "lang/loader.h"
@@ -57,7 +58,7 @@ inline Outcome runProgram(const std::string& text, MemoryReader reader = {},
   Outcome o;
   DiagnosticList diags;
   reader.files["test.bas"] = text;
-  auto loaded = loadProgram("test.bas", text, reader, {}, diags);
+  auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
   auto program = compileProgram(*loaded, {}, diags);
   for (const Diagnostic& d : diags.all()) o.diagnostics += formatDiagnostic(loaded->sources, d);
   if (!program) return o;

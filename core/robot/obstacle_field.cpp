@@ -46,6 +46,24 @@ void transform1d(const float* f, int n, float* out, int* v, float* z) {
   }
 }
 
+/// Squared Euclidean distance transform of a w x h grid in place (0 on obstacles, infinity
+/// elsewhere on entry): columns, then rows.
+void transform2d(float* grid, int w, int h, std::vector<float>& f, std::vector<float>& out,
+                 std::vector<int>& v, std::vector<float>& z) {
+  size_t n = static_cast<size_t>(std::max(w, h));
+  f.resize(n), out.resize(n), v.resize(n), z.resize(n + 1);
+  for (int x = 0; x < w; ++x) {
+    for (int y = 0; y < h; ++y) f[static_cast<size_t>(y)] = grid[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
+    transform1d(f.data(), h, out.data(), v.data(), z.data());
+    for (int y = 0; y < h; ++y) grid[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)] = out[static_cast<size_t>(y)];
+  }
+  for (int y = 0; y < h; ++y) {
+    float* row = grid + static_cast<size_t>(y) * static_cast<size_t>(w);
+    std::copy(row, row + w, f.begin());
+    transform1d(f.data(), w, row, v.data(), z.data());
+  }
+}
+
 }  // namespace
 
 void ObstacleField::rebuild() {
@@ -61,68 +79,98 @@ void ObstacleField::rebuild() {
       }
     }
   }
-  int n = kW > kH ? kW : kH;
-  std::vector<float> f(static_cast<size_t>(n)), out(static_cast<size_t>(n)), z(static_cast<size_t>(n) + 1);
-  std::vector<int> v(static_cast<size_t>(n));
-  for (int x = 0; x < kW; ++x) {  // columns
-    for (int y = 0; y < kH; ++y) f[static_cast<size_t>(y)] = dist_[static_cast<size_t>(y) * kW + static_cast<size_t>(x)];
-    transform1d(f.data(), kH, out.data(), v.data(), z.data());
-    for (int y = 0; y < kH; ++y) dist_[static_cast<size_t>(y) * kW + static_cast<size_t>(x)] = out[static_cast<size_t>(y)];
-  }
-  for (int y = 0; y < kH; ++y) {  // rows
-    float* row = dist_.data() + static_cast<size_t>(y) * kW;
-    for (int x = 0; x < kW; ++x) f[static_cast<size_t>(x)] = row[x];
-    transform1d(f.data(), kW, out.data(), v.data(), z.data());
-    for (int x = 0; x < kW; ++x) row[x] = std::sqrt(out[static_cast<size_t>(x)]);
-  }
-  builtFor_ = canvas_.obstacleVersion();
+  transform2d(dist_.data(), kW, kH, f_, out_, v_, z_);
+  for (float& d : dist_) d = std::sqrt(d);
   capped_ = false;
+  pending_.clear();
+  near_ = PixelBox{};
+  ++rebuilds_;
 }
 
-void ObstacleField::changedWithin(int x0, int y0, int x1, int y1, uint64_t before) {
-  if (dist_.empty() || builtFor_ != before || builtFor_ == canvas_.obstacleVersion()) return;
-  x0 = std::max(x0, 0), y0 = std::max(y0, 0);
-  x1 = std::min(x1, Canvas::kWidth - 1), y1 = std::min(y1, Canvas::kHeight - 1);
-  // Field coordinates (with the wall around) of the pixels that became obstacles. A pixel that
-  // stopped being one, or too many new ones, leave the field stale: the next query rebuilds.
-  struct Cell { int x, y; };
-  std::vector<Cell> added;
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) {
-      bool now = canvas_.isObstacleColour(canvas_.at(x, y));
-      bool was = mask_[static_cast<size_t>(y + 1) * kW + static_cast<size_t>(x + 1)] != 0;
-      if (now == was) continue;
-      if (!now || added.size() == kLocalMaxPixels) return;
-      added.push_back({x + 1, y + 1});
-    }
-  int bx0 = kW, by0 = kH, bx1 = -1, by1 = -1;
-  for (const Cell& c : added) {
-    size_t i = static_cast<size_t>(c.y) * kW + static_cast<size_t>(c.x);
-    mask_[i] = 1;
-    dist_[i] = 0;
-    bx0 = std::min(bx0, c.x), by0 = std::min(by0, c.y), bx1 = std::max(bx1, c.x), by1 = std::max(by1, c.y);
-  }
-  // Within kLocalReach of the new pixels every distance becomes exact; beyond it the new pixels
-  // are farther than the cap, so min(old distance, cap) stays a lower bound.
-  const int reach = static_cast<int>(kLocalReach);
-  for (int y = std::max(by0 - reach, 0); y <= std::min(by1 + reach, kH - 1); ++y) {
-    float* row = dist_.data() + static_cast<size_t>(y) * kW;
-    int gy = y < by0 ? by0 - y : (y > by1 ? y - by1 : 0);
-    for (int x = std::max(bx0 - reach, 0); x <= std::min(bx1 + reach, kW - 1); ++x) {
-      int gx = x < bx0 ? bx0 - x : (x > bx1 ? x - bx1 : 0);
-      float old = row[x];
-      // No new pixel is nearer than the box that holds them all.
-      if (old * old <= float(gx * gx + gy * gy)) continue;
-      float best = old * old;
-      for (const Cell& c : added) {
-        float dx = float(x - c.x), dy = float(y - c.y);
-        best = std::min(best, dx * dx + dy * dy);
-      }
-      row[x] = std::sqrt(best);
-    }
-  }
-  if (!added.empty()) capped_ = true;
+void ObstacleField::takeChanges() {
+  ObstacleChanges changes = canvas_.takeObstacleChanges();
   builtFor_ = canvas_.obstacleVersion();
+  long area = 0;
+  for (const PixelBox& b : changes.boxes) area += b.area();
+  if (dist_.empty() || changes.all || area > kLocalMaxArea) {
+    rebuild();
+    return;
+  }
+  for (const PixelBox& box : changes.boxes) {
+    capped_ = true;
+    // A box that meets a waiting one (the same status line redrawn) joins it.
+    bool joined = false;
+    for (PixelBox& p : pending_) {
+      const int j = ObstacleChanges::kJoin;
+      if (box.x0 <= p.x1 + j && box.x1 >= p.x0 - j && box.y0 <= p.y1 + j && box.y1 >= p.y0 - j) {
+        p.add(box);
+        joined = true;
+        break;
+      }
+    }
+    if (!joined) pending_.push_back(box);
+    if (pending_.size() > kMaxPending) {  // too many scattered boxes: apply the oldest now
+      update(pending_.front());
+      pending_.erase(pending_.begin());
+    }
+  }
+  recomputeNear();
+}
+
+void ObstacleField::recomputeNear() {
+  near_ = PixelBox{};
+  for (const PixelBox& b : pending_) {
+    near_.add(b.x0 - kLocalReach, b.y0 - kLocalReach);
+    near_.add(b.x1 + kLocalReach, b.y1 + kLocalReach);
+  }
+}
+
+void ObstacleField::applyNear(int x, int y) {
+  // Boxes within reach of (x, y) are applied; the others keep waiting.
+  size_t kept = 0;
+  for (size_t i = 0; i < pending_.size(); ++i) {
+    const PixelBox b = pending_[i];
+    bool near = x >= b.x0 - kLocalReach && x <= b.x1 + kLocalReach && y >= b.y0 - kLocalReach &&
+                y <= b.y1 + kLocalReach;
+    if (near) update(b);
+    else pending_[kept++] = b;
+  }
+  pending_.resize(kept);
+  recomputeNear();
+}
+
+void ObstacleField::update(const PixelBox& box) {
+  ++localUpdates_;
+  const float inf = std::numeric_limits<float>::infinity();
+  const int r = kLocalReach;
+  // In field coordinates (with the wall around): the changed box, the region whose distances
+  // it can change (within the reach), and the window of obstacles that decide them.
+  int bx0 = std::max(box.x0, 0) + 1, by0 = std::max(box.y0, 0) + 1;
+  int bx1 = std::min(box.x1, Canvas::kWidth - 1) + 1, by1 = std::min(box.y1, Canvas::kHeight - 1) + 1;
+  for (int y = by0; y <= by1; ++y)
+    for (int x = bx0; x <= bx1; ++x)
+      mask_[static_cast<size_t>(y) * kW + static_cast<size_t>(x)] =
+          canvas_.isObstacleColour(canvas_.at(x - 1, y - 1)) ? 1 : 0;
+  int rx0 = std::max(bx0 - r, 0), ry0 = std::max(by0 - r, 0);
+  int rx1 = std::min(bx1 + r, kW - 1), ry1 = std::min(by1 + r, kH - 1);
+  int wx0 = std::max(rx0 - r, 0), wy0 = std::max(ry0 - r, 0);
+  int wx1 = std::min(rx1 + r, kW - 1), wy1 = std::min(ry1 + r, kH - 1);
+  int w = wx1 - wx0 + 1, h = wy1 - wy0 + 1;
+  window_.resize(static_cast<size_t>(w) * static_cast<size_t>(h));
+  for (int y = 0; y < h; ++y) {
+    const uint8_t* m = mask_.data() + static_cast<size_t>(y + wy0) * kW + static_cast<size_t>(wx0);
+    float* row = window_.data() + static_cast<size_t>(y) * static_cast<size_t>(w);
+    for (int x = 0; x < w; ++x) row[x] = m[x] ? 0.0f : inf;
+  }
+  transform2d(window_.data(), w, h, f_, out_, v_, z_);
+  // Every obstacle within the reach of a pixel of the region lies in the window, so a distance
+  // up to the reach is exact; a larger one only says "more than the reach".
+  const float cap = float(r);
+  for (int y = ry0; y <= ry1; ++y) {
+    const float* src = window_.data() + static_cast<size_t>(y - wy0) * static_cast<size_t>(w);
+    float* dst = dist_.data() + static_cast<size_t>(y) * kW;
+    for (int x = rx0; x <= rx1; ++x) dst[x] = std::min(std::sqrt(src[x - wx0]), cap);
+  }
 }
 
 }  // namespace rb

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "robot/protocol.h"
+#include "base/number.h"
 #include "base/runtime_error.h"
-#include "lang/value.h"
 
 namespace rb {
 

@@ -75,7 +75,7 @@ ProgramRun runWith(FakeRobotHost& host, const std::string& text) {
   test::MemoryReader reader;
   reader.files["test.bas"] = text;
   DiagnosticList diags;
-  auto loaded = loadProgram("test.bas", text, reader, {}, diags);
+  auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
   auto program = compileProgram(*loaded, {}, diags);
   ProgramRun run;
   for (const Diagnostic& d : diags.all()) run.diagnostics += formatDiagnostic(loaded->sources, d);

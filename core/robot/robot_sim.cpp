@@ -184,18 +184,11 @@ void SimRobot::extendTrail() {
   // polyline at the same point.
   Colour c = trailColour();
   int width = canvas_.lineWidth;
-  uint64_t before = canvas_.obstacleVersion();
   if (!canvas_.trailOpen() || canvas_.trailColour() != c || canvas_.trailWidth() != width)
     canvas_.trailStart(penAt_.x(), penAt_.y(), width, c);
+  // A trail in an obstacle colour changes a few pixels around the segment; the obstacle field
+  // learns where from the canvas and catches up there.
   canvas_.trailTo(pose_.pos.x(), pose_.pos.y());
-  if (canvas_.obstacleVersion() != before) {
-    // A trail in an obstacle colour changed a few pixels around the segment: the obstacle
-    // field catches up there instead of being rebuilt.
-    int pad = std::max(width, 1) / 2 + 2;
-    int x0 = pixelOf(std::min(penAt_.x(), pose_.pos.x())) - pad, x1 = pixelOf(std::max(penAt_.x(), pose_.pos.x())) + pad;
-    int y0 = pixelOf(std::min(penAt_.y(), pose_.pos.y())) - pad, y1 = pixelOf(std::max(penAt_.y(), pose_.pos.y())) + pad;
-    field_.changedWithin(x0, y0, x1, y1, before);
-  }
   penAt_ = pose_.pos;
 }
 

@@ -21,6 +21,7 @@ struct World {
   Canvas canvas;
   Rng rng{1};
   SimRobot robot{canvas, rng};
+  World() { canvas.keepDisplayList(true); }
 };
 
 /// Drives forward one pixel at a time while the front bumper is free; returns the steps taken.

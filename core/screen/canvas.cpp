@@ -1,7 +1,9 @@
 #include "screen/canvas.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <cstdlib>
 
 namespace rb {
@@ -44,9 +46,27 @@ Colour rgbColour(int r, int g, int b) {
   return clamp(r) | clamp(g) << 8 | clamp(b) << 16;
 }
 
+void ObstacleChanges::addFar(int x, int y) {
+  for (PixelBox& b : boxes) {
+    if (x >= b.x0 - kJoin && x <= b.x1 + kJoin && y >= b.y0 - kJoin && y <= b.y1 + kJoin) {
+      b.add(x, y);
+      return;
+    }
+  }
+  if (boxes.size() < kMaxBoxes) {
+    boxes.emplace_back().add(x, y);
+    return;
+  }
+  // Too many scattered changes: one box holds them all.
+  PixelBox merged;
+  for (const PixelBox& b : boxes) merged.add(b);
+  merged.add(x, y);
+  boxes.assign(1, merged);
+}
+
 Canvas::Canvas() : pixels_(static_cast<size_t>(kWidth) * kHeight, colours::kWhite) {}
 
-void Canvas::record(DrawOp op) {
+void Canvas::push(DrawOp op) {
   if (ops_.size() < kMaxDisplayOps) {
     ops_.push_back(std::move(op));
   } else if (ops_.back().kind != DrawOp::Raster) {
@@ -54,27 +74,33 @@ void Canvas::record(DrawOp op) {
   }
 }
 
+void Canvas::keepDisplayList(bool keep) {
+  keepOps_ = keep;
+  if (!keep) {
+    ops_.clear();
+    ops_.shrink_to_fit();
+  }
+}
+
 void Canvas::clear(Colour c) {
-  bool changed = c != background_;
   background_ = c;
   std::fill(pixels_.begin(), pixels_.end(), c);
-  if (changed) ++obstacleVersion_;
-  ++obstacleVersion_;
+  obstaclesChangedEverywhere();
   ++version_;
   cursor_ = {};
   ops_.clear();
   trailOpen_ = false;
-  record(DrawOp{DrawOp::Clear, {}, c});
+  record([&] { return DrawOp{DrawOp::Clear, {}, c}; });
 }
 
 void Canvas::setInvisible(std::vector<Colour> c) {
   invisible_ = std::move(c);
-  ++obstacleVersion_;
+  obstaclesChangedEverywhere();
 }
 
 void Canvas::setPixel(int x, int y, Colour c) {
   plot(x, y, c);
-  record(DrawOp{DrawOp::Pixel, {{x, y}}, c});
+  record([&] { return DrawOp{DrawOp::Pixel, {{x, y}}, c}; });
 }
 
 // A round brush of diameter `width` centred on the pixel; width 1 is the pixel itself.
@@ -93,19 +119,58 @@ void Canvas::brush(int x, int y, int width, Colour c) {
     }
 }
 
-void Canvas::line(Point a, Point b, int width, Colour c) {
-  // Bresenham, with the brush at every point.
+namespace {
+/// Clips the segment a-b to the box [lo, hi] in both coordinates (Liang-Barsky); false when
+/// nothing of it is inside.
+bool clipSegment(double& ax, double& ay, double& bx, double& by, double lo, double hiX, double hiY) {
+  double t0 = 0, t1 = 1;
+  const double dx = bx - ax, dy = by - ay;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {ax - lo, hiX - ax, ay - lo, hiY - ay};
+  for (int k = 0; k < 4; ++k) {
+    if (p[k] == 0) {
+      if (q[k] < 0) return false;
+      continue;
+    }
+    double t = q[k] / p[k];
+    if (p[k] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  bx = ax + t1 * dx, by = ay + t1 * dy;
+  ax = ax + t0 * dx, ay = ay + t0 * dy;
+  return true;
+}
+}  // namespace
+
+void Canvas::drawLine(Point a, Point b, int width, Colour c) {
+  // Only the part that can touch the screen is drawn: a line far outside it costs nothing, and
+  // one crossing it from far away costs little more than one across the screen.
+  const int margin = width / 2 + 2;
+  double ax = a.x, ay = a.y, bx = b.x, by = b.y;
+  if (!clipSegment(ax, ay, bx, by, -margin, kWidth - 1 + margin, kHeight - 1 + margin)) return;
+  const auto near = [&](int x, int y) {
+    return x >= -margin && y >= -margin && x <= kWidth - 1 + margin && y <= kHeight - 1 + margin;
+  };
+  // Bresenham from the true end points (so that a line is the same pixels however far its ends
+  // lie), with the brush only near the screen. Lines longer than any clamped coordinate allows
+  // start where they enter the screen instead.
+  if (std::max(std::abs(int64_t(b.x) - a.x), std::abs(int64_t(b.y) - a.y)) > 4'000'000) {
+    a = {static_cast<int>(std::lround(ax)), static_cast<int>(std::lround(ay))};
+    b = {static_cast<int>(std::lround(bx)), static_cast<int>(std::lround(by))};
+  }
   int x = a.x, y = a.y;
   int dx = std::abs(b.x - a.x), dy = -std::abs(b.y - a.y);
   int sx = a.x < b.x ? 1 : -1, sy = a.y < b.y ? 1 : -1;
   int err = dx + dy;
-  // Lines far outside the screen are clipped to a generous box first, to bound the work.
-  if (std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)}) > 100000) {
-    record(DrawOp{DrawOp::Line, {a, b}, c, std::nullopt, width});
-    return;
-  }
+  bool entered = false;
   for (;;) {
-    brush(x, y, width, c);
+    if (near(x, y)) {
+      brush(x, y, width, c);
+      entered = true;
+    } else if (entered) {
+      break;  // a straight line that left the screen does not come back
+    }
     if (x == b.x && y == b.y) break;
     int e2 = 2 * err;
     if (e2 >= dy) {
@@ -117,7 +182,11 @@ void Canvas::line(Point a, Point b, int width, Colour c) {
       y += sy;
     }
   }
-  record(DrawOp{DrawOp::Line, {a, b}, c, std::nullopt, width});
+}
+
+void Canvas::line(Point a, Point b, int width, Colour c) {
+  drawLine(a, b, width, c);
+  record([&] { return DrawOp{DrawOp::Line, {a, b}, c, std::nullopt, width}; });
 }
 
 void Canvas::span(int y, int x1, int x2, Colour c) {
@@ -135,8 +204,11 @@ void Canvas::rectangle(Point a, Point b, int width, std::optional<Colour> outlin
   y1 = std::max(y1, -1);
   x2 = std::min(x2, kWidth);
   y2 = std::min(y2, kHeight);
-  if (fill)
+  if (fill) {
     for (int y = y1; y <= y2; ++y) span(y, x1, x2, *fill);
+    // A fill of the whole screen hides everything drawn before it.
+    if (keepOps_ && x1 <= 0 && y1 <= 0 && x2 >= kWidth - 1 && y2 >= kHeight - 1) ops_.clear();
+  }
   if (outline) {
     // The outline lies on the rectangle's edge, growing inward with the line width.
     int w = std::max(width, 1);
@@ -149,7 +221,7 @@ void Canvas::rectangle(Point a, Point b, int width, std::optional<Colour> outlin
       }
     }
   }
-  record(DrawOp{DrawOp::Rect, {{x1, y1}, {x2, y2}}, outline.value_or(0), fill, outline ? width : 0});
+  record([&] { return DrawOp{DrawOp::Rect, {{x1, y1}, {x2, y2}}, outline.value_or(0), fill, outline ? width : 0}; });
 }
 
 void Canvas::ellipse(Point a, Point b, int width, std::optional<Colour> outline,
@@ -178,7 +250,7 @@ void Canvas::ellipse(Point a, Point b, int width, std::optional<Colour> outline,
       else if (fill) plot(x, y, *fill);
     }
   }
-  record(DrawOp{DrawOp::Ellipse, {{x1, y1}, {x2, y2}}, outline.value_or(0), fill, outline ? width : 0});
+  record([&] { return DrawOp{DrawOp::Ellipse, {{x1, y1}, {x2, y2}}, outline.value_or(0), fill, outline ? width : 0}; });
 }
 
 void Canvas::polygon(const std::vector<Point>& pts, int width, std::optional<Colour> outline,
@@ -215,7 +287,7 @@ void Canvas::polygon(const std::vector<Point>& pts, int width, std::optional<Col
     for (size_t i = 0; i < pts.size(); ++i) line(pts[i], pts[(i + 1) % pts.size()], width, *outline);
     ops_.erase(ops_.begin() + static_cast<long>(saved), ops_.end());  // recorded once, as the polygon
   }
-  record(DrawOp{DrawOp::Polygon, pts, outline.value_or(0), fill, outline ? width : 0});
+  record([&] { return DrawOp{DrawOp::Polygon, pts, outline.value_or(0), fill, outline ? width : 0}; });
 }
 
 void Canvas::floodFill(int x, int y, Colour c) {
@@ -238,7 +310,7 @@ void Canvas::floodFill(int x, int y, Colour c) {
         if (at(i, ny) == target && (i == l || at(i - 1, ny) != target)) stack.push_back({i, ny});
     }
   }
-  record(DrawOp{DrawOp::Raster, {}});
+  record([&] { return DrawOp{DrawOp::Raster, {}}; });
 }
 
 FontRenderer& Canvas::fonts() {
@@ -258,18 +330,19 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
     if (penX >= kWidth) break;  // the rest of the text is off the screen
     const Glyph& g = f.glyph(style.font, chr);
     const int left = penX + g.left, top = baseline - g.top;
-    for (int gy = 0; gy < g.height; ++gy)
-      for (int gx = 0; gx < g.width; ++gx)
-        if (g.pixel(gx, gy)) plot(left + gx, top + gy, c);
+    for (const Glyph::Run& r : g.runs)
+      for (int k = 0; k < r.length; ++k) plot(left + r.x + k, top + r.y, c);
     penX += g.advance;
   }
   if (style.underline)
     for (int k = 0; k < m.underlineThickness; ++k) span(y + m.underlineTop + k, x, x + width - 1, c);
   if (style.strikeout)
     for (int k = 0; k < m.strikeoutThickness; ++k) span(y + m.strikeoutTop + k, x, x + width - 1, c);
-  DrawOp op{DrawOp::Text, {{x, y}, {x + width, y + m.lineHeight}}, c, std::nullopt, 1, s, style};
-  op.ascent = m.ascent;
-  record(std::move(op));
+  record([&] {
+    DrawOp op{DrawOp::Text, {{x, y}, {x + width, y + m.lineHeight}}, c, std::nullopt, 1, s, style};
+    op.ascent = m.ascent;
+    return op;
+  });
   return width;
 }
 
@@ -277,9 +350,9 @@ void Canvas::scrollUp(int pixels) {
   size_t shift = static_cast<size_t>(pixels) * kWidth;
   std::move(pixels_.begin() + static_cast<long>(shift), pixels_.end(), pixels_.begin());
   std::fill(pixels_.end() - static_cast<long>(shift), pixels_.end(), background_);
-  ++obstacleVersion_;
+  obstaclesChangedEverywhere();
   ++version_;
-  record(DrawOp{DrawOp::Raster, {}});
+  record([&] { return DrawOp{DrawOp::Raster, {}}; });
 }
 
 namespace {
@@ -379,7 +452,7 @@ void Canvas::restore() {
   if (saved_.empty()) return;
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) plot(x, y, saved_[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)]);
-  record(DrawOp{DrawOp::Raster, {}});
+  record([&] { return DrawOp{DrawOp::Raster, {}}; });
 }
 
 void Canvas::trailStart(double x, double y, int width, Colour c) {
@@ -387,25 +460,72 @@ void Canvas::trailStart(double x, double y, int width, Colour c) {
   trailWidth_ = width;
   trailColour_ = c;
   trailOpen_ = true;
-  record(DrawOp{DrawOp::Trail, {trailAt_}, c, std::nullopt, width});
+  trailEnd_ = {x, y};
+  if (!keepOps_) return;
+  push(DrawOp{DrawOp::Trail, {trailAt_}, c, std::nullopt, width});
   trailOp_ = ops_.size() - 1;
+  trailAnchor_ = trailEnd_;
+  trailCone_ = false;
 }
+
+namespace {
+/// The angle b - a, in (-pi, pi].
+double angleDiff(double a, double b) {
+  double d = std::remainder(b - a, 2 * std::numbers::pi);
+  return d;
+}
+}  // namespace
 
 void Canvas::trailTo(double x, double y) {
   Point to{static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y))};
   if (!trailOpen_ || to == trailAt_) return;
-  // Draw the segment without recording it: it is part of the trail's polyline.
-  size_t saved = ops_.size();
-  line(trailAt_, to, trailWidth_, trailColour_);
-  ops_.erase(ops_.begin() + static_cast<long>(saved), ops_.end());
-  if (!ops_.empty() && trailOp_ == ops_.size() - 1 && ops_.back().kind == DrawOp::Trail) {
-    ops_.back().points.push_back(to);
-  } else {
-    // Something was drawn since: the trail goes on from where it ended.
-    record(DrawOp{DrawOp::Trail, {trailAt_, to}, trailColour_, std::nullopt, trailWidth_});
-    trailOp_ = ops_.size() - 1;
-  }
+  drawLine(trailAt_, to, trailWidth_, trailColour_);
+  const Point from = trailAt_;
+  const std::array<double, 2> fromExact = trailEnd_;
   trailAt_ = to;
+  trailEnd_ = {x, y};
+  if (!keepOps_) return;
+  if (ops_.empty() || trailOp_ != ops_.size() - 1 || ops_.back().kind != DrawOp::Trail) {
+    // Something was drawn since: the trail goes on from where it ended, in a new entry.
+    push(DrawOp{DrawOp::Trail, {from, to}, trailColour_, std::nullopt, trailWidth_});
+    trailOp_ = ops_.size() - 1;
+    trailAnchor_ = fromExact;
+    trailCone_ = false;
+  }
+  std::vector<Point>& pts = ops_.back().points;
+  if (pts.size() == 1) {
+    pts.push_back(to);
+    trailCone_ = false;
+  }
+  // A straight stretch stays one segment: the end point moves on as long as every point it
+  // passed lies within kTrailTolerance of the line from the last corner (the directions from
+  // the corner that keep all of them so close form a cone that narrows as the trail goes on).
+  const double dx = x - trailAnchor_[0], dy = y - trailAnchor_[1];
+  const double d = std::hypot(dx, dy);
+  const double dir = std::atan2(dy, dx);
+  const double spread = d <= kTrailTolerance ? std::numbers::pi : std::asin(kTrailTolerance / d);
+  if (trailCone_) {
+    double off = angleDiff(trailConeDir_, dir);
+    if (off >= trailConeLo_ && off <= trailConeHi_) {
+      pts.back() = to;
+      trailConeLo_ = std::max(trailConeLo_, off - spread);
+      trailConeHi_ = std::min(trailConeHi_, off + spread);
+      return;
+    }
+    // Out of the cone: the last point becomes a corner.
+    pts.push_back(to);
+    trailAnchor_ = fromExact;
+    const double ndx = x - fromExact[0], ndy = y - fromExact[1];
+    const double nd = std::hypot(ndx, ndy);
+    trailConeDir_ = std::atan2(ndy, ndx);
+    const double nspread = nd <= kTrailTolerance ? std::numbers::pi : std::asin(kTrailTolerance / nd);
+    trailConeLo_ = -nspread, trailConeHi_ = nspread;
+    return;
+  }
+  if (pts.size() >= 2) pts.back() = to;
+  trailCone_ = true;
+  trailConeDir_ = dir;
+  trailConeLo_ = -spread, trailConeHi_ = spread;
 }
 
 }  // namespace rb

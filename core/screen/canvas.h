@@ -8,6 +8,7 @@
 // (neither the background colour nor an invisible colour) so that the simulator knows when its
 // obstacle map must be rebuilt.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -35,6 +36,47 @@ Colour rgbColour(int r, int g, int b);
 struct Point {
   int x = 0, y = 0;
   friend bool operator==(const Point&, const Point&) = default;
+};
+
+/// A box of pixels, inclusive at both ends; empty until a pixel is added.
+struct PixelBox {
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -(1 << 30), y1 = -(1 << 30);
+  bool empty() const { return x0 > x1; }
+  void add(int x, int y) {
+    x0 = x < x0 ? x : x0, x1 = x > x1 ? x : x1;
+    y0 = y < y0 ? y : y0, y1 = y > y1 ? y : y1;
+  }
+  void add(const PixelBox& b) {
+    if (b.empty()) return;
+    add(b.x0, b.y0);
+    add(b.x1, b.y1);
+  }
+  long area() const { return empty() ? 0 : long(x1 - x0 + 1) * long(y1 - y0 + 1); }
+};
+
+/// Where obstacles changed since the last time they were taken (Canvas::takeObstacleChanges):
+/// the obstacle index of the simulator updates only those regions, lazily. Changes far apart
+/// (a status line in a corner, the pen trail under the robot) stay in separate boxes.
+struct ObstacleChanges {
+  static constexpr size_t kMaxBoxes = 8;
+  /// Pixels this close to a box join it rather than start another.
+  static constexpr int kJoin = 16;
+  std::vector<PixelBox> boxes;  ///< every pixel that became or stopped being an obstacle
+  bool all = false;             ///< something changed everywhere (clearScr, rInvisible, scrolling)
+
+  void add(int x, int y) {
+    if (!boxes.empty()) {
+      PixelBox& last = boxes.back();  // drawing is mostly local: the last box first
+      if (x >= last.x0 - kJoin && x <= last.x1 + kJoin && y >= last.y0 - kJoin && y <= last.y1 + kJoin) {
+        last.add(x, y);
+        return;
+      }
+    }
+    addFar(x, y);
+  }
+
+ private:
+  void addFar(int x, int y);
 };
 
 /// xyText's style bits, the constants fs_Bold, fs_Italic, fs_Underline, fs_StrikeOut (the
@@ -144,34 +186,67 @@ class Canvas {
   bool isObstacle(int x, int y) const { return !inside(x, y) || isObstacleColour(at(x, y)); }
   /// Changes whenever some pixel may have become, or stopped being, an obstacle.
   uint64_t obstacleVersion() const { return obstacleVersion_; }
+  /// The obstacle changes since the last call, which forgets them.
+  ObstacleChanges takeObstacleChanges() {
+    ObstacleChanges c = obstacleChanges_;
+    obstacleChanges_ = {};
+    return c;
+  }
   /// Changes whenever any pixel changes.
   uint64_t version() const { return version_; }
 
+  /// The display list: what was drawn since the last clearScr, for the SVG writer. Kept only
+  /// when asked for (rb render -o x.svg); a run that never writes an SVG keeps none, so its
+  /// memory does not grow with what it draws. Straight stretches of the pen trail are kept as
+  /// one segment, and a clearScr or a fill of the whole screen drops what it hides.
+  void keepDisplayList(bool keep);
   const std::vector<DrawOp>& displayList() const { return ops_; }
+  /// How far a point of the pen trail may lie from the straight segment that replaces it.
+  static constexpr double kTrailTolerance = 0.5;
 
  private:
   void plot(int x, int y, Colour c) {
     if (!inside(x, y)) return;
     Colour& p = pixels_[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)];
     if (p == c) return;
-    if (isObstacleColour(p) != isObstacleColour(c)) ++obstacleVersion_;
+    if (isObstacleColour(p) != isObstacleColour(c)) {
+      ++obstacleVersion_;
+      obstacleChanges_.add(x, y);
+    }
     p = c;
     ++version_;
   }
   void brush(int x, int y, int width, Colour c);
   void span(int y, int x1, int x2, Colour c);
+  void drawLine(Point a, Point b, int width, Colour c);  ///< without recording it
   void scrollUp(int pixels);
-  void record(DrawOp op);
+  /// Records the operation `make()` builds, when the display list is kept.
+  template <typename Make>
+  void record(Make make) {
+    if (keepOps_) push(make());
+  }
+  void push(DrawOp op);
 
   std::vector<Colour> pixels_;
   std::vector<Colour> saved_;
   Colour background_ = colours::kWhite;
   std::vector<Colour> invisible_;
   uint64_t obstacleVersion_ = 1;
+  ObstacleChanges obstacleChanges_{{}, true};  // at first, everything is new
+  void obstaclesChangedEverywhere() {
+    ++obstacleVersion_;
+    obstacleChanges_.all = true;
+  }
   uint64_t version_ = 1;
   Point cursor_;  ///< text cursor in pixels (top-left of the next character)
+  bool keepOps_ = false;
   std::vector<DrawOp> ops_;
   bool trailOpen_ = false;
+  std::array<double, 2> trailEnd_{};     ///< the open trail's end, exactly
+  // The straight stretch the trail's last display-list segment stands for (see trailTo).
+  std::array<double, 2> trailAnchor_{};  ///< its first point: the last corner
+  bool trailCone_ = false;
+  double trailConeDir_ = 0, trailConeLo_ = 0, trailConeHi_ = 0;
   Point trailAt_;             ///< where the open trail ends
   int trailWidth_ = 1;
   Colour trailColour_ = 0;

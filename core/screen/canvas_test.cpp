@@ -1,6 +1,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
 #include <string>
 
 #include "screen/canvas.h"
@@ -64,4 +67,87 @@ TEST_CASE("the palette: RobotBASIC 4.2's colours, light twins lifted by 128", "[
   CHECK(colourToRgb(kWhite) == 0xFFFFFF);
   // RGB() numbers above 15 are r + 256 g + 65536 b.
   CHECK(colourToRgb(rgbColour(18, 52, 86)) == 0x123456);
+}
+
+namespace {
+/// The distance from p to the segment a-b.
+double segmentDistance(double px, double py, Point a, Point b) {
+  double dx = b.x - a.x, dy = b.y - a.y;
+  double len2 = dx * dx + dy * dy;
+  double t = len2 == 0 ? 0 : std::clamp(((px - a.x) * dx + (py - a.y) * dy) / len2, 0.0, 1.0);
+  return std::hypot(px - (a.x + t * dx), py - (a.y + t * dy));
+}
+}  // namespace
+
+TEST_CASE("canvas: a run keeps no display list unless asked", "[canvas]") {
+  Canvas c;
+  for (int i = 0; i < 1000; ++i) c.setPixel(i % 800, i % 600, colours::kRed);
+  c.text(10, 10, "status", TextStyle{}, colours::kBlack);
+  CHECK(c.displayList().empty());
+  CHECK(c.at(5, 5) == colours::kRed);  // the pixels are drawn all the same
+}
+
+TEST_CASE("canvas: the pen trail's straight stretches are single segments", "[canvas]") {
+  Canvas c;
+  c.keepDisplayList(true);
+  // A square of side 120, one pixel at a time, as the robot's pen draws it.
+  c.trailStart(400, 300, 1, colours::kGreen);
+  double x = 400, y = 300;
+  const double step[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+  for (const auto& s : step)
+    for (int i = 0; i < 120; ++i) c.trailTo(x += s[0], y += s[1]);
+  REQUIRE(c.displayList().size() == 1);
+  CHECK(c.displayList()[0].points ==
+        std::vector<Point>{{400, 300}, {400, 180}, {520, 180}, {520, 300}, {400, 300}});
+
+  // A circle of small steps: few points, and every point the pen passed stays within a pixel
+  // of the polyline that replaces them.
+  Canvas arc;
+  arc.keepDisplayList(true);
+  std::vector<std::pair<double, double>> passed;
+  double h = 0;
+  x = 400, y = 200;
+  arc.trailStart(x, y, 1, colours::kGreen);
+  for (int i = 0; i < 3600; ++i) {
+    h += 0.1 * std::numbers::pi / 180;
+    x += 0.3 * std::sin(h) * 3, y -= 0.3 * std::cos(h) * 3;
+    arc.trailTo(x, y);
+    passed.emplace_back(x, y);
+  }
+  const std::vector<Point>& pts = arc.displayList().back().points;
+  CHECK(pts.size() < 400);
+  for (auto [px, py] : passed) {
+    double best = 1e9;
+    for (size_t i = 0; i + 1 < pts.size(); ++i) best = std::min(best, segmentDistance(px, py, pts[i], pts[i + 1]));
+    INFO("point " << px << "," << py);
+    CHECK(best <= 1.5);
+  }
+}
+
+TEST_CASE("canvas: a fill of the whole screen drops what it hides from the display list", "[canvas]") {
+  Canvas c;
+  c.keepDisplayList(true);
+  for (int i = 0; i < 100; ++i) c.line({0, i}, {799, i}, 1, colours::kRed);
+  c.rectangle({0, 0}, {799, 599}, 1, std::nullopt, colours::kYellow);
+  CHECK(c.displayList().size() == 1);
+  c.rectangle({10, 10}, {799, 599}, 1, std::nullopt, colours::kBlue);  // not the whole screen
+  CHECK(c.displayList().size() == 2);
+}
+
+TEST_CASE("canvas: a line from far outside draws only what crosses the screen", "[canvas]") {
+  Canvas c;
+  c.line({-100000, -100000}, {100000, 100000}, 100, colours::kRed);
+  CHECK(c.at(300, 300) == colours::kRed);
+  CHECK(c.at(330, 300) == colours::kRed);  // within the brush's 50-pixel radius
+  CHECK(c.at(400, 300) == colours::kWhite);
+  Canvas far;
+  far.line({-100000, 5000}, {100000, 5000}, 100, colours::kRed);
+  CHECK(std::count(far.pixels().begin(), far.pixels().end(), colours::kRed) == 0);
+  // The part on the screen is the same as that of a line from the edge of the screen.
+  Canvas a, b;
+  a.line({-1000, -500}, {1600, 800}, 3, colours::kBlue);
+  b.line({0, 0}, {800, 400}, 3, colours::kBlue);
+  int differ = 0;
+  for (size_t i = 0; i < a.pixels().size(); ++i) differ += a.pixels()[i] != b.pixels()[i];
+  CHECK(differ == 0);  // the same pixels however far the ends lie
 }

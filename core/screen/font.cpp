@@ -106,19 +106,24 @@ struct FontRenderer::Impl {
     return f;
   }
 
+  /// The size last asked for: text asks for the same one character after character.
+  int lastIndex = -1, lastPx = -1;
+  Sized* last = nullptr;
+
+  /// One size of one face; FreeType's current size is set only when a glyph is rasterized.
   Sized& sized(const FontKey& key) {
     const int index = faceIndex(key);
     const int px = std::max(1, key.pixelSize);
+    if (index == lastIndex && px == lastPx) return *last;
     auto [it, fresh] = sizes.try_emplace({index, px});
     Sized& s = it->second;
-    if (!fresh) {
-      FT_Activate_Size(s.size);
-      return s;
-    }
+    lastIndex = index, lastPx = px, last = &s;
+    if (!fresh) return s;
     FT_Face f = face(index);
     if (FT_New_Size(f, &s.size) != 0 || FT_Activate_Size(s.size) != 0 ||
         FT_Set_Pixel_Sizes(f, 0, static_cast<FT_UInt>(px)) != 0) {
       sizes.erase(it);
+      lastIndex = -1, last = nullptr;
       throw std::runtime_error("cannot set a font size of " + std::to_string(px) + " pixels");
     }
     // Windows' cell: usWinAscent above the baseline, usWinDescent below (the hhea values when a
@@ -169,6 +174,16 @@ struct FontRenderer::Impl {
         g.bits[static_cast<size_t>(y) * static_cast<size_t>(g.width) + static_cast<size_t>(x)] = on ? 1 : 0;
       }
     }
+    for (int y = 0; y < g.height; ++y)
+      for (int x = 0; x < g.width;) {
+        if (!g.pixel(x, y)) {
+          ++x;
+          continue;
+        }
+        int start = x;
+        while (x < g.width && g.pixel(x, y)) ++x;
+        g.runs.push_back({static_cast<int16_t>(start), static_cast<int16_t>(y), static_cast<int16_t>(x - start)});
+      }
     return g;
   }
 };
@@ -181,7 +196,10 @@ const FontMetrics& FontRenderer::metrics(const FontKey& key) { return impl_->siz
 const Glyph& FontRenderer::glyph(const FontKey& key, unsigned char ch) {
   Impl::Sized& s = impl_->sized(key);
   std::optional<Glyph>& g = s.glyphs[ch];
-  if (!g) g = impl_->rasterize(impl_->face(Impl::faceIndex(key)), ch);
+  if (!g) {
+    FT_Activate_Size(s.size);
+    g = impl_->rasterize(impl_->face(Impl::faceIndex(key)), ch);
+  }
   return *g;
 }
 

@@ -69,6 +69,11 @@ struct Glyph {
   int advance = 0;  ///< how far the pen moves, in whole pixels
   std::vector<uint8_t> bits;  ///< width * height, 1 where the pixel is drawn
   bool pixel(int x, int y) const { return bits[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)] != 0; }
+  /// The drawn pixels as horizontal runs, so drawing visits only them.
+  struct Run {
+    int16_t x, y, length;
+  };
+  std::vector<Run> runs;
 };
 
 /// The fonts of one screen: FreeType over the embedded fonts, with the glyphs it rasterized

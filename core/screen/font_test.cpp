@@ -122,6 +122,7 @@ TEST_CASE("fonts: xyText font names pick the face with Windows' widths", "[font]
 
 TEST_CASE("fonts: text on the canvas is the glyphs' pixels, with lines and a background", "[font]") {
   Canvas c;
+  c.keepDisplayList(true);
   TextStyle style;
   int w = c.text(10, 20, "AB", style, colours::kRed);
   CHECK(w == 16);

@@ -4,15 +4,19 @@ delya 100 // expect-error: unknown command 'delya'; did you mean 'delay'?
 frobnicate 1 // expect-error: unknown command 'frobnicate'
 x = sqr(4) // expect-error: unknown function 'sqr'; did you mean 'sqrt'?
 x = lenght("a") // expect-error: unknown function 'lenght'; did you mean 'length'?
-abs(3) // expect-error: 'abs' is a function: use its value, as in x = abs(...)
-timer // expect-error: 'timer' is a function: use its value, as in x = timer(...)
-red // expect-error: 'red' is a constant, not a command
+abs(3) // expect-error: cannot use 'abs' as a statement: it is a built-in function; use its value, as in x = abs(...)
+timer // expect-error: cannot use 'timer' as a statement: it is a built-in function; use its value, as in x = timer(...)
+red // expect-error: cannot use 'red' as a statement: it is a built-in constant
 red = 5 // expect-error: cannot assign to 'red': it is a built-in constant
-delay = 5 // expect-error: cannot assign to 'delay': it is a command
+delay = 5 // expect-error: cannot assign to 'delay': it is a built-in command
 abs = 1 // expect-error: cannot assign to 'abs': it is a built-in function
-x = pi // expect-error: 'pi' is a function: write pi()
-x = delay // expect-error: 'delay' is a command and has no value
-x = delay(5) // expect-error: 'delay' is a command, not a function: write it as a statement
-x = abs[1] // expect-error: 'abs' is a built-in name, not an array
-dim red[3] // expect-error: cannot dim 'red': it is a built-in name
+x = pi // expect-error: cannot use 'pi' as a variable: it is a built-in function; write pi()
+x = delay // expect-error: cannot use 'delay' as a variable: it is a built-in command
+x = delay(5) // expect-error: cannot call 'delay' as a function: it is a built-in command; write it as a statement
+x = abs[1] // expect-error: cannot use 'abs' as an array: it is a built-in function
+dim red[3] // expect-error: cannot use 'red' as an array: it is a built-in constant
 Nosuch(1) // expect-error: unknown command or sub 'Nosuch'
+input "speed? ", rForward // expect-error: cannot assign to 'rForward': it is a built-in command
+call delay(5) // expect-error: cannot use 'delay' as a sub name: it is a built-in command
+red[2] = 1 // expect-error: cannot use 'red' as an array: it is a built-in constant
+x = Red(2) // expect-error: cannot call 'Red' as a function: it is a built-in constant

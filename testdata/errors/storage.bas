@@ -2,7 +2,7 @@
 x = 1
 call Get(x)
 dim r[2]
-data Red; 1 // expect-error: cannot store into 'Red': it is a built-in name
+data Red; 1 // expect-error: cannot use 'Red' as an array: it is a built-in constant
 end
 sub Get(&v)
   v = 2

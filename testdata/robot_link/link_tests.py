@@ -100,7 +100,8 @@ def case_square_trace(tmp):
     sim = trace("square.bas")
     with Emulator(tmp) as robot:
         real = trace("--real", "--port", robot.link, "square.bas")
-    expect(len(sim) == len(real) == 11, f"{len(sim)} and {len(real)} events, expected 11")
+    # 11 robot events and the end record.
+    expect(len(sim) == len(real) == 12, f"{len(sim)} and {len(real)} records, expected 12")
     for s, r in zip(sim, real):
         for key in ("event", "command", "args", "x", "y", "heading", "pen"):
             expect(s[key] == r[key], f"event {s['seq']}: {key} {s[key]!r} on the simulator, {r[key]!r} on the robot")
@@ -240,6 +241,20 @@ def case_emulator_sessions(tmp):
             expect(code == 0 and out.count("\n") == 4, f"exit {code}", err)
     code, _, err, _ = rb("robot")
     expect(code == 64 and "--pty" in err, f"rb robot without --pty: exit {code}", err)
+
+
+def case_ports(tmp):
+    """rb ports lists the system's ports (whatever they are) and describes the emulator's pty."""
+    code, out, err, _ = rb("ports")
+    expect(code == 0, f"rb ports exited {code}", err)
+    expect(out.startswith("--port  device") or out == "no serial ports found\n", "rb ports' table", out)
+    with Emulator(tmp) as robot:
+        code, out, err, _ = rb("ports", robot.device)
+        expect(code == 0, f"rb ports DEVICE exited {code}", err)
+        lines = out.splitlines()
+        expect(len(lines) == 2 and lines[0].startswith("--port  device"), "table", out)
+        # A pty has no COM number: only its path opens it.
+        expect(lines[1].split()[:2] == ["-", robot.device], "the pty's row", out)
 
 
 def main():

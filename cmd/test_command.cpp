@@ -1,0 +1,141 @@
+#include "test_command.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "exit_codes.h"
+#include "grader.h"
+#include "png_writer.h"
+#include "report.h"
+#include "test_job.h"
+
+namespace rb::cli {
+
+namespace {
+
+struct TestOptions {
+  std::vector<std::string> paths;
+  std::string assignment;
+  int jobs = 0;
+  std::string shard;
+  uint64_t seed = 1;
+  std::optional<uint64_t> maxSteps;
+  std::optional<double> timeout;
+  std::string format = "text";
+  std::string junit, csv, pictures;
+  bool quiet = false;
+};
+
+/// "K/N" with 1 <= K <= N; false when it is not that.
+bool parseShard(const std::string& text, int& k, int& n) {
+  size_t slash = text.find('/');
+  if (slash == std::string::npos) return false;
+  try {
+    size_t used1 = 0, used2 = 0;
+    k = std::stoi(text.substr(0, slash), &used1);
+    n = std::stoi(text.substr(slash + 1), &used2);
+    return used1 == slash && used2 == text.size() - slash - 1 && n >= 1 && k >= 1 && k <= n;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+bool writeReport(const std::string& path, const std::string& text) {
+  std::string error;
+  if (render::writeFileBytes(path, text.data(), text.size(), error)) return true;
+  std::fprintf(stderr, "rb test: %s\n", error.c_str());
+  return false;
+}
+
+int executeTest(const TestOptions& opts) {
+  grade::GradeOptions g;
+  g.paths = opts.paths.empty() ? std::vector<std::string>{"."} : opts.paths;
+  g.assignmentPath = opts.assignment;
+  g.jobs = opts.jobs;
+  if (!opts.shard.empty() && !parseShard(opts.shard, g.shard, g.shards)) {
+    std::fprintf(stderr, "rb test: --shard wants K/N with 1 <= K <= N (like 2/4), not '%s'\n", opts.shard.c_str());
+    return exitcode::kUsage;
+  }
+  g.seed = opts.seed;
+  g.maxSteps = opts.maxSteps;
+  g.timeout = opts.timeout;
+  g.picturesDir = opts.pictures;
+  std::error_code ec;
+  std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) {
+    std::fprintf(stderr, "rb test: cannot find rb's own executable: %s\n", ec.message().c_str());
+    return exitcode::kIoError;
+  }
+  g.childCommand = {self.string(), kTestJobCommand};
+  if (!opts.quiet && isatty(2)) {
+    g.progress = [](size_t done, size_t total) {
+      std::fprintf(stderr, "\rrb test: %zu of %zu graded", done, total);
+      if (done == total) std::fprintf(stderr, "\r\033[K");
+      std::fflush(stderr);
+    };
+  }
+
+  grade::ClassResult result = grade::gradeClass(g);
+  if (result.fatalCode) {
+    std::fprintf(stderr, "rb test: %s\n", result.fatal.c_str());
+    return result.fatalCode;
+  }
+  bool written = true;
+  if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
+  if (!opts.csv.empty()) written = writeReport(opts.csv, grade::csvReport(result)) && written;
+  std::string out = opts.format == "json" ? grade::jsonReport(result) : grade::textReport(result, !opts.quiet);
+  if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() || std::fflush(stdout) != 0) {
+    std::fprintf(stderr, "rb test: cannot write to standard output\n");
+    return exitcode::kIoError;
+  }
+  if (!written) return exitcode::kIoError;
+  return result.failed + result.errors == 0 ? exitcode::kOk : 1;
+}
+
+}  // namespace
+
+void addTestCommand(CLI::App& app, int& exitCode) {
+  auto opts = std::make_shared<TestOptions>();
+  CLI::App* test = app.add_subcommand(
+      "test", "Grade programs against the expectations in their comments or an assignment file");
+  test->add_option("paths", opts->paths, "Programs and folders (searched for *.bas); default: .");
+  test->add_option("-a,--assignment", opts->assignment,
+                   "Grade against this assignment file (TOML; see man rb-test) instead of the "
+                   "programs' comments")
+      ->type_name("FILE");
+  test->add_option("-j,--jobs", opts->jobs, "Programs to run at once (default: one per core)")
+      ->type_name("N")
+      ->check(CLI::PositiveNumber);
+  test->add_option("--shard", opts->shard,
+                   "Grade only every N-th program starting with the K-th (of the sorted list), to "
+                   "spread a class over N CI jobs")
+      ->type_name("K/N");
+  test->add_option("--seed", opts->seed,
+                   "Seed of runs whose comments give none (default 1; an assignment lists its own)")
+      ->type_name("N");
+  test->add_option("--max-steps", opts->maxSteps, "Stop each run after N statements (overrides the assignment)")
+      ->type_name("N");
+  test->add_option("--timeout", opts->timeout,
+                   "Seconds each run may take (overrides the assignment and // timeout:)")
+      ->type_name("SECONDS")
+      ->check(CLI::PositiveNumber);
+  test->add_option("--format", opts->format, "Summary on standard output: text (a table) or json")
+      ->check(CLI::IsMember({"text", "json"}));
+  test->add_option("--junit", opts->junit, "Also write a JUnit XML report to FILE")->type_name("FILE");
+  test->add_option("--csv", opts->csv, "Also write a CSV grade book to FILE")->type_name("FILE");
+  test->add_option("--pictures", opts->pictures,
+                   "Write one PNG per program into DIR: its trail (red) over the solution's (green)")
+      ->type_name("DIR");
+  test->add_flag("-q,--quiet", opts->quiet, "Only the table: no details of failed checks, no progress");
+  test->footer(
+      "Each program runs in a child process of its own (rb itself), with a time and memory "
+      "limit, so a crash or a hang fails that program alone. Exit status: 0 every program "
+      "passed, 1 some failed, 64 bad usage or assignment file, 66 a path does not exist or no "
+      "programs, 74 a report cannot be written. Manual: man rb-test.");
+  test->callback([opts, &exitCode] { exitCode = executeTest(*opts); });
+}
+
+}  // namespace rb::cli

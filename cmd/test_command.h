@@ -1,0 +1,11 @@
+#pragma once
+// `rb test [PATH...]`: grades programs against the expectations in their comments or an
+// assignment file, several at a time, each in a child process (grade/).
+
+#include <CLI/CLI.hpp>
+
+namespace rb::cli {
+
+void addTestCommand(CLI::App& app, int& exitCode);
+
+}  // namespace rb::cli

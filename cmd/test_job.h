@@ -1,0 +1,16 @@
+#pragma once
+// `rb test-job` (hidden): runs one program exactly as `rb run` would (same options, same
+// output, same exit status) and also writes what `rb test` grades: a JSON record of rb check's
+// diagnostics and of the run (grade/record.h), and the final screen when asked. `rb test`
+// starts one of these per program run, so each runs in a process of its own.
+
+#include <CLI/CLI.hpp>
+
+namespace rb::cli {
+
+/// The name of the hidden subcommand.
+constexpr const char* kTestJobCommand = "test-job";
+
+void addTestJobCommand(CLI::App& app, int& exitCode);
+
+}  // namespace rb::cli

@@ -1,0 +1,12 @@
+#pragma once
+// How rb writes a number for people: `print`, messages and traces all use this one form.
+
+#include <string>
+
+namespace rb {
+
+/// A number as `print` shows it: integers plainly, doubles with up to 15 significant digits and
+/// no trailing zeros ("3.5", "0.333333333333333", "1e+20").
+std::string formatNumber(double d);
+
+}  // namespace rb

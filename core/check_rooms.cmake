@@ -1,0 +1,51 @@
+# Checks one room's place in the layering (run by CTest, see core/CMakeLists.txt):
+#   cmake -DCXX=c++ -DROOM=lang -DINCLUDES="dir;dir" -DSOURCE_DIR=core -DWORK_DIR=dir -P check_rooms.cmake
+# With the include path the build gives rb_ROOM, a header of every room ROOM may use must be
+# found and a header of every other room must not. The table is core/README.md's.
+set(uses_base "")
+set(uses_lang base)
+set(uses_screen base)
+set(uses_input base)
+set(uses_robot base screen)
+set(uses_machine base lang screen input robot)
+# A header of each room that pulls in only what its room may use.
+set(header_base base/source.h)
+set(header_lang lang/token.h)
+set(header_screen screen/canvas.h)
+set(header_input input/input.h)
+set(header_robot robot/robot_link.h)
+set(header_machine machine/host.h)
+
+if(NOT DEFINED uses_${ROOM})
+  message(FATAL_ERROR "unknown room '${ROOM}'")
+endif()
+set(flags)
+foreach(dir ${INCLUDES})
+  list(APPEND flags -I${dir})
+endforeach()
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+set(failures)
+foreach(other base lang screen input robot machine)
+  if(other STREQUAL ROOM)
+    continue()
+  endif()
+  list(FIND uses_${ROOM} ${other} allowed)
+  set(probe ${WORK_DIR}/${ROOM}_uses_${other}.cpp)
+  file(WRITE ${probe} "#include \"${header_${other}}\"\n")
+  execute_process(COMMAND ${CXX} -std=c++20 -E ${flags} ${probe} -o ${WORK_DIR}/${ROOM}_uses_${other}.i
+                  RESULT_VARIABLE status ERROR_VARIABLE errors)
+  if(allowed GREATER -1 AND NOT status EQUAL 0)
+    list(APPEND failures "${ROOM}/ may use ${other}/ but cannot include ${header_${other}}:\n${errors}")
+  elseif(allowed EQUAL -1 AND status EQUAL 0)
+    list(APPEND failures "${ROOM}/ may not use ${other}/, yet ${header_${other}} is on its include path")
+  elseif(allowed EQUAL -1 AND NOT errors MATCHES "No such file")
+    list(APPEND failures "${ROOM}/ including ${header_${other}} failed for another reason than a missing file:\n${errors}")
+  endif()
+endforeach()
+
+if(failures)
+  string(JOIN "\n" text ${failures})
+  message(FATAL_ERROR "${text}")
+endif()
+message(STATUS "${ROOM}/ sees exactly: ${ROOM} ${uses_${ROOM}}")

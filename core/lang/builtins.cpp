@@ -1,0 +1,283 @@
+#include "lang/builtins.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <stdexcept>
+
+#include "base/runtime_error.h"
+
+namespace rb {
+
+namespace {
+
+// ---- signature parsing
+
+struct SigNode {
+  enum Kind { Param, Optional } kind;
+  ParamSpec param;
+  bool repeats = false;
+  std::vector<SigNode> children;
+};
+
+bool isNameChar(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+std::vector<SigNode> parseSignature(std::string_view sig, size_t& pos, std::string_view name) {
+  std::vector<SigNode> out;
+  while (pos < sig.size()) {
+    char c = sig[pos];
+    if (c == ' ' || c == ',') {
+      ++pos;
+    } else if (c == '[') {
+      ++pos;
+      SigNode n{SigNode::Optional, {}, false, parseSignature(sig, pos, name)};
+      if (pos >= sig.size() || sig[pos] != ']')
+        throw std::logic_error("builtin signature: missing ] in " + std::string(name));
+      ++pos;
+      out.push_back(std::move(n));
+    } else if (c == ']') {
+      return out;
+    } else {
+      SigNode n{SigNode::Param, {}, false, {}};
+      if (c == '&') {
+        n.param.out = true;
+        ++pos;
+      }
+      size_t start = pos;
+      while (pos < sig.size() && isNameChar(sig[pos])) ++pos;
+      n.param.name = sig.substr(start, pos - start);
+      if (n.param.name.empty())
+        throw std::logic_error("builtin signature: bad character in " + std::string(name));
+      if (sig.substr(pos, 3) == "...") {
+        n.repeats = true;
+        pos += 3;
+      }
+      out.push_back(std::move(n));
+    }
+  }
+  return out;
+}
+
+void expand(const std::vector<SigNode>& seq, size_t i, std::vector<ParamSpec> cur,
+            std::vector<std::vector<ParamSpec>>& out, bool& repeats) {
+  if (i == seq.size()) {
+    out.push_back(std::move(cur));
+    return;
+  }
+  const SigNode& n = seq[i];
+  if (n.kind == SigNode::Param) {
+    cur.push_back(n.param);
+    if (n.repeats) repeats = true;
+    expand(seq, i + 1, std::move(cur), out, repeats);
+    return;
+  }
+  // Optional group: with it (longer forms first) and without.
+  std::vector<std::vector<ParamSpec>> inner;
+  expand(n.children, 0, {}, inner, repeats);
+  for (auto& in : inner) {
+    std::vector<ParamSpec> with = cur;
+    with.insert(with.end(), in.begin(), in.end());
+    expand(seq, i + 1, std::move(with), out, repeats);
+  }
+  expand(seq, i + 1, std::move(cur), out, repeats);
+}
+
+/// Fills in a row's arity, parameter forms and print-list flag from its signature.
+void derive(Builtin& b) {
+  if (b.kind == BuiltinKind::Constant) return;
+  size_t pos = 0;
+  std::vector<SigNode> seq = parseSignature(b.signature, pos, b.name);
+  if (pos != b.signature.size())
+    throw std::logic_error("builtin signature: unmatched ] in " + std::string(b.name));
+  std::vector<std::vector<ParamSpec>> forms;
+  bool repeats = false;
+  expand(seq, 0, {}, forms, repeats);
+  b.minArgs = INT_MAX;
+  b.maxArgs = 0;
+  for (const auto& f : forms) {
+    int n = static_cast<int>(f.size());
+    b.minArgs = std::min(b.minArgs, n);
+    b.maxArgs = std::max(b.maxArgs, n);
+    if (static_cast<int>(b.forms.size()) <= n) b.forms.resize(static_cast<size_t>(n) + 1);
+    if (b.forms[static_cast<size_t>(n)].empty()) b.forms[static_cast<size_t>(n)] = f;
+  }
+  if (repeats) {
+    b.maxArgs = -1;
+    const auto& longest = b.forms.back();
+    if (!longest.empty() && longest.back().name == "items") b.printList = true;
+  }
+}
+
+char foldCase(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
+const char* kindWord(BuiltinKind k) {
+  switch (k) {
+    case BuiltinKind::Command: return "command";
+    case BuiltinKind::Function: return "function";
+    case BuiltinKind::Constant: return "constant";
+  }
+  return "name";
+}
+
+}  // namespace
+
+// ---- Builtin
+
+const ParamSpec& Builtin::param(int n, int i) const {
+  static const ParamSpec none{"argument", false};
+  if (n >= 0 && static_cast<size_t>(n) < forms.size() && !forms[static_cast<size_t>(n)].empty() &&
+      i < static_cast<int>(forms[static_cast<size_t>(n)].size()))
+    return forms[static_cast<size_t>(n)][static_cast<size_t>(i)];
+  // Beyond the listed forms, the repeated last parameter.
+  if (maxArgs < 0 && !forms.empty() && !forms.back().empty()) return forms.back().back();
+  return none;
+}
+
+std::string Builtin::arityText() const {
+  if (maxArgs < 0) return "at least " + std::to_string(minArgs);
+  if (minArgs == maxArgs) return std::to_string(minArgs);
+  return std::to_string(minArgs) + " to " + std::to_string(maxArgs);
+}
+
+// ---- BuiltinTable
+
+size_t BuiltinTable::FoldedHash::operator()(std::string_view s) const {
+  size_t h = 14695981039346656037ull;  // FNV-1a over the case-folded characters
+  for (char c : s) {
+    h ^= static_cast<unsigned char>(foldCase(c));
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+bool BuiltinTable::FoldedEqual::operator()(std::string_view a, std::string_view b) const {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (foldCase(a[i]) != foldCase(b[i])) return false;
+  return true;
+}
+
+BuiltinTable::BuiltinTable(std::vector<Builtin> rows) : rows_(std::move(rows)) {
+  for (uint32_t i = 0; i < rows_.size(); ++i) {
+    Builtin& b = rows_[i];
+    derive(b);
+    auto k = static_cast<size_t>(b.kind);
+    if (!byKind_[k].emplace(b.name, i).second)
+      throw std::logic_error("builtin table: " + std::string(b.name) + " appears twice as a " +
+                             kindWord(b.kind));
+    names_[k].push_back(b.name);
+  }
+}
+
+const Builtin* BuiltinTable::find(std::string_view name, BuiltinKind kind) const {
+  const Index& index = byKind_[static_cast<size_t>(kind)];
+  auto it = index.find(name);
+  return it == index.end() ? nullptr : &rows_[it->second];
+}
+
+const Builtin* BuiltinTable::findAny(std::string_view name) const {
+  for (BuiltinKind k : {BuiltinKind::Constant, BuiltinKind::Function, BuiltinKind::Command})
+    if (const Builtin* b = find(name, k)) return b;
+  return nullptr;
+}
+
+std::optional<std::string> BuiltinTable::misuse(std::string_view name, NamePlace place) const {
+  const Builtin* b = nullptr;
+  const char* use = "";
+  std::string how;
+  switch (place) {
+    case NamePlace::Statement:
+      if (find(name, BuiltinKind::Command)) return std::nullopt;
+      b = findAny(name);
+      use = "use '%' as a statement";
+      if (b && b->kind == BuiltinKind::Function)
+        how = "use its value, as in x = " + std::string(b->name) + "(...)";
+      break;
+    case NamePlace::Value:
+      if (find(name, BuiltinKind::Constant)) return std::nullopt;
+      b = findAny(name);
+      use = "use '%' as a variable";
+      if (b && b->kind == BuiltinKind::Function) how = "write " + std::string(b->name) + "()";
+      break;
+    case NamePlace::Call:
+      if (find(name, BuiltinKind::Function)) return std::nullopt;
+      b = findAny(name);
+      use = "call '%' as a function";
+      if (b && b->kind == BuiltinKind::Command) how = "write it as a statement";
+      break;
+    case NamePlace::Array:
+      b = findAny(name);
+      use = "use '%' as an array";
+      break;
+    case NamePlace::Store:
+      b = findAny(name);
+      use = "assign to '%'";
+      break;
+    case NamePlace::Sub:
+      // `name(...)` as a statement or in an expression could mean the sub or the built-in;
+      // a constant is never called, so a sub may share its name.
+      b = find(name, BuiltinKind::Function);
+      if (!b) b = find(name, BuiltinKind::Command);
+      use = "use '%' as a sub name";
+      break;
+  }
+  if (!b) return std::nullopt;
+  std::string message = "cannot ";
+  for (const char* p = use; *p; ++p) {
+    if (*p == '%') message += name;
+    else message += *p;
+  }
+  message += ": it is a built-in ";
+  message += kindWord(b->kind);
+  if (!how.empty()) message += "; " + how;
+  return message;
+}
+
+// ---- Args
+
+std::string Args::describe(int i) const {
+  std::string what = builtin_.kind == BuiltinKind::Function ? std::string(builtin_.name) + "()"
+                                                            : std::string(builtin_.name);
+  return "argument " + std::to_string(i + 1) + " (" + std::string(builtin_.param(n_, i).name) +
+         ") of " + what;
+}
+
+double Args::num(int i) const {
+  const Value& v = v_[i];
+  if (v.isInt()) return static_cast<double>(v.i());
+  if (v.isNum()) return v.d();
+  throw RuntimeError(describe(i) + " must be a number, not " +
+                     (v.isStr() ? "a string" : v.isArr() ? "an array" : "nothing"));
+}
+
+int64_t Args::integer(int i) const {
+  const Value& v = v_[i];
+  if (v.isInt()) return v.i();
+  double d = std::trunc(num(i));
+  if (!(d >= -9.2e18 && d <= 9.2e18)) throw RuntimeError(describe(i) + " is too large");
+  return static_cast<int64_t>(d);
+}
+
+uint32_t Args::colour(int i) const {
+  int64_t c = integer(i);
+  if (c < 0 || c > 0xFFFFFF) throw RuntimeError(describe(i) + " must be a colour: 0..15 or an RGB() value");
+  return static_cast<uint32_t>(c);
+}
+
+int Args::coordinate(int i) const {
+  double v = std::round(num(i));
+  if (v < -1e6) v = -1e6;
+  if (v > 1e6) v = 1e6;
+  return static_cast<int>(v);
+}
+
+const std::string& Args::str(int i) const {
+  const Value& v = v_[i];
+  if (v.isStr()) return v.str();
+  throw RuntimeError(describe(i) + " must be a string, not " +
+                     (v.isNumeric() ? "a number" : v.isArr() ? "an array" : "nothing"));
+}
+
+}  // namespace rb

@@ -1,0 +1,448 @@
+#include "checks.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "text.h"
+
+namespace rb::grade {
+
+namespace {
+
+std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+/// A string for a message: quoted, escaped, shortened.
+std::string quote(std::string_view s) {
+  std::string out = "\"";
+  size_t n = 0;
+  for (char c : s) {
+    if (++n > 160) {
+      out += "...";
+      break;
+    }
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      case '\n': out += "\\n"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 32) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned char>(c));
+          out += buf;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::vector<std::string> splitLines(const std::string& s, bool dropFinalEmpty) {
+  std::vector<std::string> lines;
+  size_t start = 0;
+  while (true) {
+    size_t nl = s.find('\n', start);
+    if (nl == std::string::npos) {
+      lines.push_back(s.substr(start));
+      break;
+    }
+    lines.push_back(s.substr(start, nl - start));
+    start = nl + 1;
+  }
+  if (dropFinalEmpty && !lines.empty() && lines.back().empty()) lines.pop_back();
+  return lines;
+}
+
+std::string where(const DiagRecord& d) {
+  return d.file + ":" + std::to_string(d.line) + ":" + std::to_string(d.col);
+}
+
+std::string diagText(const DiagRecord& d) { return where(d) + ": " + d.message; }
+
+std::string firstLine(const std::string& s) {
+  std::string line = s.substr(0, s.find('\n'));
+  return line.size() > 300 ? line.substr(0, 300) + "..." : line;
+}
+
+std::string percent(double share) {
+  char buf[32];
+  double p = share * 100;
+  std::snprintf(buf, sizeof buf, p != 0 && p < 0.01 ? "%.4f%%" : "%.2f%%", p);
+  std::string s = buf;
+  // 1.00% -> 1%, 3.20% -> 3.2%
+  size_t pct = s.size() - 1;
+  std::string num = s.substr(0, pct);
+  if (num.find('.') != std::string::npos) {
+    while (num.back() == '0') num.pop_back();
+    if (num.back() == '.') num.pop_back();
+  }
+  return num + "%";
+}
+
+std::string point(P2 p) { return "(" + pixels(p.x) + ", " + pixels(p.y) + ")"; }
+
+// ---------------------------------------------------------------- comment expectations
+
+std::set<Expected> expectedSet(const std::vector<DiagRecord>& diags, const char* severity) {
+  std::set<Expected> out;
+  for (const DiagRecord& d : diags)
+    if (d.severity == severity) out.insert({baseName(d.file), d.line, d.message});
+  return out;
+}
+
+/// An expectation as the record carries it: its text in UTF-8 (see text.h).
+Expected utf8(const Expected& e) { return {toUtf8(e.file), e.line, toUtf8(e.message)}; }
+
+std::set<Expected> utf8(const std::set<Expected>& set) {
+  std::set<Expected> out;
+  for (const Expected& e : set) out.insert(utf8(e));
+  return out;
+}
+
+std::string expectedText(const Expected& e) { return e.file + ":" + std::to_string(e.line) + ": " + e.message; }
+
+bool checkArgsTarget(const CommentSpec& spec) {
+  for (size_t i = 0; i < spec.checkArgs.size(); ++i) {
+    if (spec.checkArgs[i] == "--target=rb9") return true;
+    if (spec.checkArgs[i] == "--target" && i + 1 < spec.checkArgs.size() && spec.checkArgs[i + 1] == "rb9")
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string pixels(double v) {
+  if (!std::isfinite(v)) return "infinitely";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.1f", v);
+  std::string s = buf;
+  if (s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0) s.resize(s.size() - 2);
+  return s == "-0" ? "0" : s;
+}
+
+std::string outputDifference(const std::string& expected, const std::string& got, bool byLine) {
+  if (expected == got) return "";
+  // Lines as printed: a final newline ends the last line rather than starting an empty one.
+  std::vector<std::string> want = splitLines(expected, true), have = splitLines(got, true);
+  size_t n = std::min(want.size(), have.size());
+  for (size_t i = 0; i < n; ++i)
+    if (want[i] != have[i])
+      return "output differs at line " + std::to_string(i + 1) + ": expected " + quote(want[i]) + ", got " +
+             quote(have[i]);
+  auto lines = [](size_t k) { return std::to_string(k) + " line" + (k == 1 ? "" : "s"); };
+  if (want.size() > have.size())
+    return "output ends after " + lines(have.size()) + "; expected " + std::to_string(want.size()) +
+           ", the next being " + quote(want[have.size()]);
+  if (have.size() > want.size())
+    return "output has " + lines(have.size()) + ", expected " + std::to_string(want.size()) + "; line " +
+           std::to_string(want.size() + 1) + " is " + quote(have[want.size()]);
+  if (byLine) return "";
+  bool wantNewline = !expected.empty() && expected.back() == '\n';
+  return wantNewline ? "output lacks the newline at its end" : "output ends with a newline that was not expected";
+}
+
+std::optional<PixelDifference> compareImages(const render::RgbImage& a, const render::RgbImage& b) {
+  if (a.width != b.width || a.height != b.height || a.rgb.size() != b.rgb.size()) return std::nullopt;
+  PixelDifference d;
+  d.total = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);
+  for (size_t i = 0; i < d.total; ++i) {
+    const uint8_t* p = a.rgb.data() + i * 3;
+    const uint8_t* q = b.rgb.data() + i * 3;
+    if (p[0] != q[0] || p[1] != q[1] || p[2] != q[2]) ++d.differing;
+  }
+  return d;
+}
+
+std::string unrunnable(const RunOutcome& run) {
+  if (run.process.kind != JobOutcome::Exited) return run.processText;
+  if (!run.record) {
+    std::string why = "rb ended (exit " + std::to_string(run.process.code) + ") without reporting the run";
+    if (!run.errors.empty()) why += ": " + firstLine(run.errors);
+    return why;
+  }
+  const RunRecord& r = *run.record;
+  if (r.status == "rejected") {
+    std::string why = "does not compile";
+    if (!r.loadErrors.empty()) {
+      why += ": " + diagText(r.loadErrors[0]);
+      if (r.loadErrors.size() > 1) why += " (and " + std::to_string(r.loadErrors.size() - 1) + " more)";
+    }
+    return why;
+  }
+  if (r.status == "not-run") {
+    std::string why = "did not run (exit " + std::to_string(r.exitCode) + ")";
+    if (!run.errors.empty()) why += ": " + firstLine(run.errors);
+    return why;
+  }
+  return "";
+}
+
+std::string stopDescription(const RunRecord& r) {
+  std::string steps = " after " + std::to_string(r.steps) + " step" + (r.steps == 1 ? "" : "s");
+  std::string at = r.error ? " at " + where(*r.error) : "";
+  std::string message = r.error ? r.error->message : "";
+  if (r.status == "error") {
+    if (r.crashed) return "the robot crashed" + at + steps + ": " + message;
+    return "runtime error" + at + steps + ": " + message;
+  }
+  if (r.status == "limit") return "did not finish: " + message + at;
+  if (r.status == "stopped") return "stopped" + at + steps;
+  return "";
+}
+
+std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome& run) {
+  std::vector<CheckResult> results;
+  auto fail = [&](const std::string& name, const std::string& message) {
+    results.push_back({name, false, message, 1});
+  };
+  std::string process = run.process.kind != JobOutcome::Exited ? run.processText
+                        : !run.record ? unrunnable(run)
+                                      : "";
+  for (const std::string& p : spec.problems) fail("comments", p);
+
+  // 1. rb check: exactly the expected errors and warnings, and its exit status.
+  size_t before = results.size();
+  if (!process.empty()) {
+    fail("check", "rb check: " + process);
+  } else {
+    const RunRecord& r = *run.record;
+    std::vector<DiagRecord> diags = r.checkDiags;
+    if (checkArgsTarget(spec)) diags.insert(diags.end(), r.targetDiags.begin(), r.targetDiags.end());
+    std::set<Expected> errors = expectedSet(diags, "error"), warnings = expectedSet(diags, "warning");
+    std::set<Expected> wantErrors = utf8(spec.errors), wantWarnings = utf8(spec.warnings);
+    for (const Expected& e : wantErrors)
+      if (!errors.count(e)) fail("check", "rb check: missing error " + expectedText(e));
+    for (const Expected& e : errors)
+      if (!wantErrors.count(e)) fail("check", "rb check: unexpected error " + expectedText(e));
+    for (const Expected& w : wantWarnings)
+      if (!warnings.count(w)) fail("check", "rb check: missing warning " + expectedText(w));
+    for (const Expected& w : warnings)
+      if (!wantWarnings.count(w)) fail("check", "rb check: unexpected warning " + expectedText(w));
+    int want = spec.errors.empty() ? 0 : 65;
+    if (r.checkExit != want)
+      fail("check", "rb check: exit status " + std::to_string(r.checkExit) + ", expected " + std::to_string(want));
+  }
+  if (results.size() == before) results.push_back({"check", true, "rb check reports what the comments expect", 1});
+
+  // 2. The run: standard output, the runtime error, standard error and the exit status.
+  before = results.size();
+  if (!process.empty()) {
+    fail("run", process);
+  } else {
+    const RunRecord& r = *run.record;
+    int want = 0;
+    if (!spec.errors.empty()) {
+      want = 65;
+      std::set<Expected> got = expectedSet(r.loadErrors, "error");
+      if (got != utf8(spec.errors)) {
+        std::string list;
+        for (const Expected& e : got) list += (list.empty() ? "" : "; ") + expectedText(e);
+        fail("run", "rb run: errors differ from rb check's: " + (list.empty() ? "none" : list));
+      }
+      if (!run.output.empty())
+        fail("output", "rb run printed output although the program was rejected: " + quote(run.output));
+    } else {
+      want = spec.runtime ? 70 : 0;
+      std::string expected;
+      for (const std::string& line : spec.output) expected += line + "\n";
+      if (std::string diff = outputDifference(expected, run.output, false); !diff.empty())
+        fail("output", "standard " + diff);
+      if (spec.runtime) {
+        std::optional<Expected> got;
+        if (r.error) got = Expected{baseName(r.error->file), r.error->line, r.error->message};
+        if (got != utf8(*spec.runtime))
+          fail("runtime error", "runtime error " + (got ? expectedText(*got) : std::string("none")) +
+                                    ", expected " + expectedText(utf8(*spec.runtime)) +
+                                    (run.errors.empty() ? "" : "\n" + run.errors));
+      } else if (!run.errors.empty() && spec.stderrHas.empty()) {
+        fail("stderr", "unexpected standard error:\n" + run.errors);
+      }
+    }
+    for (const std::string& s : spec.stderrHas)
+      if (run.errors.find(s) == std::string::npos)
+        fail("stderr", "standard error lacks " + quote(s) + (run.errors.empty() ? " (it is empty)" : ":\n" + run.errors));
+    if (spec.exit) want = *spec.exit;
+    if (run.process.code != want)
+      fail("exit status", "exit status " + std::to_string(run.process.code) + ", expected " + std::to_string(want) +
+                              (run.errors.empty() ? "" : "\n" + run.errors));
+  }
+  if (results.size() == before) results.push_back({"run", true, "the run does what the comments expect", 1});
+  return results;
+}
+
+// ---------------------------------------------------------------- assignment checks
+
+namespace {
+
+/// The verdict of one check on one run: "" when it passed, else why not; `note` describes a pass.
+struct Verdict {
+  bool passed;
+  std::string message;
+};
+
+Verdict checkOutput(const Check& c, const RunOutcome& run) {
+  if (run.outputCut) return {false, "the output is longer than " + std::to_string(kOutputCap >> 20) + " MB"};
+  if (c.text) {
+    std::string diff = outputDifference(*c.text, run.output, true);
+    if (diff.empty()) return {true, "the output is as expected"};
+    return {false, diff};
+  }
+  std::vector<std::string> lines = splitLines(run.output, true);
+  for (size_t i = 0; i < lines.size() && i < c.regexes.size(); ++i) {
+    if (lines[i].size() > 2000)
+      return {false, "output line " + std::to_string(i + 1) + " is too long to match a pattern (" +
+                         std::to_string(lines[i].size()) + " characters)"};
+    if (!std::regex_match(lines[i], c.regexes[i]))
+      return {false, "output line " + std::to_string(i + 1) + " " + quote(lines[i]) + " does not match " +
+                         quote(c.patterns[i])};
+  }
+  if (lines.size() != c.regexes.size())
+    return {false, "output has " + std::to_string(lines.size()) + " line" + (lines.size() == 1 ? "" : "s") +
+                       ", expected " + std::to_string(c.regexes.size())};
+  return {true, "every output line matches its pattern"};
+}
+
+Verdict checkClean(const Check& c, const RunRecord& r) {
+  std::vector<DiagRecord> diags = r.checkDiags;
+  if (!c.target.empty()) diags.insert(diags.end(), r.targetDiags.begin(), r.targetDiags.end());
+  std::vector<const DiagRecord*> errors, warnings;
+  for (const DiagRecord& d : diags) {
+    if (d.severity == "error") errors.push_back(&d);
+    if (d.severity == "warning") warnings.push_back(&d);
+  }
+  auto count = [](size_t n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  if (!errors.empty())
+    return {false, "rb check finds " + count(errors.size(), "error") + ": " + diagText(*errors[0]) +
+                       (errors.size() > 1 ? " (and more)" : "")};
+  if (!warnings.empty() && !c.allowWarnings)
+    return {false, "rb check finds " + count(warnings.size(), "warning") + " (none allowed): " +
+                       diagText(*warnings[0]) + (warnings.size() > 1 ? " (and more)" : "")};
+  return {true, warnings.empty() ? "rb check finds nothing" : "rb check finds " + count(warnings.size(), "warning") + " (allowed)"};
+}
+
+std::string regionText(const Region& g) {
+  if (g.kind == Region::Circle)
+    return "the circle of radius " + pixels(g.r) + " around " + point({g.cx, g.cy});
+  return "the rectangle " + point({g.x1, g.y1}) + "-" + point({g.x2, g.y2});
+}
+
+Verdict checkEndsIn(const Check& c, const RunRecord& r) {
+  if (!r.located) return {false, "the robot was never placed (no rLocate)"};
+  double off = outside(c.region, r.pos);
+  if (off > 0)
+    return {false, "the robot ends at " + point(r.pos) + ", " + pixels(off) + " px outside " + regionText(c.region)};
+  return {true, "the robot ends at " + point(r.pos) + ", inside " + regionText(c.region)};
+}
+
+Verdict checkVisits(const Check& c, const RunRecord& r) {
+  if (!r.located) return {false, "the robot was never placed (no rLocate)"};
+  VisitResult v = c.inOrder ? visitInOrder(r.path, c.targets, c.tolerance) : visitAny(r.path, c.targets, c.tolerance);
+  if (!v.missed) return {true, "the robot passes every point" + std::string(c.inOrder ? " in order" : "")};
+  size_t k = *v.missed;
+  std::string which = "point " + std::to_string(k + 1) + " " + point(c.targets[k]);
+  std::string after = c.inOrder && k > 0 ? " after point " + std::to_string(k) : "";
+  if (!std::isfinite(v.closest)) return {false, "the robot never reaches " + which + after + ": it does not move on"};
+  return {false, "the robot never comes within " + pixels(c.tolerance) + " px of " + which + after +
+                     "; the closest it gets is " + pixels(v.closest) + " px"};
+}
+
+Verdict compareTrails(const Polylines& got, const Polylines& want, double tolerance, const std::string& whose) {
+  if (empty(got) && empty(want)) return {true, "neither draws a trail"};
+  if (empty(got)) return {false, "the pen drew nothing; " + whose + " trail is " + pixels(length(want)) + " px long"};
+  if (empty(want)) return {false, "the pen drew a trail of " + pixels(length(got)) + " px; " + whose + " has none"};
+  HausdorffDistance h = hausdorff(got, want);
+  std::string detail = h.fromA ? "the trail passes " + point(h.worst) + ", far from " + whose
+                               : whose + " passes " + point(h.worst) + ", far from the trail";
+  if (h.distance > tolerance)
+    return {false, "trail is " + pixels(h.distance) + " px from " + whose + " at its worst, tolerance " +
+                       pixels(tolerance) + " (" + detail + ")"};
+  return {true, "trail is within " + pixels(h.distance) + " px of " + whose + ", tolerance " + pixels(tolerance)};
+}
+
+Verdict compareScreens(const std::optional<render::RgbImage>& got, const render::RgbImage& want,
+                       double tolerance, const std::string& whose) {
+  if (!got) return {false, "the final screen was not captured"};
+  std::optional<PixelDifference> d = compareImages(*got, want);
+  if (!d)
+    return {false, whose + " is " + std::to_string(want.width) + "x" + std::to_string(want.height) +
+                       ", the screen " + std::to_string(got->width) + "x" + std::to_string(got->height)};
+  std::string amount = percent(d->share()) + " of pixels (" + std::to_string(d->differing) + " of " +
+                       std::to_string(d->total) + ")";
+  if (d->share() > tolerance)
+    return {false, "screen differs from " + whose + " in " + amount + ", tolerance " + percent(tolerance)};
+  return {true, "screen differs from " + whose + " in " + amount + ", tolerance " + percent(tolerance)};
+}
+
+Verdict evaluate(const Check& c, size_t index, const References& refs, const RunOutcome& run, size_t seedIndex) {
+  std::string cannot = unrunnable(run);
+  if (c.kind == Check::Clean && run.record) return checkClean(c, *run.record);
+  if (!cannot.empty()) return {false, cannot};
+  const RunRecord& r = *run.record;
+  const RunOutcome* sol = seedIndex < refs.solution.size() ? &refs.solution[seedIndex] : nullptr;
+  switch (c.kind) {
+    case Check::Output: return checkOutput(c, run);
+    case Check::NoError: {
+      std::string stop = stopDescription(r);
+      if (!stop.empty()) return {false, stop};
+      return {true, "finishes after " + std::to_string(r.steps) + " steps"};
+    }
+    case Check::NoCrash:
+      if (r.crashed) return {false, stopDescription(r)};
+      return {true, "the robot never crashes"};
+    case Check::Clean: return checkClean(c, r);
+    case Check::EndsIn: return checkEndsIn(c, r);
+    case Check::Visits: return checkVisits(c, r);
+    case Check::Trail: return compareTrails(r.trail, c.reference, c.tolerance, "the reference");
+    case Check::Screen: {
+      const std::optional<render::RgbImage>& picture = index < refs.pictures.size() ? refs.pictures[index] : std::nullopt;
+      if (!picture) return {false, "the reference picture could not be read"};
+      return compareScreens(run.screen, *picture, c.tolerance, baseName(c.picture));
+    }
+    case Check::SolutionOutput: {
+      if (!sol) return {false, "the solution did not run"};
+      if (run.outputCut || sol->outputCut) return {false, "the output is longer than " + std::to_string(kOutputCap >> 20) + " MB"};
+      std::string diff = outputDifference(sol->output, run.output, true);
+      if (diff.empty()) return {true, "the output is the solution's"};
+      return {false, diff + " (the solution's output)"};
+    }
+    case Check::SolutionTrail:
+      if (!sol || !sol->record) return {false, "the solution did not run"};
+      return compareTrails(r.trail, sol->record->trail, c.tolerance, "the solution's");
+    case Check::SolutionScreen:
+      if (!sol || !sol->screen) return {false, "the solution's screen was not captured"};
+      return compareScreens(run.screen, *sol->screen, c.tolerance, "the solution's");
+  }
+  return {false, "unknown check"};
+}
+
+}  // namespace
+
+std::vector<CheckResult> checkAssignment(const Assignment& assignment, const References& refs,
+                                         const std::vector<RunOutcome>& runs) {
+  std::vector<CheckResult> results;
+  for (size_t i = 0; i < assignment.checks.size(); ++i) {
+    const Check& c = assignment.checks[i];
+    CheckResult result{c.name, true, "", c.points};
+    for (size_t s = 0; s < runs.size(); ++s) {
+      Verdict v = evaluate(c, i, refs, runs[s], s);
+      std::string prefix = runs.size() > 1 ? "seed " + std::to_string(runs[s].seed) + ": " : "";
+      if (!v.passed) {
+        result.passed = false;
+        result.message = prefix + v.message;
+        break;
+      }
+      if (s == 0) result.message = v.message;
+    }
+    results.push_back(std::move(result));
+  }
+  return results;
+}
+
+}  // namespace rb::grade

@@ -1,0 +1,72 @@
+#pragma once
+// Grading one program: its runs (one per seed) against the expectations in its comments or
+// against an assignment's checks. Every failed check says which and by how much.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assignment.h"
+#include "png_writer.h"
+#include "pool.h"
+#include "record.h"
+#include "spec.h"
+
+namespace rb::grade {
+
+/// Everything the grading process knows about one run of a program.
+struct RunOutcome {
+  uint64_t seed = 0;
+  JobOutcome process;
+  std::string processText;       ///< describe(process, job)
+  std::string output;            ///< standard output (at most kOutputCap bytes)
+  bool outputCut = false;        ///< there was more
+  std::string errors;            ///< standard error (at most kOutputCap bytes)
+  std::optional<RunRecord> record;
+  std::string recordError;       ///< why there is no record
+  std::optional<render::RgbImage> screen;
+};
+
+/// The most output of a run rb test keeps (and compares).
+constexpr size_t kOutputCap = 1 << 20;
+
+struct CheckResult {
+  std::string name;     ///< as the report shows it ("trail", or the name the assignment gave)
+  bool passed = false;
+  std::string message;  ///< what was found, and by how much it missed
+  double points = 1;    ///< what it is worth
+};
+
+/// The expectations of a program's comments (golden-test semantics: testdata/README.md).
+std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome& run);
+
+/// What the assignment's checks compare with, prepared once for the whole class.
+struct References {
+  std::vector<RunOutcome> solution;                      ///< one per seed, when needed
+  std::vector<std::optional<render::RgbImage>> pictures; ///< per check: the screen check's PNG
+};
+
+/// An assignment's checks over a program's runs (one per seed, same order as the seeds).
+std::vector<CheckResult> checkAssignment(const Assignment& assignment, const References& refs,
+                                         const std::vector<RunOutcome>& runs);
+
+// Pieces the checks are made of, exposed for tests.
+
+/// "" when `got` equals `expected`, else where they first differ. `byLine`: compared line by
+/// line, so a missing newline at the very end does not count.
+std::string outputDifference(const std::string& expected, const std::string& got, bool byLine);
+/// The share of pixels that differ, and how many; nullopt when the sizes differ.
+struct PixelDifference {
+  size_t differing = 0, total = 0;
+  double share() const { return total ? static_cast<double>(differing) / static_cast<double>(total) : 0; }
+};
+std::optional<PixelDifference> compareImages(const render::RgbImage& a, const render::RgbImage& b);
+/// Why a run cannot be graded at all (the process died, nothing ran), or "".
+std::string unrunnable(const RunOutcome& run);
+/// "at prog.bas:12:3 after 418 steps: robot crashed into an obstacle" style, for a run that
+/// stopped with a runtime error or a limit; "" for one that finished.
+std::string stopDescription(const RunRecord& record);
+/// A number of pixels for a message: "37", "37.5", "infinitely".
+std::string pixels(double v);
+
+}  // namespace rb::grade

@@ -1,0 +1,186 @@
+#include "checks.h"
+
+#include <catch2/catch.hpp>
+#include <limits>
+
+using namespace rb::grade;
+
+namespace {
+
+RunOutcome finished(Polylines trail, P2 end, std::string output = "") {
+  RunOutcome run;
+  run.seed = 1;
+  run.process.kind = JobOutcome::Exited;
+  run.output = std::move(output);
+  RunRecord r;
+  r.status = "finished";
+  r.steps = 17;
+  r.located = true;
+  r.pos = end;
+  r.path = trail;
+  r.trail = std::move(trail);
+  run.record = r;
+  return run;
+}
+
+Check check(Check::Kind kind, double tolerance = 0) {
+  Check c;
+  c.kind = kind;
+  c.name = kindName(kind);
+  c.tolerance = tolerance;
+  return c;
+}
+
+const Polylines kSquare{{{400, 300}, {400, 180}, {520, 180}, {520, 300}, {400, 300}}};
+const Polylines kThree{{{400, 300}, {400, 180}, {520, 180}, {520, 300}}};
+
+}  // namespace
+
+TEST_CASE("output differences name the line", "[grade][checks]") {
+  CHECK(outputDifference("a\nb\n", "a\nb\n", false).empty());
+  CHECK(outputDifference("a\nb\n", "a\nc\n", false) == "output differs at line 2: expected \"b\", got \"c\"");
+  CHECK(outputDifference("a\nb\n", "a\n", false) == "output ends after 1 line; expected 2, the next being \"b\"");
+  CHECK(outputDifference("", "x\n", false) == "output has 1 line, expected 0; line 1 is \"x\"");
+  CHECK(outputDifference("a\n", "a", false) == "output lacks the newline at its end");
+  CHECK(outputDifference("a\n", "a", true).empty());  // by line: the last newline does not count
+  CHECK(outputDifference("tab\there\n", "tab here\n", false) ==
+        "output differs at line 1: expected \"tab\\there\", got \"tab here\"");
+}
+
+TEST_CASE("assignment checks pass and fail by how much", "[grade][checks]") {
+  Assignment a;
+  References refs;
+  refs.solution.push_back(finished(kSquare, {400, 300}, "perimeter 480\n"));
+
+  Check ends = check(Check::EndsIn);
+  ends.region.kind = Region::Circle;
+  ends.region.cx = 400;
+  ends.region.cy = 300;
+  ends.region.r = 5;
+  Check corners = check(Check::Visits, 3);
+  corners.name = "corners";
+  corners.targets = {{400, 300}, {400, 180}, {520, 180}, {520, 300}, {400, 300}};
+  Check trail = check(Check::Trail, 3);
+  trail.reference = kSquare;
+  Check output = check(Check::Output);
+  output.text = "perimeter 480";
+  a.checks = {check(Check::NoError), check(Check::SolutionOutput), corners, check(Check::SolutionTrail, 3), ends,
+              trail, output};
+
+  SECTION("the solution's twin passes everything") {
+    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kSquare, {400, 300}, "perimeter 480\n")});
+    for (const CheckResult& c : r) CHECK(c.passed);
+    CHECK(r[3].message == "trail is within 0 px of the solution's, tolerance 3");
+  }
+  SECTION("three sides") {
+    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kThree, {520, 300}, "perimeter 480\n")});
+    CHECK(r[0].passed);
+    CHECK(r[1].passed);
+    CHECK_FALSE(r[2].passed);
+    CHECK(r[2].name == "corners");
+    CHECK(r[2].message ==
+          "the robot never comes within 3 px of point 5 (400, 300) after point 4; the closest it gets is 120 px");
+    CHECK_FALSE(r[3].passed);
+    CHECK(r[3].message.rfind("trail is 60 px from the solution's at its worst, tolerance 3", 0) == 0);
+    CHECK(r[4].message == "the robot ends at (520, 300), 115 px outside the circle of radius 5 around (400, 300)");
+    CHECK(r[5].message.rfind("trail is 60 px from the reference at its worst, tolerance 3", 0) == 0);
+    CHECK(r[6].passed);
+  }
+  SECTION("a run that stopped with a runtime error") {
+    RunOutcome crash = finished({{{400, 300}, {400, 20}}}, {400, 20});
+    crash.record->status = "error";
+    crash.record->crashed = true;
+    crash.record->steps = 5;
+    crash.record->error = DiagRecord{"crashing.bas", 6, 1, "error", "robot crashed into an obstacle"};
+    std::vector<CheckResult> r = checkAssignment(a, refs, {crash});
+    CHECK(r[0].message == "the robot crashed at crashing.bas:6:1 after 5 steps: robot crashed into an obstacle");
+    CHECK(r[1].message ==
+          "output ends after 0 lines; expected 1, the next being \"perimeter 480\" (the solution's output)");
+  }
+  SECTION("a run that could not happen fails every check with the reason") {
+    RunOutcome killed;
+    killed.process.kind = JobOutcome::TimedOut;
+    killed.processText = "killed after 10 s (the time limit)";
+    for (const CheckResult& c : checkAssignment(a, refs, {killed})) {
+      CHECK_FALSE(c.passed);
+      CHECK(c.message == "killed after 10 s (the time limit)");
+    }
+  }
+  SECTION("several seeds: the first failing one is named") {
+    refs.solution.push_back(refs.solution[0]);
+    RunOutcome second = finished(kSquare, {420, 300}, "perimeter 480\n");
+    second.seed = 2;
+    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kSquare, {400, 300}, "perimeter 480\n"), second});
+    CHECK(r[1].passed);
+    CHECK_FALSE(r[4].passed);
+    CHECK(r[4].message.rfind("seed 2: the robot ends at (420, 300), 15 px outside", 0) == 0);
+  }
+}
+
+TEST_CASE("comment expectations: golden-test semantics", "[grade][checks]") {
+  CommentSpec spec;
+  spec.output = {"12"};
+  RunOutcome run = finished({}, {0, 0}, "12\n");
+  run.record->located = false;
+  auto failures = [](const std::vector<CheckResult>& r) {
+    std::vector<std::string> out;
+    for (const CheckResult& c : r)
+      if (!c.passed) out.push_back(c.name + ": " + c.message);
+    return out;
+  };
+  CHECK(failures(checkComments(spec, run)).empty());
+
+  SECTION("an unexpected warning, a missing error") {
+    run.record->checkDiags.push_back({"p.bas", 3, 5, "warning", "'x' is never assigned"});
+    spec.errors.insert({"p.bas", 2, "bad"});
+    std::vector<std::string> f = failures(checkComments(spec, run));
+    CHECK(f == std::vector<std::string>{"check: rb check: missing error p.bas:2: bad",
+                                        "check: rb check: unexpected warning p.bas:3: 'x' is never assigned",
+                                        "check: rb check: exit status 0, expected 65",
+                                        "run: rb run: errors differ from rb check's: none",
+                                        "output: rb run printed output although the program was rejected: \"12\\n\"",
+                                        "exit status: exit status 0, expected 65"});
+  }
+  SECTION("the runtime error, standard error and the exit status") {
+    spec.runtime = Expected{"p.bas", 4, "division by zero"};
+    run.record->error = DiagRecord{"dir/p.bas", 4, 9, "error", "division by zero"};
+    run.process.code = 70;
+    run.errors = "p.bas:4:9: error: division by zero\n";
+    CHECK(failures(checkComments(spec, run)).empty());
+    spec.stderrHas = {"no such thing"};
+    CHECK(failures(checkComments(spec, run)) ==
+          std::vector<std::string>{"stderr: standard error lacks \"no such thing\":\np.bas:4:9: error: division by zero\n"});
+    spec.stderrHas.clear();
+    spec.exit = 3;
+    CHECK(failures(checkComments(spec, run)).size() == 1);
+  }
+  SECTION("standard error nobody expected") {
+    run.errors = "rb run: random seed 5\n";
+    CHECK(failures(checkComments(spec, run)) ==
+          std::vector<std::string>{"stderr: unexpected standard error:\nrb run: random seed 5\n"});
+  }
+}
+
+TEST_CASE("screens compare by the share of differing pixels", "[grade][checks]") {
+  rb::render::RgbImage a;
+  a.width = 10;
+  a.height = 10;
+  a.rgb.assign(300, 255);
+  rb::render::RgbImage b = a;
+  CHECK(compareImages(a, b)->differing == 0);
+  b.set(3, 4, 0x000000);
+  b.set(5, 5, 0xFF0000);
+  std::optional<PixelDifference> d = compareImages(a, b);
+  REQUIRE(d);
+  CHECK(d->differing == 2);
+  CHECK(d->share() == Approx(0.02));
+  b.width = 5;
+  CHECK_FALSE(compareImages(a, b));
+}
+
+TEST_CASE("pixel counts in messages", "[grade][checks]") {
+  CHECK(pixels(37) == "37");
+  CHECK(pixels(37.46) == "37.5");
+  CHECK(pixels(-0.01) == "0");
+  CHECK(pixels(std::numeric_limits<double>::infinity()) == "infinitely");
+}

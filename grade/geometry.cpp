@@ -1,0 +1,172 @@
+#include "geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace rb::grade {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Segment {
+  P2 a, b;
+};
+
+/// Every segment of `lines`; a polyline of one point is a segment of length zero.
+std::vector<Segment> segments(const Polylines& lines) {
+  std::vector<Segment> out;
+  for (const Polyline& l : lines) {
+    if (l.size() == 1) out.push_back({l[0], l[0]});
+    for (size_t i = 1; i < l.size(); ++i) out.push_back({l[i - 1], l[i]});
+  }
+  return out;
+}
+
+/// Points along every segment at most `step` apart, vertices included.
+std::vector<P2> samples(const Polylines& lines, double step) {
+  std::vector<P2> out;
+  for (const Polyline& l : lines) {
+    if (l.empty()) continue;
+    out.push_back(l[0]);
+    for (size_t i = 1; i < l.size(); ++i) {
+      P2 a = l[i - 1], b = l[i];
+      double len = distance(a, b);
+      int n = static_cast<int>(std::min(std::ceil(len / step), 1e7));
+      for (int k = 1; k <= n; ++k) {
+        double t = static_cast<double>(k) / n;
+        out.push_back({a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t});
+      }
+    }
+  }
+  return out;
+}
+
+/// The smallest t in [t0, 1] where the point a + t (b - a) lies within `tol` of p, or -1.
+double firstWithin(P2 a, P2 b, double t0, P2 p, double tol) {
+  double dx = b.x - a.x, dy = b.y - a.y;
+  double fx = a.x - p.x, fy = a.y - p.y;
+  double qa = dx * dx + dy * dy;
+  double qb = 2 * (fx * dx + fy * dy);
+  double qc = fx * fx + fy * fy - tol * tol;
+  if (qa == 0) return qc <= 0 ? t0 : -1;
+  double disc = qb * qb - 4 * qa * qc;
+  if (disc < 0) return -1;
+  double root = std::sqrt(disc);
+  double lo = (-qb - root) / (2 * qa), hi = (-qb + root) / (2 * qa);
+  if (hi < t0 || lo > 1) return -1;
+  return std::max(lo, t0);
+}
+
+P2 lerp(P2 a, P2 b, double t) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; }
+
+}  // namespace
+
+double distance(P2 a, P2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+double distanceToSegment(P2 p, P2 a, P2 b) {
+  double dx = b.x - a.x, dy = b.y - a.y;
+  double len2 = dx * dx + dy * dy;
+  if (len2 == 0) return distance(p, a);
+  double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2;
+  t = std::clamp(t, 0.0, 1.0);
+  return distance(p, lerp(a, b, t));
+}
+
+double distanceToLines(P2 p, const Polylines& lines) {
+  double best = kInf;
+  for (const Segment& s : segments(lines)) best = std::min(best, distanceToSegment(p, s.a, s.b));
+  return best;
+}
+
+double length(const Polylines& lines) {
+  double total = 0;
+  for (const Polyline& l : lines)
+    for (size_t i = 1; i < l.size(); ++i) total += distance(l[i - 1], l[i]);
+  return total;
+}
+
+bool empty(const Polylines& lines) {
+  return std::all_of(lines.begin(), lines.end(), [](const Polyline& l) { return l.empty(); });
+}
+
+DirectedDistance directedHausdorff(const Polylines& a, const Polylines& b, double step) {
+  DirectedDistance result;
+  std::vector<P2> points = samples(a, step > 0 ? step : 0.5);
+  if (points.empty()) return result;
+  std::vector<Segment> segs = segments(b);
+  if (segs.empty()) return {kInf, points[0]};
+  // Visit the samples in a scattered order: once a far point sets the running maximum, most
+  // other samples find a segment nearer than it at once and stop early (Taha and Hanbury's
+  // early break). The order is a fixed permutation, so ties resolve the same on every run.
+  size_t n = points.size();
+  size_t stride = static_cast<size_t>(static_cast<double>(n) * 0.618033988749895) | 1;
+  while (std::gcd(stride, n) != 1) stride += 2;
+  double worst = -1;
+  size_t index = 0;
+  for (size_t k = 0; k < n; ++k, index = (index + stride) % n) {
+    P2 p = points[index];
+    double nearest = kInf;
+    for (const Segment& s : segs) {
+      nearest = std::min(nearest, distanceToSegment(p, s.a, s.b));
+      if (nearest <= worst) break;
+    }
+    if (nearest > worst) {
+      worst = nearest;
+      result.worst = p;
+    }
+  }
+  result.distance = worst;
+  return result;
+}
+
+HausdorffDistance hausdorff(const Polylines& a, const Polylines& b, double step) {
+  if (empty(a) && empty(b)) return {};
+  DirectedDistance ab = directedHausdorff(a, b, step), ba = directedHausdorff(b, a, step);
+  if (empty(a)) return {kInf, ba.worst, false};
+  if (ab.distance >= ba.distance) return {ab.distance, ab.worst, true};
+  return {ba.distance, ba.worst, false};
+}
+
+double outside(const Region& region, P2 p) {
+  if (region.kind == Region::Circle)
+    return std::max(0.0, distance(p, {region.cx, region.cy}) - region.r);
+  double dx = std::max({region.x1 - p.x, 0.0, p.x - region.x2});
+  double dy = std::max({region.y1 - p.y, 0.0, p.y - region.y2});
+  return std::hypot(dx, dy);
+}
+
+VisitResult visitInOrder(const Polylines& path, const std::vector<P2>& targets, double tolerance) {
+  std::vector<Segment> segs = segments(path);
+  size_t seg = 0;
+  double t = 0;
+  for (size_t k = 0; k < targets.size(); ++k) {
+    bool found = false;
+    double closest = kInf;
+    for (size_t s = seg; s < segs.size() && !found; ++s) {
+      double from = s == seg ? t : 0;
+      double hit = firstWithin(segs[s].a, segs[s].b, from, targets[k], tolerance);
+      if (hit >= 0) {
+        seg = s;
+        t = hit;
+        found = true;
+      } else {
+        closest = std::min(closest, distanceToSegment(targets[k], lerp(segs[s].a, segs[s].b, from), segs[s].b));
+      }
+    }
+    if (!found) return {k, closest};
+  }
+  return {};
+}
+
+VisitResult visitAny(const Polylines& path, const std::vector<P2>& targets, double tolerance) {
+  for (size_t k = 0; k < targets.size(); ++k) {
+    double d = distanceToLines(targets[k], path);
+    if (!(d <= tolerance)) return {k, d};
+  }
+  return {};
+}
+
+}  // namespace rb::grade

@@ -1,0 +1,96 @@
+#include "report.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "pictures.h"
+
+using namespace rb::grade;
+
+namespace {
+
+ClassResult sample() {
+  ClassResult r;
+  r.title = "square";
+  r.timestamp = "2026-11-21T10:00:00";
+  r.seconds = 1.5;
+  ProgramResult pass;
+  pass.program = "class/a.bas";
+  pass.verdict = "pass";
+  pass.checks = {{"trail", true, "ok", 2}};
+  pass.points = pass.maxPoints = 2;
+  pass.output = "perimeter 480\n";
+  ProgramResult fail;
+  fail.program = "class/b, \"quoted\".bas";
+  fail.verdict = "fail";
+  fail.reason = "trail is 60 px from the solution's at its worst, tolerance 3 <&>";
+  fail.checks = {{"trail", false, fail.reason, 2}};
+  fail.maxPoints = 2;
+  fail.output = std::string("caf\xE9 \x01 bell\n");  // Latin-1 and a control character
+  ProgramResult skip;
+  skip.program = "lib.bas";
+  skip.verdict = "skip";
+  skip.reason = "not a test";
+  r.programs = {pass, fail, skip};
+  r.passed = 1;
+  r.failed = 1;
+  r.skipped = 1;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("the text report: a table, the failed checks, a total", "[grade][report]") {
+  std::string text = textReport(sample(), true);
+  CHECK(text.find("class/a.bas") != std::string::npos);
+  CHECK(text.find("FAIL") != std::string::npos);
+  CHECK(text.find("    trail: trail is 60 px") != std::string::npos);
+  CHECK(text.find("3 programs: 1 passed, 1 failed, 1 skipped in 1.50 s\n") != std::string::npos);
+  CHECK(textReport(sample(), false).find("    trail:") == std::string::npos);
+}
+
+TEST_CASE("the JUnit report escapes and counts", "[grade][report]") {
+  std::string xml = junitReport(sample());
+  CHECK(xml.find("<testsuite name=\"square\" tests=\"3\" failures=\"1\" errors=\"0\" skipped=\"1\"") != std::string::npos);
+  CHECK(xml.find("tolerance 3 &lt;&amp;&gt;") != std::string::npos);
+  CHECK(xml.find("name=\"b, &quot;quoted&quot;.bas\"") != std::string::npos);
+  CHECK(xml.find("<failure message=\"trail is 60 px") != std::string::npos);
+  CHECK(xml.find("type=\"trail\"") != std::string::npos);
+  CHECK(xml.find("<skipped message=\"not a test\"/>") != std::string::npos);
+  CHECK(xml.find("caf\xC3\xA9 \xEF\xBF\xBD bell") != std::string::npos);  // é from Latin-1, U+FFFD for ^A
+}
+
+TEST_CASE("XML escaping keeps text valid", "[grade][report]") {
+  CHECK(xmlEscape("a<b>&\"'") == "a&lt;b&gt;&amp;&quot;&apos;");
+  CHECK(xmlEscape("tab\tnew\nline") == "tab\tnew\nline");
+  CHECK(xmlEscape("\x1b[31m") == "\xEF\xBF\xBD[31m");
+  CHECK(xmlEscape("\xE2\x82\xAC") == "\xE2\x82\xAC");  // UTF-8 stays
+  CHECK(xmlEscape("\xE2\x82") == "\xC3\xA2\xC2\x82");  // a cut sequence is read as Latin-1
+}
+
+TEST_CASE("the JSON and CSV reports", "[grade][report]") {
+  nlohmann::json doc = nlohmann::json::parse(jsonReport(sample()));
+  CHECK(doc["programs"].size() == 3);
+  CHECK(doc["programs"][1]["result"] == "fail");
+  CHECK(doc["programs"][1]["checks"][0]["passed"] == false);
+  CHECK(doc["summary"]["skipped"] == 1);
+  std::string csv = csvReport(sample());
+  // Every graded program has the same checks: one column each, with the points it earned.
+  CHECK(csv.rfind("program,result,points,max_points,checks_passed,checks,steps,seconds,reason,trail\n", 0) == 0);
+  CHECK(csv.find("class/a.bas,pass,2,2,1,1,0,0.000,,2\n") != std::string::npos);
+  CHECK(csv.find("\"class/b, \"\"quoted\"\".bas\",fail,0,2,0,1,") != std::string::npos);
+  CHECK(csvField("plain") == "plain");
+  CHECK(csvField("a\nb") == "\"a\nb\"");
+}
+
+TEST_CASE("the feedback picture draws the student's trail over the solution's", "[grade][report]") {
+  PictureInput in;
+  in.reference = {{{100, 100}, {200, 100}}};
+  in.student = {{{100, 110}, {200, 110}}};
+  rb::render::RgbImage img = feedbackPicture(in);
+  CHECK(img.width == 800);
+  CHECK(img.height == 600);
+  CHECK(img.pixel(150, 100) == kReferenceColour);
+  CHECK(img.pixel(150, 110) == kStudentColour);
+  CHECK(img.pixel(150, 300) == 0xFFFFFF);
+}

@@ -1,0 +1,16 @@
+// Loops: for keeps its limit and step in hidden slots; while tests at the bottom; repeat
+// jumps back while its condition is false; break and continue jump to the exit and the test.
+total = 0
+for i = 1 to 10 step 3
+  if i = 7 then continue
+  total += i
+next
+n = 0
+while n < 100
+  n++
+  if n >= 3 then break
+wend
+repeat
+  n--
+until n <= 0
+print total; n // expect: 15	0

@@ -1,0 +1,10 @@
+// Off by one: the loop draws three sides.
+rLocate 400,300
+rInvisible GREEN
+LineWidth 4
+rPen DOWN
+for n = 1 to 3
+  rForward 120
+  rTurn 90
+next
+print "perimeter " + 4 * 120
