@@ -70,7 +70,10 @@ std::string what(const PortInfo& p) {
   } else {
     add("not a serial port libserialport knows");
   }
-  if (!p.description.empty() && p.description != p.product && p.transport != "usb")
+  // The driver's description, when it says more than the device's name.
+  std::string name = std::filesystem::path(p.device).filename().string();
+  if (!p.description.empty() && p.description != p.product && p.description != name &&
+      p.transport != "usb")
     add(p.description);
   return out;
 }

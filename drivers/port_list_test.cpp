@@ -61,13 +61,19 @@ TEST_CASE("ports: the table", "[ports]") {
   PortInfo uart;
   uart.device = "/dev/ttyS0";
   uart.transport = "native";
-  uart.description = "ttyS0";
-  std::string t = formatPorts({usb, rf, uart});
+  uart.description = "ttyS0";  // the device's name again: not shown
+  PortInfo bt;
+  bt.device = "/dev/ttyBT0";
+  bt.transport = "bluetooth";
+  bt.bluetoothAddress = "00:12:6f:aa:bb:cc";
+  bt.description = "RB-9 serial";
+  std::string t = formatPorts({usb, rf, uart, bt});
   CHECK(t ==
         "--port  device        what\n"
         "1       /dev/ttyUSB0  USB 0403:6001, FTDI FT232R USB UART, serial A50285BI\n"
         "2       /dev/rfcomm1  Bluetooth RFCOMM binding (rfcomm bind)\n"
-        "-       /dev/ttyS0    serial port, ttyS0\n");
+        "-       /dev/ttyS0    serial port\n"
+        "-       /dev/ttyBT0   Bluetooth 00:12:6f:aa:bb:cc, RB-9 serial\n");
 }
 
 TEST_CASE("ports: a pseudo-terminal described, the system's list read", "[ports]") {

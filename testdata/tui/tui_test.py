@@ -465,6 +465,66 @@ def test_pixels(rb):
         s.close()
 
 
+
+def test_sixel(rb):
+    """--cells pixels on a terminal that reports sixel graphics: rb sends the screen as a sixel
+    image. The terminal here is a pseudo-terminal this test answers for (tmux is not needed):
+    it says it is a VT340-class terminal with sixels (CSI ? 63;4 c) and reads what rb draws."""
+    import fcntl
+    import pty
+    import select
+    import struct
+    import termios
+    pid, fd = pty.fork()
+    if pid == 0:
+        os.chdir(HERE)
+        env = dict(os.environ, TERM="xterm-256color", LC_ALL="C.UTF-8")
+        os.execve(rb, [rb, "run", "--tui", "--cells", "pixels", "square.bas"], env)
+    fcntl.ioctl(fd, termios.TIOCSWINSZ, struct.pack("HHHH", 30, 100, 600, 1000))
+    got = b""
+    answered = False
+    deadline = time.monotonic() + TIMEOUT
+    try:
+        while time.monotonic() < deadline:
+            ready, _, _ = select.select([fd], [], [], 0.2)
+            if not ready:
+                continue
+            try:
+                chunk = os.read(fd, 65536)
+            except OSError:
+                break
+            got += chunk
+            if not answered and b"\x1b[c" in got:
+                os.write(fd, b"\x1b[?63;4c")  # a terminal with sixel graphics
+                answered = True
+            if re.search(rb"\x1bPq?[0-9;]*q?\"1;1;\d+;\d+", got):
+                break
+        check(answered, "rb did not ask the terminal what it can do")
+        check(re.search(rb"\x1bP[0-9;]*q\"1;1;\d+;\d+", got) is not None,
+              f"no sixel image in rb's output ({len(got)} bytes)")
+        check(b"view pixels" in got, "the title does not say pixels")
+        os.write(fd, b"\x1b[21~")  # F10
+        end = time.monotonic() + TIMEOUT
+        while time.monotonic() < end:
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                check(os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0, f"exit status {status}")
+                return
+            try:
+                if select.select([fd], [], [], 0.2)[0]:
+                    os.read(fd, 65536)
+            except OSError:
+                pass
+        raise Failure("rb did not exit after F10")
+    finally:
+        try:
+            os.kill(pid, 9)
+            os.waitpid(pid, 0)
+        except OSError:
+            pass
+        os.close(fd)
+
+
 TESTS = {
     "square": test_square,
     "keyboard": test_keyboard,
@@ -482,6 +542,7 @@ TESTS = {
     "dumb": test_dumb,
     "real": test_real,
     "pixels": test_pixels,
+    "sixel": test_sixel,
 }
 
 
