@@ -457,7 +457,11 @@ void TuiHost::step(Debugger::Step kind) {
 
 void TuiHost::toggleBreakpoint() {
   if (ended_ || !loc_.valid()) return;
-  debugger_.toggleBreakpoint(loc_.file, loc_.line);
+  bool set = debugger_.toggleBreakpoint(loc_.file, loc_.line);
+  // The running line's marker is '>' either way: the title says what happened.
+  notice_ = (set ? "breakpoint set on line " : "breakpoint cleared on line ") +
+            std::to_string(loc_.line);
+  noticeLoc_ = loc_;
 }
 
 void TuiHost::changeSpeed(double by) {
@@ -526,6 +530,7 @@ void TuiHost::draw() {
                       (pixels_ ? "pixels" : modeName(mode_));
   if (!pixelsNote_.empty()) title += "   " + pixelsNote_;
   if (ended_) title += "   (press any key to exit)";
+  else if (!notice_.empty() && loc_ == noticeLoc_) title += "   " + notice_;
   title.resize(static_cast<size_t>(layout_.title.width), ' ');
   screen_.drawText(0, 0, title, bar);
   screen_.drawBox(layout_.arenaBox.col, layout_.arenaBox.row, layout_.arenaBox.width,

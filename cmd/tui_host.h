@@ -180,6 +180,8 @@ class TuiHost : public Host, public RobotObserver {
   bool endKey_ = false;
   const char* waitingFor_ = nullptr;  ///< what a blocking read waits for, for the state line
   std::string endState_;
+  std::string notice_;  ///< shown in the title while the run stays at noticeLoc_
+  SourceLoc noticeLoc_;
   SourceLoc loc_;      ///< the statement running now (or about to, when paused)
   size_t depth_ = 0;   ///< its gosub/call depth
 

@@ -368,6 +368,7 @@ def test_break(rb):
         t = s.wait_for("the second stop", lambda t: running_line(t) == 7
                        and variable(t, "total") == "3" and status(t, "state") == "paused")
         s.keys("F9")  # clears the breakpoint on the shown line: the run goes on to its end
+        s.wait_for("the title's notice", lambda t: "breakpoint cleared on line 7" in t.split("\n")[0])
         s.keys("F2")
         t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
         check("total 6" in t, "the output pane:\n" + t)
