@@ -79,6 +79,8 @@ void HeadlessHost::disarmWatchdog() {
   alarms_ = nullptr;
 }
 
+void HeadlessHost::attachMachine(Machine& machine) { script_.useControls(&machine.controls); }
+
 void HeadlessHost::output(std::string_view text) {
   if (outputHook) {
     outputHook(text);

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "machine/host.h"
+#include "machine/machine.h"
 #include "input/input_script.h"
 
 namespace rb::cli {
@@ -25,6 +26,7 @@ class HeadlessHost : public Host {
   HeadlessHost(std::FILE* out, std::istream& in, InputScript script = {});
   ~HeadlessHost() override;
 
+  void attachMachine(Machine& machine) override;
   void output(std::string_view text) override;
   std::optional<std::string> inputLine(std::string_view prompt) override;
   double clockMs() override;

@@ -4,9 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
-#include <random>
 
 #include "exit_codes.h"
 #include "files.h"
@@ -49,49 +47,6 @@ int loadInputScript(const char* command, const RunOptions& opts, InputScript& sc
   return exitcode::kOk;
 }
 
-int loadForRun(const char* command, const RunOptions& opts, const CompileOptions& compile,
-               LoadedFile& loaded) {
-  loaded = loadFile(opts.file, compile, false);
-  if (loaded.exitCode == exitcode::kNoInput) {
-    std::fprintf(stderr, "%s: cannot read '%s': %s\n", command, opts.file.c_str(),
-                 loaded.readError.c_str());
-    return exitcode::kNoInput;
-  }
-  printDiagnostics(stderr, loaded.program->sources, loaded.diags, true);
-  return loaded.compiled ? exitcode::kOk : exitcode::kRejected;
-}
-
-uint64_t runSeed(const RunOptions& opts) { return opts.seed ? *opts.seed : std::random_device{}(); }
-
-RunLimits runLimits(const RunOptions& opts) {
-  RunLimits limits;
-  limits.maxSteps = opts.maxSteps;
-  limits.timeoutSeconds = opts.timeoutSeconds;
-  limits.maxMemoryBytes = static_cast<uint64_t>(opts.maxMemoryMiB) << 20;
-  return limits;
-}
-
-std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts) {
-  std::string home = opts.file == "-" ? "." : std::filesystem::path(opts.file).parent_path().string();
-  return std::make_unique<Sandbox>(home.empty() ? "." : home, opts.allowFiles, opts.allowSpawn);
-}
-
-std::string connectRealRobot(const RunOptions& opts, Machine& machine) {
-  if (!opts.real) return "";
-  try {
-    machine.connectRobot(openRobotPort(std::nullopt, opts));  // the port --port names
-  } catch (const RuntimeError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-void reportSeed(const char* command, const RunOptions& opts, uint64_t seed, const Machine& machine) {
-  if (!opts.seed && machine.rngUsed())
-    std::fprintf(stderr, "%s: random seed %llu (repeat this run with --seed %llu)\n", command,
-                 static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed));
-}
-
 uint64_t countedSteps(const RunResult& result, uint64_t started) {
   if (result.status == RunStatus::StepLimit) return result.steps;
   return std::max(result.steps, started);
@@ -101,42 +56,28 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
                 std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
                 std::function<void(SourceLoc)> onLine,
                 std::function<void(std::string_view)> onOutput) {
-  if (int code = loadForRun(command, opts, compile, run.loaded)) return code;
+  if (int code = run.load(command, opts, compile)) return code;
 
   InputScript script;
   if (int code = loadInputScript(command, opts, script)) return code;
 
-  run.seed = runSeed(opts);
-  run.host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
-  run.host->inputFd = STDIN_FILENO;
-  run.host->lineHook = std::move(onLine);
-  run.host->outputHook = std::move(onOutput);
-  run.host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
-  run.sandbox = runSandbox(opts);
-  run.host->setSystem(run.sandbox.get());
-  run.machine = std::make_unique<Machine>(*run.host, run.seed);
-  run.machine->setObserver(observer);
-  run.machine->canvas().keepDisplayList(run.keepDisplayList);
-  if (std::string why = connectRealRobot(opts, *run.machine); !why.empty()) {
+  auto host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
+  host->inputFd = STDIN_FILENO;
+  host->lineHook = std::move(onLine);
+  host->outputHook = std::move(onOutput);
+  host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
+  if (std::string why = run.start(opts, std::move(host), observer); !why.empty()) {
     std::fprintf(stderr, "%s: %s\n", command, why.c_str());
     return exitcode::kIoError;
   }
-  Interpreter interp(*run.loaded.compiled, *run.machine);
-  run.result = interp.run(runLimits(opts));
-  run.ran = true;
-  run.host->flush();
-  if (int err = run.host->writeError()) {
+  run.run(opts);
+  run.headlessHost().flush();
+  if (int err = run.headlessHost().writeError()) {
     std::fprintf(stderr, "%s: cannot write the program's output: %s\n", command, std::strerror(err));
     return exitcode::kIoError;
   }
-  reportSeed(command, opts, run.seed, *run.machine);
-  if (run.result.status == RunStatus::StepLimit && !run.stepLimitIsError) return exitcode::kOk;
-  if (run.result.error) {
-    printDiagnostic(stderr, run.loaded.program->sources, *run.result.error);
-    return exitcode::kRuntime;
-  }
-  if (run.result.status == RunStatus::Stopped) return exitcode::kRuntime;
-  return exitcode::kOk;
+  // The host stops a run only when output could not be written (reported above).
+  return run.conclude(command, opts, exitcode::kRuntime);
 }
 
 }  // namespace rb::cli

@@ -8,6 +8,7 @@
 #include "check_command.h"
 #include "cli_errors.h"
 #include "exit_codes.h"
+#include "ports_command.h"
 #include "render_command.h"
 #include "robot_command.h"
 #include "run_command.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   rb::cli::addTraceCommand(app, exitCode);
   rb::cli::addRenderCommand(app, exitCode);
   rb::cli::addRobotCommand(app, exitCode);
+  rb::cli::addPortsCommand(app, exitCode);
   rb::cli::addTestCommand(app, exitCode);
   rb::cli::addTestJobCommand(app, exitCode);
   app.footer("Run 'rb COMMAND --help' (or 'rb help COMMAND') for the options of a command. "

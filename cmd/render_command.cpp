@@ -46,7 +46,8 @@ render::CellMode cellMode(const std::string& name) {
   return render::CellMode::Ascii;
 }
 
-/// Writes the picture of the machine's screen; returns 0 or kIoError (message printed).
+/// Writes the picture of the machine's screen as a viewer sees it (with flip on, the screen at the
+/// last flip); returns 0 or kIoError (message printed).
 int writePicture(const RenderOptions& opts, Format format, const Machine& machine) {
   const render::RobotView robot = render::robotView(machine);
   const Canvas& canvas = machine.canvas();
@@ -58,7 +59,7 @@ int writePicture(const RenderOptions& opts, Format format, const Machine& machin
         view.cols = opts.cols;
         view.rows = opts.rows;
         view.mode = cellMode(opts.cells);
-        std::string text = render::frameText(render::renderArena(canvas.pixels(), canvas.background(), robot, view));
+        std::string text = render::frameText(render::renderArena(machine.shownScreen(), canvas.background(), robot, view));
         if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
           std::fprintf(stderr, "rb render: cannot write to standard output\n");
           return exitcode::kIoError;
@@ -66,11 +67,12 @@ int writePicture(const RenderOptions& opts, Format format, const Machine& machin
         return exitcode::kOk;
       }
       case Format::Png:
-        if (render::writePngFile(opts.output, render::composeImage(canvas.pixels(), robot, opts.scale), error))
+        if (render::writePngFile(opts.output, render::composeImage(machine.shownScreen(), robot, opts.scale), error))
           return exitcode::kOk;
         break;
       case Format::Svg: {
-        std::string svg = render::renderSvg(canvas, robot, opts.scale);
+        std::string svg = render::renderSvg(canvas, robot, opts.scale,
+                                            machine.showsFlip() ? &machine.shownScreen() : nullptr);
         if (render::writeFileBytes(opts.output, svg.data(), svg.size(), error)) return exitcode::kOk;
         break;
       }

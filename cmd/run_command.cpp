@@ -35,6 +35,23 @@ const CLI::Validator kPositiveSeconds(
     },
     "SECONDS");
 
+/// --speed: a factor from 1/64 to 64.
+const CLI::Validator kSpeed(
+    [](std::string& text) -> std::string {
+      double v = 0;
+      try {
+        size_t used = 0;
+        v = std::stod(text, &used);
+        if (used != text.size()) return "'" + text + "' is not a number";
+      } catch (const std::exception&) {
+        return "'" + text + "' is not a number";
+      }
+      if (!std::isfinite(v) || v < 1.0 / 64 || v > 64)
+        return "'" + text + "' must be a speed factor from 0.015625 (1/64) to 64";
+      return "";
+    },
+    "X");
+
 const CLI::Validator kNotEmpty(
     [](std::string& text) -> std::string { return text.empty() ? "must not be empty" : ""; }, "");
 }  // namespace
@@ -94,14 +111,32 @@ void addRunCommand(CLI::App& app, int& exitCode) {
   run->add_option("file", opts->file, "Program file (- reads the program from standard input)")
       ->required();
   addRunLimitOptions(*run, *opts);
-  run->add_flag("--tui", opts->tui, "Show the arena live in the terminal (ncurses)");
+  CLI::Option* tui = run->add_flag(
+      "--tui", opts->tui,
+      "Show the program live in the terminal: the arena, the source around the running line, the "
+      "variables; pause, step and break (see man rb-run)");
   run->add_option("--cells", opts->cells,
-                  "Cell mode of --tui: ascii, half (half blocks) or braille (default: the finest "
-                  "the terminal can show; F6 switches)")
-      ->check(CLI::IsMember({"ascii", "half", "braille"}));
+                  "Cell mode of --tui: ascii, half (half blocks), braille, or pixels (the screen "
+                  "as a sixel image, on terminals that show them) (default: the finest "
+                  "character mode the terminal can show; F6 switches)")
+      ->check(CLI::IsMember({"ascii", "half", "braille", "pixels"}))
+      ->needs(tui);
+  run->add_option("--speed", opts->speed,
+                  "Speed of --tui: X times real time (0.015625 to 64, default 1; F4/F5 halve and "
+                  "double it)")
+      ->check(kSpeed)
+      ->needs(tui);
+  run->add_flag("--paused", opts->paused, "Start --tui paused, before the first statement")
+      ->needs(tui);
+  run->add_option("--break", opts->breaks,
+                  "Pause --tui before the statements of LINE (of FILE, for an included file); "
+                  "repeatable")
+      ->type_name("[FILE:]LINE")
+      ->needs(tui);
   run->footer(
-      "Exit status: 0 finished, 64 bad usage, 65 the program has errors (nothing ran), "
-      "66 file not found, 70 runtime error or limit reached, 74 I/O error.");
+      "Exit status: 0 finished (or --tui quit with F10), 64 bad usage, 65 the program has "
+      "errors (nothing ran), 66 file not found, 70 runtime error or limit reached, 74 I/O error "
+      "(also: --tui without a terminal that can show it), 130 --tui quit with Ctrl-C.");
   run->callback([opts, &exitCode] { exitCode = executeRun(*opts); });
 }
 

@@ -30,10 +30,14 @@ struct RunOptions {
   // programs only with --allow-spawn.
   std::vector<std::string> allowFiles;
   bool allowSpawn = false;
-  // rb run only: the live terminal view and its cell mode (ascii, half or braille; empty: the
-  // best the terminal can show).
+  // rb run only: the live terminal view, its cell mode (ascii, half, braille or pixels; empty:
+  // the best the terminal can show), its speed, whether it starts paused, and breakpoints
+  // (LINE or FILE:LINE, --break, repeatable).
   bool tui = false;
   std::string cells;
+  double speed = 1;
+  bool paused = false;
+  std::vector<std::string> breaks;
 };
 
 /// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.

@@ -2,8 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <utility>
+#include <vector>
 
+#include "png_writer.h"
 #include "robot_view.h"
+#include "sixel_image.h"
+#include "svg_writer.h"
+#include "tui_panes.h"
 
 namespace rb::cli {
 
@@ -14,21 +21,23 @@ using render::TermStyle;
 
 constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // at most ~30 frames a second
 constexpr auto kTickInterval = std::chrono::milliseconds(8);    // how often hot hooks read keys
-/// Terminals report key presses, never releases: a key counts as held this long after its last
-/// press (auto-repeat presses keep a held key down), and always until a read has seen it.
-constexpr auto kKeyHold = std::chrono::milliseconds(150);
+/// How often the variables pane takes a new look while the program runs.
+constexpr auto kVariablesInterval = std::chrono::milliseconds(250);
 /// Waits that start within this many run-clock milliseconds of the previous one's end continue
 /// its schedule, so the time between waits does not slow the animation down.
 constexpr double kPaceSlackMs = 50;
 constexpr size_t kMaxOutputLines = 1000;
+/// What the transcript keeps at most (printed after the view closes); later output is dropped.
+constexpr size_t kMaxTranscript = 64u << 20;
 constexpr size_t kMaxTypedAhead = 8;
 constexpr double kMinFactor = 1.0 / 64, kMaxFactor = 64;
 
-// Control characters of the keys rb keeps (raw mode delivers them as keys).
-constexpr int64_t kCtrlB = 2, kCtrlC = 3, kCtrlD = 4, kCtrlF = 6, kCtrlP = 16, kCtrlQ = 17,
-                  kCtrlS = 19, kCtrlV = 22;
+// Control characters of the keys rb keeps (raw mode delivers them as keys). None is a common
+// prefix of tmux (Ctrl-B) or screen (Ctrl-A).
+constexpr int64_t kCtrlC = 3, kCtrlF = 6, kCtrlL = 12, kCtrlN = 14, kCtrlP = 16, kCtrlQ = 17,
+                  kCtrlR = 18, kCtrlS = 19, kCtrlT = 20, kCtrlV = 22, kCtrlW = 23;
 
-bool printable(int64_t key) { return key >= 32 && key < 127; }
+int64_t fKey(int n) { return keys::kF1 + n - 1; }
 
 const char* modeName(render::CellMode m) {
   switch (m) {
@@ -56,6 +65,12 @@ class Waiting {
   const char*& slot_;
 };
 
+std::string hex2(unsigned v) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%02x", v & 0xFF);
+  return buf;
+}
+
 }  // namespace
 
 // ---- the run clock
@@ -81,12 +96,21 @@ void TuiHost::RunClock::setFactor(double factor) {
 
 // ---- Host
 
-TuiHost::TuiHost(render::CursesScreen& screen, std::string fileName, render::CellMode mode)
-    : screen_(screen), file_(std::move(fileName)), mode_(mode) {}
+TuiHost::TuiHost(render::CursesScreen& screen, TuiSettings settings)
+    : screen_(screen), settings_(std::move(settings)), mode_(settings_.mode) {
+  clock_.setFactor(std::clamp(settings_.speed, kMinFactor, kMaxFactor));
+  held_.setReportsReleases(screen_.reportsKeyReleases());
+  pixels_ = settings_.pixels && screen_.sixel();
+  if (settings_.pixels && !pixels_) pixelsNote_ = "(no pixels: the terminal shows no sixel images)";
+  // --paused: a step armed from the start ends before the first statement.
+  if (settings_.paused) debugger_.step(Debugger::Step::Into, 0);
+}
 
 void TuiHost::output(std::string_view text) { appendOutput(text); }
 
 void TuiHost::appendOutput(std::string_view text) {
+  if (transcript_.size() + text.size() <= kMaxTranscript) transcript_ += text;
+  else transcriptCut_ = true;
   for (char c : text) {
     if (c == '\n') {
       lines_.push_back(std::move(partial_));
@@ -127,7 +151,12 @@ bool TuiHost::poll() {
 
 void TuiHost::onLine(SourceLoc loc) {
   loc_ = loc;
-  if (stepArmed_ || paused_) {
+  depth_ = interp_ ? interp_->callDepth() : 0;
+  if (debugger_.pauseAtStatement(loc, depth_)) {
+    pauseHere();
+    return;
+  }
+  if (paused_) {
     holdWhilePaused();
     return;
   }
@@ -135,21 +164,27 @@ void TuiHost::onLine(SourceLoc loc) {
 }
 
 void TuiHost::animate() {
-  if (stepArmed_ || paused_) {
+  if (debugger_.pauseAtRobotStep()) {
+    pauseHere();
+    return;
+  }
+  if (paused_) {
     holdWhilePaused();
     return;
   }
   tick();
 }
 
+void TuiHost::pauseHere() {
+  setPaused(true);
+  holdWhilePaused();
+}
+
 void TuiHost::holdWhilePaused() {
-  if (stepArmed_) {
-    stepArmed_ = false;
-    setPaused(true);
-  }
   if (!paused_) return;
+  refreshVariables();
   draw();
-  while (paused_ && !stopRequested()) pump(50);
+  while (paused_ && debugger_.armed() == Debugger::Step::None && !stopRequested()) pump(50);
 }
 
 void TuiHost::tick() {
@@ -168,16 +203,6 @@ void TuiHost::pump(int waitMs) {
   if (lastTick_ - lastFrame_ >= kFrameInterval) draw();
 }
 
-int64_t TuiHost::currentKey() {
-  if (key_ == 0) return 0;
-  if (!keySeen_ || Clock::now() - keyAt_ < kKeyHold) {
-    keySeen_ = true;
-    return key_;
-  }
-  key_ = 0;
-  return 0;
-}
-
 void TuiHost::blockUntil(const char* state, const std::function<bool()>& done) {
   if (!paused_ && done()) {
     tick();
@@ -194,7 +219,7 @@ int64_t TuiHost::heldKey(std::string_view) {
   tick();
   // A program that polls sees presses here: a later waitKey must not get them again.
   typed_.clear();
-  return currentKey();
+  return held_.read(Clock::now());
 }
 
 int64_t TuiHost::waitKey(std::string_view) {
@@ -225,39 +250,12 @@ MouseState TuiHost::waitClick(std::string_view) {
   return click;
 }
 
-void TuiHost::updateControls(Controls& controls, std::string_view) {
-  tick();
-  if (!pendingButton_.empty()) {
-    controls.pressed = std::move(pendingButton_);
-    pendingButton_.clear();
-  }
+void TuiHost::updateControls(Controls&, std::string_view) {
+  tick();  // a click on a button presses it at once (InputRules::press)
 }
-
-namespace {
-std::string base64(std::string_view in) {
-  static constexpr char kDigits[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  size_t i = 0;
-  for (; i + 2 < in.size(); i += 3) {
-    uint32_t v = (uint32_t(uint8_t(in[i])) << 16) | (uint32_t(uint8_t(in[i + 1])) << 8) |
-                 uint8_t(in[i + 2]);
-    for (int k = 18; k >= 0; k -= 6) out += kDigits[(v >> k) & 63];
-  }
-  if (size_t left = in.size() - i; left > 0) {
-    uint32_t v = uint32_t(uint8_t(in[i])) << 16;
-    if (left == 2) v |= uint32_t(uint8_t(in[i + 1])) << 8;
-    out += kDigits[(v >> 18) & 63];
-    out += kDigits[(v >> 12) & 63];
-    out += left == 2 ? kDigits[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
-}  // namespace
 
 void TuiHost::clipboardChanged(std::string_view text) {
-  std::string seq = "\033]52;c;" + base64(text) + "\a";
+  std::string seq = "\033]52;c;" + render::base64Encode({text.begin(), text.end()}) + "\a";
   std::fwrite(seq.data(), 1, seq.size(), stdout);
   std::fflush(stdout);
 }
@@ -290,7 +288,8 @@ void TuiHost::robotEvent(const RobotEvent& e) {
 void TuiHost::showEnd(const RunResult& result, const std::string& error) {
   if (result.status == RunStatus::Stopped) return;
   ended_ = true;
-  paused_ = stepArmed_ = false;
+  paused_ = false;
+  debugger_.cancelStep();
   clock_.setRunning(false);
   box_.reset();
   inputActive_ = false;
@@ -300,7 +299,14 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
     case RunStatus::RuntimeError: endState_ = "error"; break;
     default: endState_ = "stopped (limit)"; break;
   }
+  refreshVariables();
   blockUntil("", [this] { return endKey_; });  // quitting ends the final screen too
+}
+
+void TuiHost::refreshVariables() {
+  lastVariables_ = Clock::now();
+  if (!interp_ || layout_.vars.width <= 0) return;
+  varLines_ = variableLines(interp_->variables(), interp_->runningSub(), layout_.vars.width);
 }
 
 // ---- keys and the mouse
@@ -309,74 +315,89 @@ void TuiHost::handle(const TermEvent& e) {
   switch (e.kind) {
     case TermEvent::Resize:
       needLayout_ = true;
+      sixelSent_ = false;
       lastFrame_ = {};  // draw at once
       break;
-    case TermEvent::Key: handleKey(e.key); break;
+    case TermEvent::Key:
+      if (e.release) held_.release(e.key, Clock::now());
+      else handleKey(e.key);
+      break;
     case TermEvent::Mouse: handleMouse(e); break;
     case TermEvent::None: break;
   }
 }
 
 bool TuiHost::viewKey(int64_t key) {
-  if (key == keys::kF1 + 1 || key == kCtrlP) setPaused(!paused_);
-  else if (key == keys::kF1 + 2 || key == kCtrlS) step();
-  else if (key == keys::kF1 + 3 || key == kCtrlB) changeSpeed(0.5);
-  else if (key == keys::kF1 + 4 || key == kCtrlF) changeSpeed(2);
-  else if (key == keys::kF1 + 5 || key == kCtrlV) cycleMode();
-  else if (key == keys::kF1 + 9 || key == kCtrlQ || key == kCtrlC) requestStop();
+  if (key == fKey(2) || key == kCtrlP) setPaused(!paused_);
+  else if (key == fKey(3) || key == kCtrlS) step(Debugger::Step::Into);
+  else if (key == fKey(7) || key == kCtrlN) step(Debugger::Step::Over);
+  else if (key == fKey(8) || key == kCtrlR) step(Debugger::Step::Robot);
+  else if (key == fKey(9) || key == kCtrlT) toggleBreakpoint();
+  else if (key == fKey(4) || key == kCtrlW) changeSpeed(0.5);
+  else if (key == fKey(5) || key == kCtrlF) changeSpeed(2);
+  else if (key == fKey(6) || key == kCtrlV) cycleMode();
+  else if (key == kCtrlL) redraw_ = true;
+  else if (key == fKey(10) || key == kCtrlQ) quit(0);
+  else if (key == kCtrlC) quit(kInterruptedExit);
   else return false;
   lastFrame_ = {};  // show the change at once
+  return true;
+}
+
+bool TuiHost::scrollKey(int64_t key) {
+  int page = std::max(layout_.vars.height - 1, 1);
+  int by = key == keys::kUp ? -1 : key == keys::kDown ? 1 : key == keys::kPageUp ? -page
+         : key == keys::kPageDown ? page : 0;
+  if (by == 0) return false;
+  int most = std::max(static_cast<int>(varLines_.size()) - layout_.vars.height, 0);
+  varScroll_ = std::clamp(varScroll_ + by, 0, most);
+  lastFrame_ = {};
   return true;
 }
 
 void TuiHost::handleKey(int64_t key) {
   if (viewKey(key)) return;
   if (ended_) {
-    endKey_ = true;
+    if (!scrollKey(key)) endKey_ = true;
     return;
   }
+  // Paused, the arrows and page keys scroll the variables pane; the rest wait for the program.
+  if (paused_ && scrollKey(key)) return;
   if (box_) {
-    if (key == keys::kEnter || key == keys::kEsc || key == keys::kSpace) boxAnswered_ = true;
+    if (InputRules::answersMessageBox(key)) boxAnswered_ = true;
     return;
   }
   if (inputActive_) {
-    if (key == keys::kEnter) inputDone_ = true;
-    else if (key == keys::kBackspace && !inputText_.empty()) inputText_.pop_back();
-    else if (key == kCtrlD && inputText_.empty()) inputDone_ = inputEof_ = true;
-    else if (printable(key)) inputText_ += static_cast<char>(key);
+    switch (InputRules::editLine(inputText_, key)) {
+      case InputRules::LineKey::Done: inputDone_ = true; break;
+      case InputRules::LineKey::EndOfInput: inputDone_ = inputEof_ = true; break;
+      default: break;
+    }
     lastFrame_ = {};
     return;
   }
-  if (!focusedEdit_.empty() && machine_) {
-    if (EditBox* e = machine_->controls.edit(focusedEdit_)) {
-      if (key == keys::kEnter || key == keys::kTab || key == keys::kEsc) focusedEdit_.clear();
-      else if (key == keys::kBackspace && !e->text.empty()) e->text.pop_back();
-      else if (printable(key)) e->text += static_cast<char>(key);
-      lastFrame_ = {};
-      return;
-    }
-    focusedEdit_.clear();
+  if (machine_ && rules_.typeInto(machine_->controls, key)) {
+    lastFrame_ = {};
+    return;
   }
   if (!programKeys_) {
     // Until the program reads the keyboard, single keys control the view too.
     switch (key) {
       case 'p':
-      case ' ':
-        setPaused(!paused_);
-        lastFrame_ = {};
-        return;
-      case 's': step(); return;
+      case ' ': setPaused(!paused_); lastFrame_ = {}; return;
+      case 's': step(Debugger::Step::Into); return;
+      case 'n': step(Debugger::Step::Over); return;
+      case 'r': step(Debugger::Step::Robot); return;
+      case 'b': toggleBreakpoint(); return;
       case '-': changeSpeed(0.5); return;
       case '+':
       case '=': changeSpeed(2); return;
       case 'v': cycleMode(); return;
-      case 'q': requestStop(); return;
+      case 'q': quit(0); return;
       default: break;
     }
   }
-  key_ = key;
-  keyAt_ = Clock::now();
-  keySeen_ = false;
+  held_.press(key, Clock::now());
   typed_.push_back(key);
   // Bounded, so that the auto-repeat of a key held while the program is busy does not run on
   // long after the key is let go.
@@ -388,25 +409,17 @@ void TuiHost::handleMouse(const TermEvent& e) {
   bool inArena = layout_.arena.contains(e.col, e.row);
   auto [x, y] = cellToPixel(layout_.arena, e.col, e.row);
   if (box_) {
-    if (e.pressed & mouse::kLeft) boxAnswered_ = true;
+    if (InputRules::clickAnswersMessageBox(e.pressed)) boxAnswered_ = true;
     return;
   }
-  if (e.pressed && inArena && machine_) {
-    // Controls are hit where they are drawn: on their cells (the last added is on top).
-    const Controls& c = machine_->controls;
-    for (auto b = c.buttons.rbegin(); b != c.buttons.rend(); ++b) {
-      if (buttonCells(*b).contains(e.col, e.row)) {
-        pendingButton_ = b->name;
-        return;
-      }
+  if (e.pressed && inArena && machine_ && !ended_) {
+    // A press goes to the button or edit box that the cell shows part of, if any.
+    Rect p = cellPixels(layout_.arena, e.col, e.row);
+    if (rules_.press(machine_->controls, p.col, p.row, p.width, p.height) !=
+        InputRules::Target::Program) {
+      lastFrame_ = {};
+      return;
     }
-    for (auto ed = c.edits.rbegin(); ed != c.edits.rend(); ++ed) {
-      if (editCells(*ed).contains(e.col, e.row)) {
-        focusedEdit_ = ed->name;
-        return;
-      }
-    }
-    focusedEdit_.clear();
   }
   // Outside the arena the pointer stays at the nearest edge while a drag goes on.
   if (inArena || mouse_.buttons) {
@@ -422,50 +435,58 @@ void TuiHost::handleMouse(const TermEvent& e) {
   mouse_.buttons &= ~e.released;
 }
 
-Rect TuiHost::buttonCells(const Button& b) const {
-  auto [col, row] = pixelToCell(layout_.arena, b.x, b.y);
-  return {col, row, static_cast<int>(b.name.size()) + 2, 1};
-}
-
-Rect TuiHost::editCells(const EditBox& e) const {
-  auto [col, row] = pixelToCell(layout_.arena, e.x, e.y);
-  return {col, row, std::max(4, e.width * layout_.arena.width / Canvas::kWidth), 1};
+Rect TuiHost::controlCells(int x, int y, int width, int height) const {
+  return cellsShowing(layout_.arena, x, y, width, height);
 }
 
 void TuiHost::setPaused(bool paused) {
   if (ended_) return;
   paused_ = paused;
-  if (!paused) stepArmed_ = false;
+  if (!paused) debugger_.cancelStep();
+  else held_.clear();  // keys held when the view paused are let go
   clock_.setRunning(!paused);
 }
 
-void TuiHost::step() {
+void TuiHost::step(Debugger::Step kind) {
   if (ended_) return;
-  // Paused: run one statement or one robot step. Running: stop at the next one.
+  // Paused: run to the step's end, then pause again. Running: pause at the step's end.
+  debugger_.step(kind, depth_);
   paused_ = false;
   clock_.setRunning(true);
-  stepArmed_ = true;
+}
+
+void TuiHost::toggleBreakpoint() {
+  if (ended_ || !loc_.valid()) return;
+  bool set = debugger_.toggleBreakpoint(loc_.file, loc_.line);
+  // The running line's marker is '>' either way: the title says what happened.
+  notice_ = (set ? "breakpoint set on line " : "breakpoint cleared on line ") +
+            std::to_string(loc_.line);
+  noticeLoc_ = loc_;
 }
 
 void TuiHost::changeSpeed(double by) {
   clock_.setFactor(std::clamp(clock_.factor() * by, kMinFactor, kMaxFactor));
 }
 
+void TuiHost::quit(int code) {
+  quitCode_ = code;
+  requestStop();
+}
+
 void TuiHost::cycleMode() {
   using render::CellMode;
-  CellMode order[] = {CellMode::Ascii, CellMode::HalfBlock, CellMode::Braille};
-  int at = 0;
-  for (int i = 0; i < 3; ++i)
-    if (order[i] == mode_) at = i;
-  for (int k = 1; k <= 3; ++k) {
-    CellMode m = order[(at + k) % 3];
-    bool ok =
-        m == CellMode::Ascii || (screen_.unicode() && (m == CellMode::Braille || screen_.colour()));
-    if (ok) {
-      mode_ = m;
-      return;
-    }
-  }
+  // The character modes the terminal can show, then pixels when it shows sixel images.
+  std::vector<std::pair<CellMode, bool>> modes = {{CellMode::Ascii, false}};
+  if (screen_.unicode() && screen_.colour()) modes.push_back({CellMode::HalfBlock, false});
+  if (screen_.unicode()) modes.push_back({CellMode::Braille, false});
+  if (screen_.sixel()) modes.push_back({mode_, true});
+  size_t at = 0;
+  for (size_t i = 0; i < modes.size(); ++i)
+    if (modes[i].second == pixels_ && (pixels_ || modes[i].first == mode_)) at = i;
+  auto next = modes[(at + 1) % modes.size()];
+  if (!next.second) mode_ = next.first;
+  pixels_ = next.second;
+  sixelSent_ = false;
 }
 
 // ---- drawing
@@ -479,9 +500,19 @@ std::string TuiHost::stateText() const {
 
 void TuiHost::draw() {
   lastFrame_ = Clock::now();
+  // A real robot connected (or gone, rCommPort 0) changes the status panel's size.
+  if (machine_ && (machine_->realRobot() != nullptr) != layoutReal_) needLayout_ = true;
   if (needLayout_) {
-    layout_ = layoutTui(screen_.cols(), screen_.rows());
+    bool real = machine_ && machine_->realRobot();
+    layout_ = layoutTui(screen_.cols(), screen_.rows(), kStatusRows + (real ? kLinkRows : 0));
+    layoutReal_ = real;
     needLayout_ = false;
+    refreshVariables();
+  }
+  if (redraw_) {
+    screen_.redrawAll();
+    redraw_ = false;
+    sixelSent_ = false;
   }
   screen_.beginFrame();
   if (layout_.tooSmall) {
@@ -492,10 +523,14 @@ void TuiHost::draw() {
     screen_.present();
     return;
   }
+  if (!paused_ && !ended_ && lastFrame_ - lastVariables_ >= kVariablesInterval) refreshVariables();
   TermStyle bar;
   bar.reverse = true;
-  std::string title = " rb run " + file_ + "   " + stateText();
+  std::string title = " rb run " + settings_.fileName + "   " + stateText() + "   view " +
+                      (pixels_ ? "pixels" : modeName(mode_));
+  if (!pixelsNote_.empty()) title += "   " + pixelsNote_;
   if (ended_) title += "   (press any key to exit)";
+  else if (!notice_.empty() && loc_ == noticeLoc_) title += "   " + notice_;
   title.resize(static_cast<size_t>(layout_.title.width), ' ');
   screen_.drawText(0, 0, title, bar);
   screen_.drawBox(layout_.arenaBox.col, layout_.arenaBox.row, layout_.arenaBox.width,
@@ -505,26 +540,51 @@ void TuiHost::draw() {
     drawOverlays();
     drawStatus();
   }
+  drawSource();
+  drawVariables();
   drawOutput();
+  TermStyle dim;
+  dim.dim = true;
+  screen_.drawText(layout_.keys.col, layout_.keys.row,
+                   keysLine(layout_.keys.width, paused_, programKeys_), dim);
   screen_.present();
 }
 
 void TuiHost::drawArena() {
   Machine& m = *machine_;
-  bool flipped = m.flipMode && !m.flipped.empty();
   render::RobotView robot = render::robotView(m);
   const Rect& a = layout_.arena;
+  const std::vector<DrawOp>& ops = m.canvas().displayList();
   bool stale = frame_.cols != a.width || frame_.rows != a.height || frameMode_ != mode_ ||
-               frameCanvasVersion_ != m.canvas().version() || flipped ||
-               !sameRobot(robot, frameRobot_);
+               frameCanvasVersion_ != m.canvas().version() || m.showsFlip() ||
+               frameTextOps_ != ops.size() || !sameRobot(robot, frameRobot_);
   if (stale) {
-    frame_ = render::renderArena(flipped ? m.flipped : m.canvas().pixels(), m.canvas().background(),
-                                 robot, {a.width, a.height, mode_});
+    render::ArenaOptions options{a.width, a.height, mode_};
+    options.textOps = &ops;
+    frame_ = render::renderArena(m.shownScreen(), m.canvas().background(), robot, options);
     frameCanvasVersion_ = m.canvas().version();
     frameRobot_ = robot;
     frameMode_ = mode_;
+    frameTextOps_ = ops.size();
+    sixelSent_ = false;
   }
-  screen_.drawArena(frame_, a.col, a.row);
+  if (!pixels_) {
+    screen_.drawArena(frame_, a.col, a.row);
+    return;
+  }
+  // Pixels: the arena's cells stay blank (curses leaves them alone) and the image goes over them,
+  // sent again only when the picture changed or the terminal was cleared.
+  std::string blank(static_cast<size_t>(a.width), ' ');
+  for (int r = 0; r < a.height; ++r) screen_.drawText(a.col, a.row + r, blank);
+  if (sixelSent_) return;
+  auto [cw, ch] = screen_.cellPixels();
+  if (cw <= 0 || ch <= 0) {
+    cw = 10;  // a terminal that does not tell its cell size: a common one
+    ch = 20;
+  }
+  render::RgbImage image = render::composeImage(m.shownScreen(), robot, 1);
+  screen_.overlayAt(a.col, a.row, render::sixelImage(image, a.width * cw, a.height * ch));
+  sixelSent_ = true;
 }
 
 void TuiHost::drawOverlays() {
@@ -542,29 +602,41 @@ void TuiHost::drawOverlays() {
     if (static_cast<int>(s.size()) > room) s.resize(static_cast<size_t>(room));
     screen_.drawText(col, row, s, style);
   };
+  // The program's controls, on the cells that show them (a click there hits them).
   const Controls& controls = machine_->controls;
   for (const Button& b : controls.buttons) {
-    Rect cells = buttonCells(b);
+    Rect cells = controlCells(b.x, b.y, b.width, b.height);
+    if (cells.width <= 0) continue;
     TermStyle s;
     s.reverse = true;
-    s.bold = b.name == pendingButton_;
-    put(cells.col, cells.row, "[" + b.name + "]", s);
+    s.bold = b.name == controls.pressed;
+    std::string label = b.name;
+    if (static_cast<int>(label.size()) + 2 <= cells.width) label = "[" + label + "]";
+    label.resize(static_cast<size_t>(cells.width), ' ');
+    int labelRow = cells.row + cells.height / 2;
+    for (int r = 0; r < cells.height; ++r)
+      put(cells.col, cells.row + r,
+          r + cells.row == labelRow ? label : std::string(static_cast<size_t>(cells.width), ' '), s);
   }
   for (const EditBox& e : controls.edits) {
-    Rect cells = editCells(e);
-    int col = cells.col, row = cells.row, width = cells.width;
+    Rect cells = controlCells(e.x, e.y, e.width, e.height);
+    if (cells.width <= 0) continue;
+    int width = std::max(cells.width, 1);
     std::string field = e.text;
-    if (static_cast<int>(field.size()) > width - 2)
-      field = field.substr(field.size() - static_cast<size_t>(width - 2));
-    field.resize(static_cast<size_t>(width - 2), '_');
+    if (static_cast<int>(field.size()) > width)
+      field = field.substr(field.size() - static_cast<size_t>(width));
+    field.resize(static_cast<size_t>(width), '_');
     TermStyle s;
-    s.reverse = e.name == focusedEdit_;
-    put(col, row, "[" + field + "]", s);
+    s.reverse = e.name == rules_.focusedEdit();
+    s.underline = !s.reverse;
+    put(cells.col, cells.row + cells.height / 2, field, s);
   }
   TermStyle banner;
   banner.reverse = true;
   banner.bold = true;
-  if (paused_ && !ended_) put(a.col + 1, a.row, " PAUSED  F2 resume  F3 step ", banner);
+  // (Over a sixel image the banner would be drawn over again: the title says paused.)
+  if (paused_ && !ended_ && !pixels_)
+    put(a.col + 1, a.row, " PAUSED  F2 run  F3 step  F7 over ", banner);
   if (box_) {
     int width = std::min(
         a.width - 2,
@@ -590,30 +662,97 @@ void TuiHost::drawOverlays() {
 void TuiHost::drawStatus() {
   Machine& m = *machine_;
   TuiStatus s;
-  s.file = file_;
-  s.line = static_cast<int>(loc_.line);
   s.state = stateText();
   s.speedFactor = clock_.factor();
   s.rSpeed = m.robotSpeed;
-  s.located = m.robot().located() || m.realRobot();
+  RealRobot* real = m.realRobot();
+  s.located = m.robot().located() || real;
   const Pose& pose = m.robotPose();
   s.x = pose.pos.x();
   s.y = pose.pos.y();
   s.heading = pose.heading;
   s.pen = m.robotPenDown();
-  // Read straight from the simulator: no trace event, no random number, no robot command.
-  if (m.robot().located() && !m.realRobot()) {
+  if (real) {
+    // What the robot itself reported last: no command is sent for the view.
+    const RealRobot::LinkStats& link = real->linkStats();
+    s.real = true;
+    s.port = real->name();
+    s.commands = link.commands;
+    if (link.replies > 0) {
+      s.bumper = link.last.bumper;
+      s.feel = link.last.feel;
+      s.lastReply = "cmd " + std::to_string(link.lastCode) + "," + std::to_string(link.lastParam) +
+                    " -> " + hex2(link.last.feel) + " " + hex2(link.last.bumper) + " " +
+                    hex2(link.last.sense) + " = " + std::to_string(link.last.result);
+    }
+    if (!link.fault.empty()) s.lastReply = link.fault;
+  } else if (m.robot().located()) {
+    // Read straight from the simulator: no trace event, no random number, no robot command.
     s.bumper = m.robot().bumper();
     s.feel = m.robot().feel();
   }
   s.range = lastRange_;
-  s.mode = modeName(mode_);
-  s.programKeys = programKeys_;
   const Rect& r = layout_.status;
-  std::vector<std::string> lines =
-      r.height >= 8 ? statusLines(s, r.width - 1) : compactStatusLines(s, r.width);
+  std::vector<std::string> lines = r.height >= static_cast<int>(statusLines(s, r.width).size())
+                                       ? statusLines(s, r.width - 1)
+                                       : compactStatusLines(s, r.width);
   for (int i = 0; i < r.height && i < static_cast<int>(lines.size()); ++i)
     screen_.drawText(r.col, r.row + i, lines[static_cast<size_t>(i)]);
+}
+
+void TuiHost::drawSource() {
+  const Rect& box = layout_.sourceBox;
+  if (box.height <= 0 || !sources_ || sources_->size() == 0) return;
+  uint32_t fileIndex = loc_.valid() && loc_.file < sources_->size() ? loc_.file : 0;
+  const SourceFile& file = sources_->file(fileIndex);
+  std::string name = file.name();
+  size_t slash = name.find_last_of('/');
+  if (slash != std::string::npos) name = name.substr(slash + 1);
+  // A box when there is room for one, else a header line.
+  Rect inner = layout_.source;
+  if (inner.height <= 0) {
+    TermStyle dim;
+    dim.dim = true;
+    std::string header = "-- " + name + " ";
+    header.resize(static_cast<size_t>(box.width), '-');
+    screen_.drawText(box.col, box.row, header, dim);
+    inner = {box.col, box.row + 1, box.width, box.height - 1};
+  } else {
+    screen_.drawBox(box.col, box.row, box.width, box.height, name);
+  }
+  auto marked = [&](uint32_t line) { return debugger_.hasBreakpoint(fileIndex, line); };
+  std::vector<PaneLine> lines = sourceLines(file, loc_.line, inner.height, inner.width, marked);
+  for (size_t i = 0; i < lines.size(); ++i) {
+    TermStyle s;
+    std::string text = lines[i].text;
+    if (lines[i].highlight) {
+      s.reverse = true;
+      s.bold = true;
+      text.resize(static_cast<size_t>(inner.width), ' ');
+    } else if (lines[i].marked) {
+      s.colour = screen_.colour();
+      s.fg = 0xFF5555;
+      s.bg = 0x000000;
+      s.bold = !screen_.colour();
+    }
+    screen_.drawText(inner.col, inner.row + static_cast<int>(i), text, s);
+  }
+}
+
+void TuiHost::drawVariables() {
+  const Rect& box = layout_.varsBox;
+  if (box.height <= 0 || layout_.vars.height <= 0) return;
+  std::string title = "variables";
+  int shown = layout_.vars.height;
+  int total = static_cast<int>(varLines_.size());
+  varScroll_ = std::clamp(varScroll_, 0, std::max(total - shown, 0));
+  if (total > shown)
+    title += " " + std::to_string(varScroll_ + 1) + "-" +
+             std::to_string(std::min(varScroll_ + shown, total)) + " of " + std::to_string(total);
+  screen_.drawBox(box.col, box.row, box.width, box.height, title);
+  for (int i = 0; i < shown && varScroll_ + i < total; ++i)
+    screen_.drawText(layout_.vars.col, layout_.vars.row + i,
+                     varLines_[static_cast<size_t>(varScroll_ + i)]);
 }
 
 void TuiHost::drawOutput() {
@@ -637,11 +776,13 @@ void TuiHost::drawOutput() {
     errorStyle.fg = 0xFF5555;
     errorStyle.bg = 0x000000;
     errorStyle.reverse = !screen_.colour();
-    screen_.drawText(r.col, r.row + r.height - 1, error_, errorStyle);
+    screen_.drawText(r.col, r.row + r.height - 1, error_.substr(0, static_cast<size_t>(r.width)),
+                     errorStyle);
   }
   int first = std::max(0, static_cast<int>(shown.size()) - room);
   for (int i = 0; i < room && first + i < static_cast<int>(shown.size()); ++i)
-    screen_.drawText(r.col, r.row + 1 + i, shown[static_cast<size_t>(first + i)]);
+    screen_.drawText(r.col, r.row + 1 + i,
+                     shown[static_cast<size_t>(first + i)].substr(0, static_cast<size_t>(r.width)));
 }
 
 }  // namespace rb::cli

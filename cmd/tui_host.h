@@ -1,9 +1,12 @@
 #pragma once
-// The Host of `rb run --tui`: the program runs in real time in a live ncurses view of the arena.
-// It paces delay and rSpeed on a run clock that stops while paused and runs faster or slower at
-// the user's choice, draws frames at a bounded rate from the interpreter's hooks, and turns
-// terminal keys and mouse reports into what getKey, waitKey, readMouse, buttons, edit boxes and
-// message boxes read. docs/interaction.md describes it for users.
+// The Host of `rb run --tui`: the program runs in real time in a live ncurses view of the arena,
+// with the source around the running line and the program's variables beside it. It paces
+// delay, rSpeed and the robot's drawing on a run clock that stops while paused and runs faster or
+// slower at the user's choice, pauses at single steps and breakpoints (tui_debugger.h), draws
+// frames at a bounded rate from the interpreter's hooks, and turns terminal keys and mouse
+// reports into what getKey, waitKey, readMouse, buttons, edit boxes and message boxes read (by
+// the input rules every source of input follows, core/input/input_rules.h).
+// docs/interaction.md describes it for users.
 
 #include <chrono>
 #include <deque>
@@ -14,21 +17,46 @@
 
 #include "arena_view.h"
 #include "curses_screen.h"
+#include "input/input_rules.h"
 #include "machine/host.h"
 #include "machine/interpreter.h"
 #include "machine/machine.h"
+#include "tui_debugger.h"
+#include "tui_keyboard.h"
 #include "tui_layout.h"
 
 namespace rb::cli {
+
+/// How the view starts (rb run's options).
+struct TuiSettings {
+  std::string fileName;  ///< shown in the title
+  render::CellMode mode = render::CellMode::Ascii;
+  bool pixels = false;   ///< --cells pixels: the screen as an image where the terminal can show it
+  double speed = 1;      ///< --speed
+  bool paused = false;   ///< --paused: stop before the first statement
+};
 
 class TuiHost : public Host, public RobotObserver {
  public:
   using Clock = std::chrono::steady_clock;
 
-  TuiHost(render::CursesScreen& screen, std::string fileName, render::CellMode mode);
+  /// Each pixel or degree of robot motion takes this long on the run clock besides rSpeed's: the
+  /// time RobotBASIC takes to draw it on a PC, so that the seed's square (840 steps) takes about
+  /// a second at rSpeed 0.
+  static constexpr double kRobotStepMs = 1.2;
+  /// Exit status when the user quits with Ctrl-C (as a shell reports a program ended by SIGINT).
+  static constexpr int kInterruptedExit = 130;
 
-  /// The machine the view shows; set before the run starts.
-  void attach(Machine& machine) { machine_ = &machine; }
+  TuiHost(render::CursesScreen& screen, TuiSettings settings);
+
+  /// The machine the view shows (the run sequence sets it before the run starts).
+  void attachMachine(Machine& machine) override { machine_ = &machine; }
+  /// The running program, for the source and variables panes and for stepping over calls.
+  void watch(const Interpreter& interpreter, const SourceSet& sources) {
+    interp_ = &interpreter;
+    sources_ = &sources;
+  }
+  Debugger& debugger() { return debugger_; }
 
   void output(std::string_view text) override;
   std::optional<std::string> inputLine(std::string_view prompt) override;
@@ -38,6 +66,7 @@ class TuiHost : public Host, public RobotObserver {
   bool poll() override;
   void onLine(SourceLoc loc) override;
   void animate() override;
+  double robotStepMs() const override { return kRobotStepMs; }
   int64_t heldKey(std::string_view who) override;
   int64_t waitKey(std::string_view who) override;
   MouseState mouse(std::string_view who) override;
@@ -53,9 +82,16 @@ class TuiHost : public Host, public RobotObserver {
   }
   void robotEvent(const RobotEvent& e) override;
 
-  /// After the run: shows how it ended (`error`: the runtime error's first line) and waits for a
-  /// key, unless the user quit.
+  /// After the run: shows how it ended (`error`: the runtime error's first line) and keeps the
+  /// final frame until a key, unless the user quit.
   void showEnd(const RunResult& result, const std::string& error);
+  /// The exit status of a run the user quit: 0 for the quit keys, 130 for Ctrl-C.
+  int quitCode() const { return quitCode_; }
+  /// Everything the program printed (with the lines typed at `input` prompts), to be printed
+  /// on the normal screen after the view closes, as a headless run would have printed it.
+  const std::string& transcript() const { return transcript_; }
+  /// True when the transcript reached its bound and later output was dropped.
+  bool transcriptCut() const { return transcriptCut_; }
 
   /// Opens a real robot's port for rCommPort.
   std::function<std::unique_ptr<RobotLink>(int64_t)> robotOpener;
@@ -82,68 +118,83 @@ class TuiHost : public Host, public RobotObserver {
   void pump(int waitMs);
   /// pump(0), at most every few milliseconds: for hooks called very often.
   void tick();
-  /// Blocks while paused (after a single step, too).
+  /// Pauses here (a step ended, or a breakpoint) and blocks until the user resumes or steps.
+  void pauseHere();
+  /// Blocks while paused.
   void holdWhilePaused();
   void handle(const render::TermEvent& e);
   void handleKey(int64_t key);
   void handleMouse(const render::TermEvent& e);
   /// rb's own keys; true when the key was one.
   bool viewKey(int64_t key);
+  /// Keys that scroll the variables pane while paused or at the end; true when the key was one.
+  bool scrollKey(int64_t key);
   void setPaused(bool paused);
-  void step();
+  void step(Debugger::Step kind);
+  void toggleBreakpoint();
   void changeSpeed(double by);
   void cycleMode();
-  /// The key getKey sees now (held keys are inferred: terminals report presses only).
-  int64_t currentKey();
+  void quit(int code);
 
   /// Blocks until `done` holds, showing `state`.
   void blockUntil(const char* state, const std::function<bool()>& done);
   void appendOutput(std::string_view text);
-  /// The cells a button's label or an edit box's field covers in the arena.
-  Rect buttonCells(const Button& b) const;
-  Rect editCells(const EditBox& e) const;
+  /// The arena cells that show a button or an edit box (where a click hits it).
+  Rect controlCells(int x, int y, int width, int height) const;
+  /// Takes a new look at the program's variables (at each pause and step, and now and then
+  /// while it runs).
+  void refreshVariables();
 
   void draw();
   void drawArena();
   void drawOverlays();
   void drawStatus();
+  void drawSource();
+  void drawVariables();
   void drawOutput();
   std::string stateText() const;
 
   render::CursesScreen& screen_;
   Machine* machine_ = nullptr;
-  std::string file_;
+  const Interpreter* interp_ = nullptr;
+  const SourceSet* sources_ = nullptr;
+  TuiSettings settings_;
   render::CellMode mode_;
   TuiLayout layout_;
   bool needLayout_ = true;
+  bool layoutReal_ = false;  ///< the layout has room for a real robot's link rows
+  bool redraw_ = false;  ///< Ctrl-L: draw every cell again
 
   RunClock clock_;
   Clock::time_point start_ = Clock::now();
   Clock::time_point lastFrame_{};
   Clock::time_point lastTick_{};
+  Clock::time_point lastVariables_{};
   double paceTarget_ = 0;  ///< where the last wait ended on the run clock
   uint32_t lineCount_ = 0;
 
+  Debugger debugger_;
   bool paused_ = false;
-  bool stepArmed_ = false;  ///< pause again at the next statement or robot step
+  int quitCode_ = 0;
   bool ended_ = false;  ///< the run is over: the final screen is shown
   bool endKey_ = false;
   const char* waitingFor_ = nullptr;  ///< what a blocking read waits for, for the state line
   std::string endState_;
+  std::string notice_;  ///< shown in the title while the run stays at noticeLoc_
+  SourceLoc noticeLoc_;
+  SourceLoc loc_;      ///< the statement running now (or about to, when paused)
+  size_t depth_ = 0;   ///< its gosub/call depth
 
-  // Keyboard: the last key pressed and whether a read has seen it.
-  bool programKeys_ = false;
-  int64_t key_ = 0;
-  Clock::time_point keyAt_{};
-  bool keySeen_ = false;
+  // Keyboard.
+  bool programKeys_ = false;  ///< the program reads the keyboard: single-key shortcuts are off
+  HeldKeys held_;
   std::deque<int64_t> typed_;  ///< presses not yet taken by waitKey (typing ahead)
 
   // Mouse, in screen pixels; presses stay visible until a read has seen them.
   MouseState mouse_;
   int latched_ = 0;
   std::deque<MouseState> clicks_;  ///< presses not yet taken by waitClick
-  std::string pendingButton_;
-  std::string focusedEdit_;
+  InputRules rules_;               ///< which edit box has the keyboard
 
   // Dialogs.
   struct Box {
@@ -156,11 +207,16 @@ class TuiHost : public Host, public RobotObserver {
   bool inputEof_ = false;
   std::string inputPrompt_, inputText_;
 
-  // What the program printed.
+  // What the program printed: the pane's lines, and all of it for after the view closes.
   std::deque<std::string> lines_;
   std::string partial_;
+  std::string transcript_;
+  bool transcriptCut_ = false;
 
-  SourceLoc loc_;
+  // The variables pane: its lines at the last look, and how far it is scrolled.
+  std::vector<std::string> varLines_;
+  int varScroll_ = 0;
+
   std::optional<double> lastRange_;
   std::string error_;
 
@@ -169,6 +225,11 @@ class TuiHost : public Host, public RobotObserver {
   uint64_t frameCanvasVersion_ = 0;
   render::RobotView frameRobot_;
   render::CellMode frameMode_ = render::CellMode::Ascii;
+  size_t frameTextOps_ = 0;
+  // --cells pixels: the arena as a sixel image.
+  bool pixels_ = false;
+  bool sixelSent_ = false;  ///< the image of frame_ is on the terminal
+  std::string pixelsNote_;  ///< why --cells pixels shows characters instead
 };
 
 }  // namespace rb::cli

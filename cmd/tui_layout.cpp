@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <initializer_list>
 #include <string_view>
@@ -15,7 +16,8 @@ namespace {
 /// A terminal cell is about twice as tall as it is wide, so the 4:3 screen needs 8/3 as many
 /// columns as rows (in every cell mode: half blocks and braille split cells into square dots).
 constexpr double kColsPerRow = 8.0 / 3.0;
-constexpr int kPanelWidth = 28;
+constexpr int kPanelWidth = 30;
+constexpr int kMaxPanelWidth = 60;
 constexpr int kMinArenaCols = 40;
 constexpr int kOutputMinLines = 3;
 
@@ -53,31 +55,59 @@ std::string bitsText(int bits, const int* values, const char* const* names, int 
 
 }  // namespace
 
-TuiLayout layoutTui(int cols, int rows) {
+TuiLayout layoutTui(int cols, int rows, int statusRows) {
   TuiLayout l;
   if (cols < kMinCols || rows < kMinRows) {
     l.tooSmall = true;
     return l;
   }
   l.title = {0, 0, cols, 1};
+  l.keys = {0, rows - 1, cols, 1};
+  int bottom = rows - 1;  // the first row of the keys line
   bool side = cols - kPanelWidth - 2 >= kMinArenaCols;
-  int statusBelow = side ? 0 : 4;
-  int innerW = cols - 2 - (side ? kPanelWidth : 0);
-  int innerHMax = rows - 1 - 2 - (1 + kOutputMinLines) - statusBelow;
-  int arenaRows = std::min(innerHMax, static_cast<int>(innerW / kColsPerRow));
-  arenaRows = std::max(arenaRows, 3);
-  int arenaCols = std::min(innerW, static_cast<int>(std::lround(arenaRows * kColsPerRow)));
-  l.arenaBox = {0, 1, arenaCols + 2, arenaRows + 2};
-  l.arena = {1, 2, arenaCols, arenaRows};
-  int below = l.arenaBox.row + l.arenaBox.height;
   if (side) {
-    int panelCol = l.arenaBox.width + 1;
-    l.status = {panelCol, 1, cols - panelCol, l.arenaBox.height};
+    // The panel takes about two fifths of a wide terminal, the arena the rest.
+    int panel = std::clamp(cols * 2 / 5, kPanelWidth, kMaxPanelWidth);
+    int innerW = cols - 2 - panel;
+    int innerHMax = bottom - 1 - 2 - (1 + kOutputMinLines);
+    int arenaRows = std::max(std::min(innerHMax, static_cast<int>(innerW / kColsPerRow)), 3);
+    int arenaCols = std::min(innerW, static_cast<int>(std::lround(arenaRows * kColsPerRow)));
+    l.arenaBox = {0, 1, arenaCols + 2, arenaRows + 2};
+    l.arena = {1, 2, arenaCols, arenaRows};
+    int below = l.arenaBox.row + l.arenaBox.height;
+    l.output = {0, below, l.arenaBox.width, bottom - below};
+    // The panel: status, then the source and the variables in boxes.
+    int col = l.arenaBox.width + 1, width = cols - col, top = 1, height = bottom - top;
+    int status = height >= statusRows + 12 ? statusRows : 3;
+    l.status = {col, top, width, status};
+    int rest = height - status;
+    int source = rest >= 10 ? rest / 2 : rest;
+    l.sourceBox = {col, top + status, width, source};
+    if (rest - source >= 3) l.varsBox = {col, top + status + source, width, rest - source};
   } else {
-    l.status = {0, below, cols, statusBelow};
-    below += statusBelow;
+    // Stacked: arena, status, a few source lines, output.
+    int innerW = cols - 2;
+    int source = rows >= 24 ? 5 : 0;
+    int innerHMax = bottom - 1 - 2 - 3 - source - (1 + kOutputMinLines);
+    int arenaRows = std::max(std::min(innerHMax, static_cast<int>(innerW / kColsPerRow)), 3);
+    int arenaCols = std::min(innerW, static_cast<int>(std::lround(arenaRows * kColsPerRow)));
+    l.arenaBox = {0, 1, arenaCols + 2, arenaRows + 2};
+    l.arena = {1, 2, arenaCols, arenaRows};
+    int below = l.arenaBox.row + l.arenaBox.height;
+    l.status = {0, below, cols, 3};
+    below += 3;
+    if (source > 0) {
+      l.sourceBox = {0, below, cols, source};
+      below += source;
+    }
+    l.output = {0, below, cols, std::max(bottom - below, 0)};
   }
-  l.output = {0, below, cols, rows - below};
+  auto inside = [](const Rect& box) {
+    return box.width > 2 && box.height > 2 ? Rect{box.col + 1, box.row + 1, box.width - 2, box.height - 2}
+                                           : Rect{};
+  };
+  l.source = inside(l.sourceBox);
+  l.vars = inside(l.varsBox);
   return l;
 }
 
@@ -93,6 +123,32 @@ std::pair<int, int> pixelToCell(const Rect& arena, int x, int y) {
   int c = static_cast<int>(std::floor(static_cast<double>(x) * arena.width / Canvas::kWidth));
   int r = static_cast<int>(std::floor(static_cast<double>(y) * arena.height / Canvas::kHeight));
   return {arena.col + c, arena.row + r};
+}
+
+namespace {
+/// The first pixel of `cell` along an axis of `pixels` shown in `cells` cells: the smallest x
+/// with floor(x * cells / pixels) >= cell.
+int firstPixel(int cell, int cells, int pixels) {
+  return static_cast<int>((static_cast<int64_t>(cell) * pixels + cells - 1) / cells);
+}
+}  // namespace
+
+Rect cellPixels(const Rect& arena, int col, int row) {
+  int c = std::clamp(col - arena.col, 0, std::max(arena.width - 1, 0));
+  int r = std::clamp(row - arena.row, 0, std::max(arena.height - 1, 0));
+  int x0 = firstPixel(c, arena.width, Canvas::kWidth), x1 = firstPixel(c + 1, arena.width, Canvas::kWidth);
+  int y0 = firstPixel(r, arena.height, Canvas::kHeight),
+      y1 = firstPixel(r + 1, arena.height, Canvas::kHeight);
+  return {x0, y0, std::max(x1 - x0, 1), std::max(y1 - y0, 1)};
+}
+
+Rect cellsShowing(const Rect& arena, int x, int y, int w, int h) {
+  int x0 = std::max(x, 0), y0 = std::max(y, 0);
+  int x1 = std::min(x + w, Canvas::kWidth), y1 = std::min(y + h, Canvas::kHeight);
+  if (arena.width <= 0 || arena.height <= 0 || x1 <= x0 || y1 <= y0) return {};
+  auto [c0, r0] = pixelToCell(arena, x0, y0);
+  auto [c1, r1] = pixelToCell(arena, x1 - 1, y1 - 1);
+  return {c0, r0, c1 - c0 + 1, r1 - r0 + 1};
 }
 
 std::string bumperText(int bits) {
@@ -112,6 +168,13 @@ std::string speedText(double factor) {
   return join({"x1/", std::to_string(std::lround(1 / factor))});
 }
 
+namespace {
+void fit(std::vector<std::string>& lines, int width) {
+  for (std::string& line : lines)
+    if (static_cast<int>(line.size()) > width) line.resize(static_cast<size_t>(std::max(width, 0)));
+}
+}  // namespace
+
 std::vector<std::string> statusLines(const TuiStatus& s, int width) {
   std::vector<std::string> out;
   auto row = [&](const std::string& label, const std::string& value) {
@@ -120,13 +183,10 @@ std::vector<std::string> statusLines(const TuiStatus& s, int width) {
     line += value;
     out.push_back(line);
   };
-  row("file", s.file);
-  row("line", s.line > 0 ? std::to_string(s.line) : "-");
   row("state", s.state);
   std::string speed = speedText(s.speedFactor);
   if (s.rSpeed > 0) speed += join({"  rSpeed ", number(s.rSpeed)});
   row("speed", speed);
-  out.emplace_back();
   if (s.located) {
     row("x", fixed1(s.x));
     row("y", fixed1(s.y));
@@ -138,21 +198,18 @@ std::vector<std::string> statusLines(const TuiStatus& s, int width) {
   } else {
     row("robot", "not placed");
   }
-  out.emplace_back();
-  row("view", s.mode);
-  out.push_back("F2 pause  F3 step");
-  out.push_back("F4/F5 slower/faster");
-  out.push_back("F6 view   F10 quit");
-  if (!s.programKeys) out.push_back("(or p, s, -, +, v, q)");
-  for (std::string& line : out)
-    if (static_cast<int>(line.size()) > width) line.resize(static_cast<size_t>(std::max(width, 0)));
+  if (s.real) {
+    row("link", s.port);
+    row("sent", std::to_string(s.commands) + (s.commands == 1 ? " command" : " commands"));
+    row("reply", s.lastReply.empty() ? "-" : s.lastReply);
+  }
+  fit(out, width);
   return out;
 }
 
 std::vector<std::string> compactStatusLines(const TuiStatus& s, int width) {
   std::vector<std::string> out;
-  out.push_back(join({"line ", s.line > 0 ? std::to_string(s.line) : "-", "  ", s.state, "  ",
-                      speedText(s.speedFactor), "  view ", s.mode}));
+  out.push_back(join({s.state, "  ", speedText(s.speedFactor)}));
   if (s.located) {
     out.push_back(join({"x ", fixed1(s.x), "  y ", fixed1(s.y), "  heading ", fixed1(s.heading),
                         "  pen ", s.pen ? "down" : "up"}));
@@ -161,10 +218,25 @@ std::vector<std::string> compactStatusLines(const TuiStatus& s, int width) {
   } else {
     out.push_back("robot not placed");
   }
-  out.push_back("F2 pause F3 step F4/F5 speed F6 view F10 quit");
-  for (std::string& line : out)
-    if (static_cast<int>(line.size()) > width) line.resize(static_cast<size_t>(std::max(width, 0)));
+  if (s.real) out.push_back(join({"link ", s.port, "  sent ", std::to_string(s.commands)}));
+  fit(out, width);
   return out;
+}
+
+std::string keysLine(int width, bool paused, bool programKeys) {
+  // The most useful first; as many as fit.
+  std::vector<std::string> keys = {paused ? "F2 run" : "F2 pause", "F3 step", "F7 over",
+                                   "F8 pixel", "F9 break", "F4/F5 speed", "F6 view", "F10 quit"};
+  if (paused) keys.push_back("PgUp/PgDn variables");
+  if (!programKeys) keys.push_back("(or p s n r b - + v q)");
+  std::string line;
+  for (const std::string& k : keys) {
+    size_t need = line.empty() ? k.size() : k.size() + 2;
+    if (static_cast<int>(line.size() + need) > width) break;
+    if (!line.empty()) line += "  ";
+    line += k;
+  }
+  return line;
 }
 
 }  // namespace rb::cli

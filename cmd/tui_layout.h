@@ -22,42 +22,64 @@ struct TuiLayout {
   Rect title;             ///< the top line
   Rect arenaBox;          ///< the arena with its border
   Rect arena;             ///< the arena's cells: 800 x 600 pixels scaled to fit, about 4:3
-  Rect status;            ///< the status panel: beside the arena, or under it when narrow
+  Rect status;            ///< the status lines: beside the arena, or under it when narrow
+  Rect sourceBox;         ///< the program around the running line, with its border
+  Rect source;            ///< inside sourceBox
+  Rect varsBox;           ///< the variables, with its border (empty when there is no room)
+  Rect vars;              ///< inside varsBox
   Rect output;            ///< what the program prints (its header line included)
+  Rect keys;              ///< the bottom line: rb's keys
 };
 
 constexpr int kMinCols = 40;
 constexpr int kMinRows = 12;
+/// The status panel's lines when it has room for all of them (a real robot adds kLinkRows).
+constexpr int kStatusRows = 9;
+constexpr int kLinkRows = 3;
 
-/// Lays out a terminal of cols x rows cells.
-TuiLayout layoutTui(int cols, int rows);
+/// Lays out a terminal of cols x rows cells. With room (72 columns or more) the arena is on the
+/// left with the output under it, and the status, source and variables panes on the right;
+/// narrower, everything is stacked and the variables pane is left out. The status panel gets
+/// `statusRows` rows beside the arena when 12 rows are left for the source and variables, else
+/// three (its compact form).
+TuiLayout layoutTui(int cols, int rows, int statusRows = kStatusRows);
 
 /// The screen pixel shown at the centre of an arena cell (terminal coordinates), clamped to the
 /// 800 x 600 screen when the cell is outside the arena.
 std::pair<int, int> cellToPixel(const Rect& arena, int col, int row);
 /// The terminal cell that shows a screen pixel.
 std::pair<int, int> pixelToCell(const Rect& arena, int x, int y);
+/// The screen pixels an arena cell shows (x, y, width, height in pixels): exactly the pixels
+/// that pixelToCell maps to that cell.
+Rect cellPixels(const Rect& arena, int col, int row);
+/// The arena cells that show some pixel of the screen area [x, x + w) x [y, y + h), clipped to
+/// the arena; empty when the area is off the screen.
+Rect cellsShowing(const Rect& arena, int x, int y, int w, int h);
 
 /// What the status panel shows.
 struct TuiStatus {
-  std::string file;
-  int line = 0;            ///< 0: not started
   std::string state;       ///< "running", "paused", "waiting for a key", ...
-  double speedFactor = 1;  ///< the view's speed-up (F4/F5)
+  double speedFactor = 1;  ///< the view's speed-up (F4/F5, --speed)
   double rSpeed = 0;       ///< the program's rSpeed
   bool located = false;
   double x = 0, y = 0, heading = 0;
   bool pen = false;
   int bumper = 0, feel = 0;
   std::optional<double> range;  ///< the last rRange reading
-  std::string mode;             ///< "ascii", "half", "braille"
-  bool programKeys = false;     ///< the program reads the keyboard: single-letter shortcuts are off
+  // A real robot (--real, rCommPort): what its link did.
+  bool real = false;
+  std::string port;        ///< the device
+  uint64_t commands = 0;   ///< commands sent
+  std::string lastReply;   ///< the last reply, as the status shows it ("" before any)
 };
 
-/// The status panel's lines, each at most `width` characters.
+/// The status panel's lines (kStatusRows, or more for a real robot), each at most `width`
+/// characters: "label   value".
 std::vector<std::string> statusLines(const TuiStatus& s, int width);
-/// The same in three lines, for a terminal too narrow for the panel beside the arena.
+/// The same in at most three lines, for a short panel or a narrow terminal.
 std::vector<std::string> compactStatusLines(const TuiStatus& s, int width);
+/// The bottom line: rb's keys, as many as fit in `width`.
+std::string keysLine(int width, bool paused, bool programKeys);
 /// The bits of rBumper() or rFeel() in words: "4 front", "0", "6 right+front".
 std::string bumperText(int bits);
 std::string feelText(int bits);

@@ -1,11 +1,12 @@
 #include "tui_run.h"
 
 #include <cstdio>
+#include <optional>
+#include <utility>
 
 #include "curses_screen.h"
 #include "exit_codes.h"
-#include "headless_run.h"
-#include "machine/interpreter.h"
+#include "program_run.h"
 #include "robot_port.h"
 #include "tui_host.h"
 
@@ -24,6 +25,28 @@ render::CellMode startMode(const render::CursesScreen& screen, const std::string
   if (cells == "half" && screen.unicode() && screen.colour()) return CellMode::HalfBlock;
   if (!screen.unicode()) return CellMode::Ascii;
   return screen.colour() ? CellMode::HalfBlock : CellMode::Braille;
+}
+
+/// --break LINE or FILE:LINE: the file's index in the program's sources and the line; nullopt
+/// when no file of the program has that name or the line is past its end.
+std::optional<std::pair<uint32_t, uint32_t>> breakpointLine(const std::string& spec,
+                                                            const SourceSet& sources) {
+  std::string file, line = spec;
+  if (size_t colon = spec.rfind(':'); colon != std::string::npos) {
+    file = spec.substr(0, colon);
+    line = spec.substr(colon + 1);
+  }
+  if (line.empty() || line.size() > 9 || line.find_first_not_of("0123456789") != std::string::npos)
+    return std::nullopt;
+  uint32_t n = static_cast<uint32_t>(std::stoul(line));
+  for (uint32_t i = 0; i < sources.size(); ++i) {
+    const SourceFile& f = sources.file(i);
+    bool named = file.empty() ? i == 0
+                              : f.name() == file || (f.name().size() > file.size() &&
+                                                     f.name().ends_with("/" + file));
+    if (named && n >= 1 && n <= f.lineCount()) return std::make_pair(i, n);
+  }
+  return std::nullopt;
 }
 
 std::string baseName(const std::string& path) {
@@ -49,8 +72,8 @@ int runTui(const RunOptions& opts) {
   }
   CompileOptions compile;
   compile.lineTracing = true;  // single steps stop before every statement
-  LoadedFile loaded;
-  if (int code = loadForRun(kCommand, opts, compile, loaded)) return code;
+  ProgramRun run;
+  if (int code = run.load(kCommand, opts, compile)) return code;
 
   std::string why;
   std::unique_ptr<render::CursesScreen> screen = render::CursesScreen::open(why);
@@ -60,45 +83,56 @@ int runTui(const RunOptions& opts) {
     return exitcode::kIoError;
   }
 
-  uint64_t seed = runSeed(opts);
-  TuiHost host(*screen, baseName(opts.file), startMode(*screen, opts.cells));
-  host.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
-  std::unique_ptr<Sandbox> sandbox = runSandbox(opts);
-  host.setSystem(sandbox.get());
-  Machine machine(host, seed);
-  host.attach(machine);
-  machine.setObserver(&host);
-  if (std::string failed = connectRealRobot(opts, machine); !failed.empty()) {
+  TuiSettings settings;
+  settings.fileName = baseName(opts.file);
+  settings.mode = startMode(*screen, opts.cells);
+  settings.pixels = opts.cells == "pixels";
+  settings.speed = opts.speed;
+  settings.paused = opts.paused;
+  auto host = std::make_unique<TuiHost>(*screen, settings);
+  TuiHost& view = *host;
+  view.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
+  const SourceSet& sources = run.loaded.program->sources;
+  for (const std::string& b : opts.breaks) {
+    std::optional<std::pair<uint32_t, uint32_t>> at = breakpointLine(b, sources);
+    if (!at) {
+      screen.reset();
+      std::fprintf(stderr, "%s: --break %s: no such line in the program\n", kCommand, b.c_str());
+      return exitcode::kUsage;
+    }
+    view.debugger().addBreakpoint(at->first, at->second);
+  }
+  run.keepDisplayList = true;  // the text the program draws, shown as characters
+  if (std::string failed = run.start(opts, std::move(host), &view); !failed.empty()) {
     screen.reset();
     std::fprintf(stderr, "%s: %s\n", kCommand, failed.c_str());
     return exitcode::kIoError;
   }
+  view.watch(*run.interpreter, sources);
 
-  RunResult result;
-  bool quit = false;
   try {
-    Interpreter interp(*loaded.compiled, machine);
-    result = interp.run(runLimits(opts));
-    quit = result.status == RunStatus::Stopped;  // the user quit: the host stopped the run
+    run.run(opts);
     std::string error;
-    if (result.error) {
-      error = formatDiagnostic(loaded.program->sources, *result.error);
+    if (run.result.error) {
+      error = formatDiagnostic(sources, *run.result.error);
       error = error.substr(0, error.find('\n'));
     }
-    host.showEnd(result, error);
+    view.showEnd(run.result, error);
   } catch (...) {
     screen.reset();  // never leave the terminal in raw mode
     throw;
   }
   screen.reset();  // the terminal is back to normal before anything is printed
-
-  reportSeed(kCommand, opts, seed, machine);
-  if (quit) return exitcode::kOk;  // the user ended the program on purpose
-  if (result.error) {
-    printDiagnostic(stderr, loaded.program->sources, *result.error);
-    return exitcode::kRuntime;
-  }
-  return exitcode::kOk;
+  // What the program printed, on the normal screen, as a headless run prints it.
+  const std::string& out = view.transcript();
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  if (!out.empty() && out.back() != '\n') std::fputc('\n', stdout);
+  if (view.transcriptCut())
+    std::fprintf(stderr, "%s: the program printed more than the view keeps; the rest is cut\n",
+                 kCommand);
+  std::fflush(stdout);
+  // Quitting ends the run on purpose: 0 for the quit keys, 130 for Ctrl-C.
+  return run.conclude(kCommand, opts, view.quitCode());
 }
 
 }  // namespace rb::cli

@@ -163,6 +163,91 @@ void placeRobotGlyph(ArenaFrame& frame, uint32_t backgroundRgb, const RobotView&
   cell.bg = backgroundRgb;
 }
 
+/// How far back in the display list text is looked for (a long list of trail segments after
+/// the text costs no more than this per frame).
+constexpr size_t kTextLookBack = 20000;
+
+/// A character as UTF-8 for a cell ("" for one that shows nothing): ASCII as it is, Latin-1
+/// letters as their UTF-8 form.
+std::string cellCharacter(unsigned char c) {
+  if (c > 32 && c < 127) return std::string(1, static_cast<char>(c));
+  if (c >= 0xA1) {
+    std::string s;
+    s += static_cast<char>(0xC0 | (c >> 6));
+    s += static_cast<char>(0x80 | (c & 0x3F));
+    return s;
+  }
+  return "";
+}
+
+void overlayText(ArenaFrame& frame, const std::vector<DrawOp>& ops,
+                 const std::vector<Colour>& pixels, Colour background) {
+  if (frame.cols <= 0 || frame.rows <= 0) return;
+  size_t from = ops.size();
+  while (from > 0 && ops.size() - from < kTextLookBack) {
+    DrawOp::Kind k = ops[from - 1].kind;
+    if (k == DrawOp::Clear || k == DrawOp::Raster) break;
+    --from;
+  }
+  const double cellW = static_cast<double>(kScreenW) / frame.cols;
+  const double cellH = static_cast<double>(kScreenH) / frame.rows;
+  // A character's cell: the one under the centre of its box.
+  struct Placed {
+    int col, row;
+    std::string glyph;
+    Colour colour, background;
+  };
+  std::vector<Placed> placed;
+  for (size_t i = from; i < ops.size(); ++i) {
+    const DrawOp& op = ops[i];
+    if (op.kind != DrawOp::Text || op.text.empty() || op.points.size() < 2) continue;
+    const int x0 = op.points[0].x, y0 = op.points[0].y, y1 = op.points[1].y;
+    const double advance = static_cast<double>(op.points[1].x - x0) / static_cast<double>(op.text.size());
+    if (advance < kReadableCells * cellW || (y1 - y0) < kReadableCells * cellH) continue;
+    const int row = static_cast<int>(std::floor((y0 + y1) / 2.0 / cellH));
+    if (row < 0 || row >= frame.rows) continue;
+    for (size_t k = 0; k < op.text.size(); ++k) {
+      const int bx0 = static_cast<int>(std::floor(x0 + advance * static_cast<double>(k)));
+      const int bx1 = static_cast<int>(std::floor(x0 + advance * static_cast<double>(k + 1)));
+      const int col = static_cast<int>(std::floor((bx0 + bx1) / 2.0 / cellW));
+      if (col < 0 || col >= frame.cols) continue;
+      // Still shown? Some pixel of the character's box has its colour; the most common other
+      // colour there is the cell's background.
+      Tally around;
+      bool shows = false;
+      for (int y = std::max(y0, 0); y < std::min(y1, kScreenH); ++y)
+        for (int x = std::max(bx0, 0); x < std::min(bx1, kScreenW); ++x) {
+          Colour c = pixels[static_cast<size_t>(y) * kScreenW + static_cast<size_t>(x)];
+          if (c == op.colour) shows = true;
+          else around.add(c, 1);
+        }
+      if (!shows) continue;
+      Colour bg = around.any() ? around.dominant() : background;
+      placed.push_back({col, row, cellCharacter(static_cast<unsigned char>(op.text[k])), op.colour, bg});
+      // The other cells whose centres the character's box covers show its background: the
+      // pixels of the glyph are shown by the character itself.
+      for (int r = 0; r < frame.rows; ++r) {
+        const double cy = (r + 0.5) * cellH;
+        if (cy < y0 || cy >= y1) continue;
+        for (int c = 0; c < frame.cols; ++c) {
+          const double cx = (c + 0.5) * cellW;
+          if (cx < bx0 || cx >= bx1) continue;
+          placed.push_back({c, r, "", op.colour, bg});
+        }
+      }
+    }
+  }
+  // Blanks first, so that a neighbour's blank never covers a character.
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Placed& p : placed) {
+      if (p.glyph.empty() != (pass == 0)) continue;
+      Cell& cell = frame.at(p.col, p.row);
+      setGlyph(cell, p.glyph.empty() ? std::string(" ") : p.glyph);
+      cell.fg = colourToRgb(p.colour);
+      cell.bg = colourToRgb(p.background);
+    }
+}
+
 }  // namespace
 
 ArenaFrame renderArena(const std::vector<Colour>& screenPixels, Colour background, const RobotView& robot,
@@ -253,6 +338,7 @@ ArenaFrame renderArena(const std::vector<Colour>& screenPixels, Colour backgroun
       }
     }
   }
+  if (options.textOps) overlayText(frame, *options.textOps, screenPixels, background);
   placeRobotGlyph(frame, bgRgb, robot, options.mode);
   return frame;
 }

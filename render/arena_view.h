@@ -40,7 +40,16 @@ struct RobotView {
 struct ArenaOptions {
   int cols = 100, rows = 37;
   CellMode mode = CellMode::Ascii;
+  /// The canvas's display list, when text the program drew should show as characters: each
+  /// character whose cell is readable at this scale (its advance and height at least
+  /// kReadableCells of a cell) and still shows in the pixels (some pixel of its box has its
+  /// colour) becomes that character in its colour; the rest stays pixels. Text drawn before
+  /// the last clearScr or scroll is left alone (its place is not known any more).
+  const std::vector<DrawOp>* textOps = nullptr;
 };
+
+/// How much of a cell a character must cover, across and down, to be shown as a character.
+constexpr double kReadableCells = 0.75;
 
 /// Scales the 800 x 600 screen (`pixels`, row-major colour numbers) into cols x rows cells with
 /// the robot's image (its 3-pixel ring and heading line, robot_image.h) drawn in, and puts a

@@ -279,5 +279,29 @@ TEST_CASE("renderArena: deterministic, and fast enough for every frame of a live
   }
 }
 
+TEST_CASE("renderArena: drawn text shows as characters where its cells are readable", "[render][arena]") {
+  auto run = runForPicture(
+      "xyText 40, 200, \"HELLO\", \"Courier New\", 48, 0, BLACK, WHITE\n"
+      "xyText 40, 400, \"tiny\", \"Courier New\", 8, 0, BLACK, WHITE\n");
+  REQUIRE(run->loaded);
+  ArenaOptions opts;
+  opts.cols = 56;
+  opts.rows = 21;
+  opts.textOps = &run->canvas().displayList();
+  ArenaFrame f = renderArena(run->machine->shownScreen(), run->canvas().background(), run->robot(), opts);
+  std::string text = frameText(f);
+  // Each letter in its cell, the cells around it blank: the word reads on one row.
+  std::string joined;
+  for (char c : text)
+    if (c != ' ') joined += c;
+  CHECK(joined.find("HELLO\n") != std::string::npos);
+  CHECK(text.find("tiny") == std::string::npos);  // too small: it stays pixels
+  // Without the display list the text is pixels only.
+  opts.textOps = nullptr;
+  std::string pixelsOnly = frameText(renderArena(run->machine->shownScreen(), run->canvas().background(),
+                                                 run->robot(), opts));
+  CHECK(pixelsOnly.find("H") == std::string::npos);
+}
+
 }  // namespace
 }  // namespace rb::render

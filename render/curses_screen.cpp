@@ -2,7 +2,10 @@
 
 #include <curses.h>
 #include <langinfo.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
+
+#include <chrono>
 
 #include <clocale>
 #include <cstdio>
@@ -87,6 +90,56 @@ bool probeUnicode() {
   return x == 1;
 }
 
+/// Kitty keyboard protocol: push rb's flags / pop them again.
+constexpr const char* kKittyOn = "\033[>15u";
+constexpr const char* kKittyOff = "\033[<u";
+/// The queries of the start: the kitty keyboard flags (a terminal that speaks the protocol
+/// answers CSI ? flags u), then the primary device attributes, which every terminal answers
+/// (CSI ? 62;4;... c; a 4 there means sixel graphics). The answers end with the attributes.
+constexpr const char* kProbe = "\033[?u\033[c";
+constexpr auto kProbeWait = std::chrono::milliseconds(400);
+
+/// What the terminal answered to kProbe.
+struct ProbeAnswer {
+  bool kitty = false, sixel = false;
+};
+
+ProbeAnswer probeTerminal() {
+  ProbeAnswer a;
+  std::fputs(kProbe, stdout);
+  std::fflush(stdout);
+  std::string got;
+  auto deadline = std::chrono::steady_clock::now() + kProbeWait;
+  bool done = false;
+  while (!done && std::chrono::steady_clock::now() < deadline) {
+    wtimeout(stdscr, 20);
+    int ch = wgetch(stdscr);
+    if (ch == ERR || ch < 0 || ch > 255) continue;
+    got += static_cast<char>(ch);
+    // The device attributes end the answers: CSI ? digits;... c
+    size_t at = got.rfind("\033[?");
+    done = !got.empty() && got.back() == 'c' && at != std::string::npos &&
+           got.find_first_not_of("0123456789;", at + 3) == got.size() - 1;
+  }
+  for (size_t at = got.find("\033[?"); at != std::string::npos; at = got.find("\033[?", at + 1)) {
+    size_t end = got.find_first_not_of("0123456789;", at + 3);
+    if (end == std::string::npos) break;
+    std::string params = got.substr(at + 3, end - at - 3);
+    if (got[end] == 'u') a.kitty = true;
+    if (got[end] == 'c') {
+      // The attributes after the first (the terminal's class) list what it can do.
+      size_t i = params.find(';');
+      while (i != std::string::npos) {
+        size_t next = params.find(';', i + 1);
+        if (params.substr(i + 1, next == std::string::npos ? std::string::npos : next - i - 1) == "4")
+          a.sixel = true;
+        i = next;
+      }
+    }
+  }
+  return a;
+}
+
 std::string printable(std::string_view s) {
   std::string out(s);
   for (char& c : out)
@@ -118,13 +171,20 @@ std::unique_ptr<CursesScreen> CursesScreen::open(std::string& error) {
     error = std::string("cannot use the terminal type '") + term + "'";
     return nullptr;
   }
+  // A terminal that cannot move its cursor (TERM=dumb, a printing terminal) cannot show a view.
+  char* cup = tigetstr(const_cast<char*>("cup"));
+  if (cup == nullptr || cup == reinterpret_cast<char*>(-1)) {
+    endwin();
+    delscreen(sp);
+    error = std::string("the terminal type '") + term + "' cannot move the cursor";
+    return nullptr;
+  }
   std::unique_ptr<CursesScreen> s(new CursesScreen());
   s->screen_ = sp;
   s->pairs_ = std::make_unique<PairCache>();
   set_term(sp);
   raw();  // Ctrl-C, Ctrl-S and Ctrl-Q arrive as keys: the view uses them
   noecho();
-  keypad(stdscr, TRUE);
   curs_set(0);
   set_escdelay(25);
   mousemask(ALL_MOUSE_EVENTS | REPORT_MOUSE_POSITION, nullptr);
@@ -139,10 +199,24 @@ std::unique_ptr<CursesScreen> CursesScreen::open(std::string& error) {
     if (s->maxPairs_ < 2) s->colours_ = 0;
   }
   s->unicode_ = probeUnicode();
+  const char* codeset = nl_langinfo(CODESET);
+  s->utf8_ = codeset && std::strcmp(codeset, "UTF-8") == 0;
+  ProbeAnswer answer = probeTerminal();
+  s->sixel_ = answer.sixel;
+  if (answer.kitty) {
+    // Every key, its repeats and its release as escape sequences, decoded by KittyInput.
+    s->kitty_ = true;
+    keypad(stdscr, FALSE);
+    std::fputs(kKittyOn, stdout);
+    std::fflush(stdout);
+  } else {
+    keypad(stdscr, TRUE);
+  }
   return s;
 }
 
 CursesScreen::~CursesScreen() {
+  if (kitty_) std::fputs(kKittyOff, stdout);
   std::fputs(kDragReportsOff, stdout);
   std::fflush(stdout);
   endwin();
@@ -153,6 +227,10 @@ int CursesScreen::cols() const { return COLS; }
 int CursesScreen::rows() const { return LINES; }
 
 TermEvent CursesScreen::read(int timeoutMs) {
+  return kitty_ ? readKitty(timeoutMs) : readCurses(timeoutMs);
+}
+
+TermEvent CursesScreen::readCurses(int timeoutMs) {
   TermEvent e;
   wtimeout(stdscr, timeoutMs);
   int ch = wgetch(stdscr);
@@ -170,8 +248,47 @@ TermEvent CursesScreen::read(int timeoutMs) {
     mouseButtons(me.bstate, e);
     return e;
   }
+  if (utf8_ && ch >= 0xC0 && ch < 0xF8) {
+    // A UTF-8 character arrives a byte at a time: characters up to U+00FF read as their Latin-1
+    // code (as Windows reports them), longer ones have no key code.
+    int more = ch < 0xE0 ? 1 : ch < 0xF0 ? 2 : 3;
+    int code = ch & (0x3F >> more);
+    wtimeout(stdscr, 20);
+    for (int i = 0; i < more; ++i) {
+      int next = wgetch(stdscr);
+      if (next == ERR || (next & 0xC0) != 0x80) return e;
+      code = (code << 6) | (next & 0x3F);
+    }
+    if (code >= 0xA0 && code <= 0xFF) {
+      e.kind = TermEvent::Key;
+      e.key = code;
+    }
+    return e;
+  }
   e.key = translateKey(ch);
   if (e.key != 0) e.kind = TermEvent::Key;
+  return e;
+}
+
+TermEvent CursesScreen::readKitty(int timeoutMs) {
+  TermEvent e = kittyInput_.next();
+  if (e.kind != TermEvent::None) return e;
+  wtimeout(stdscr, timeoutMs);
+  for (int ch = wgetch(stdscr); ch != ERR; ch = wgetch(stdscr)) {
+    if (ch == KEY_RESIZE) {
+      e.kind = TermEvent::Resize;
+      return e;
+    }
+    if (ch >= 0 && ch < 256) kittyInput_.feed(std::string(1, static_cast<char>(ch)));
+    e = kittyInput_.next();
+    if (e.kind != TermEvent::None) return e;
+    wtimeout(stdscr, kittyInput_.pending() ? 25 : 0);
+  }
+  // Nothing more came: what is left of an unfinished sequence is a lone Esc, or nothing.
+  if (kittyInput_.pending()) {
+    kittyInput_.flush();
+    return kittyInput_.next();
+  }
   return e;
 }
 
@@ -275,6 +392,30 @@ void CursesScreen::drawBox(int col, int row, int width, int height, std::string_
 void CursesScreen::present() {
   wnoutrefresh(stdscr);
   doupdate();
+  if (!overlay_.empty()) {
+    // Save the cursor, go to the cell, write, come back: curses keeps its idea of the screen.
+    std::string seq = "\0337\033[" + std::to_string(overlayRow_ + 1) + ";" +
+                      std::to_string(overlayCol_ + 1) + "H";
+    std::fwrite(seq.data(), 1, seq.size(), stdout);
+    std::fwrite(overlay_.data(), 1, overlay_.size(), stdout);
+    std::fputs("\0338", stdout);
+    std::fflush(stdout);
+    overlay_.clear();
+  }
+}
+
+void CursesScreen::redrawAll() { clearok(curscr, TRUE); }
+
+void CursesScreen::overlayAt(int col, int row, std::string bytes) {
+  overlayCol_ = col;
+  overlayRow_ = row;
+  overlay_ = std::move(bytes);
+}
+
+std::pair<int, int> CursesScreen::cellPixels() const {
+  struct winsize ws {};
+  if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) != 0 || ws.ws_col == 0 || ws.ws_row == 0) return {0, 0};
+  return {ws.ws_xpixel / ws.ws_col, ws.ws_ypixel / ws.ws_row};
 }
 
 }  // namespace rb::render

@@ -8,21 +8,12 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "arena_view.h"
+#include "term_input.h"
 
 namespace rb::render {
-
-/// Something the terminal reported.
-struct TermEvent {
-  enum Kind { None, Key, Mouse, Resize } kind = None;
-  /// Key: rb's key code (core/input/input.h); Ctrl+letter reads as its control character (1..26).
-  int64_t key = 0;
-  // Mouse: the cell under the pointer and what changed.
-  int col = 0, row = 0;
-  int pressed = 0;   ///< buttons that went down (1 left, 2 right, 4 middle)
-  int released = 0;  ///< buttons that went up
-};
 
 /// How text is drawn: the terminal's default colours unless `colour` is set.
 struct TermStyle {
@@ -47,6 +38,15 @@ class CursesScreen {
   /// Characters beyond ASCII (half blocks, braille) show as one cell each: a UTF-8 locale and an
   /// ncurses built for wide characters.
   bool unicode() const { return unicode_; }
+  /// The terminal speaks the kitty keyboard protocol: read() reports key releases too.
+  bool reportsKeyReleases() const { return kitty_; }
+  /// The terminal shows sixel images (it says so in its device attributes).
+  bool sixel() const { return sixel_; }
+  /// Writes bytes straight to the terminal after the next present(), with the cursor at a cell
+  /// (an image over the arena); "" writes nothing.
+  void overlayAt(int col, int row, std::string bytes);
+  /// The terminal's cell size in pixels, when it tells (0 x 0 otherwise).
+  std::pair<int, int> cellPixels() const;
 
   /// The next event, waiting up to `timeoutMs` (0: do not wait).
   TermEvent read(int timeoutMs);
@@ -61,6 +61,8 @@ class CursesScreen {
   void drawBox(int col, int row, int width, int height, std::string_view title = {});
   /// Shows the picture.
   void present();
+  /// Draws every cell again at the next present() (after something else wrote on the terminal).
+  void redrawAll();
 
  private:
   CursesScreen() = default;
@@ -72,6 +74,15 @@ class CursesScreen {
   int colours_ = 0;         ///< 0 (none), 8, 16 or 256
   int maxPairs_ = 0;
   bool unicode_ = false;
+  bool utf8_ = false;   ///< the locale's character set is UTF-8: key bytes are decoded
+  bool kitty_ = false;  ///< the kitty keyboard protocol is on: keys are decoded by kitty_input_
+  bool sixel_ = false;
+  KittyInput kittyInput_;
+  std::string overlay_;
+  int overlayCol_ = 0, overlayRow_ = 0;
+  /// Reads a key of the ncurses path (keypad decoding), a UTF-8 character decoded.
+  TermEvent readCurses(int timeoutMs);
+  TermEvent readKitty(int timeoutMs);
   struct PairCache;
   std::unique_ptr<PairCache> pairs_;
 };

@@ -312,7 +312,8 @@ std::string base64Encode(const std::vector<uint8_t>& bytes) {
   return out;
 }
 
-std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale) {
+std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
+                      const std::vector<Colour>* shown) {
   scale = std::clamp(scale, 1, kMaxScale);
   std::string out;
   put(out, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n",
@@ -322,11 +323,15 @@ std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale) {
       std::to_string(kScreenH), "\">\n");
   const std::vector<DrawOp>& ops = canvas.displayList();
   SvgBuilder builder(out);
-  if (needsRaster(ops)) {
-    out += "<!-- The screen was changed in a way that has no vector form (flood fill, scrolling "
-           "text, restoreScr, or more drawing than the display list keeps): this picture is the "
-           "screen's pixels as an embedded PNG. -->\n";
-    std::vector<uint8_t> png = encodePng(screenImage(canvas.pixels(), 1));
+  if (shown || needsRaster(ops)) {
+    if (shown)
+      out += "<!-- flip is on: this picture is the screen as it was at the last flip, as an "
+             "embedded PNG. -->\n";
+    else
+      out += "<!-- The screen was changed in a way that has no vector form (flood fill, scrolling "
+             "text, restoreScr, or more drawing than the display list keeps): this picture is the "
+             "screen's pixels as an embedded PNG. -->\n";
+    std::vector<uint8_t> png = encodePng(screenImage(shown ? *shown : canvas.pixels(), 1));
     put(out, "<image x=\"0\" y=\"0\" width=\"", std::to_string(kScreenW), "\" height=\"",
         std::to_string(kScreenH),
         "\" image-rendering=\"optimizeSpeed\" style=\"image-rendering:pixelated\" "

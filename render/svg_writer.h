@@ -20,7 +20,10 @@ bool needsRaster(const std::vector<DrawOp>& ops);
 /// The SVG document: width 800 * scale, height 600 * scale (scale clamped to 1..kMaxScale),
 /// viewBox in screen pixels. Deterministic: the same canvas and robot give the same bytes.
 /// Throws std::runtime_error when the embedded PNG cannot be encoded (out of memory).
-std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale);
+/// `shown`, when given, is what is shown instead of the canvas (flip is on: the screen at the last
+/// flip), embedded as pixels.
+std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
+                      const std::vector<Colour>* shown = nullptr);
 
 /// Standard base64 with padding (RFC 4648), for data: URLs.
 std::string base64Encode(const std::vector<uint8_t>& bytes);

@@ -11,6 +11,8 @@ packages=(
   libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
+  libserialport-dev     # rb ports: the serial ports and what is known of each
+  libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
   python3               # golden-test helpers and PNG checks
   lua5.4 yabasic brandy hyperfine   # benchmark peers
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)

@@ -30,6 +30,8 @@ class SourceFile {
   const std::string& text() const { return text_; }
   /// The text of a 1-based line, without its line ending ("" when out of range).
   std::string_view lineText(uint32_t line) const;
+  /// How many lines the file has (a last line without a line ending counts).
+  uint32_t lineCount() const { return static_cast<uint32_t>(lineStarts_.size()); }
 
  private:
   std::string name_;

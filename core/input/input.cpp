@@ -54,16 +54,16 @@ EditBox* Controls::edit(std::string_view name) {
   return nullptr;
 }
 
-const Button* Controls::buttonAt(int x, int y) const {
+const Button* Controls::buttonAt(int x, int y, int w, int h) const {
   // The last added is drawn on top, so it wins.
   for (auto it = buttons.rbegin(); it != buttons.rend(); ++it)
-    if (it->contains(x, y)) return &*it;
+    if (it->overlaps(x, y, w, h)) return &*it;
   return nullptr;
 }
 
-const EditBox* Controls::editAt(int x, int y) const {
+const EditBox* Controls::editAt(int x, int y, int w, int h) const {
   for (auto it = edits.rbegin(); it != edits.rend(); ++it)
-    if (it->contains(x, y)) return &*it;
+    if (it->overlaps(x, y, w, h)) return &*it;
   return nullptr;
 }
 

@@ -55,6 +55,10 @@ struct Button {
   bool contains(int px, int py) const {
     return px >= x && py >= y && px < x + width && py < y + height;
   }
+  /// Shares a pixel with the area [ax, ax + aw) x [ay, ay + ah).
+  bool overlaps(int ax, int ay, int aw, int ah) const {
+    return ax < x + width && ay < y + height && ax + aw > x && ay + ah > y;
+  }
 };
 
 /// A one-line text box added by AddEdit, in screen pixels.
@@ -64,6 +68,9 @@ struct EditBox {
   std::string text;
   bool contains(int px, int py) const {
     return px >= x && py >= y && px < x + width && py < y + height;
+  }
+  bool overlaps(int ax, int ay, int aw, int ah) const {
+    return ax < x + width && ay < y + height && ax + aw > x && ay + ah > y;
   }
 };
 
@@ -82,9 +89,10 @@ class Controls {
   /// Lookups by exact name; nullptr when there is none.
   Button* button(std::string_view name);
   EditBox* edit(std::string_view name);
-  /// The topmost control under a screen pixel; nullptr when there is none.
-  const Button* buttonAt(int x, int y) const;
-  const EditBox* editAt(int x, int y) const;
+  /// The topmost control (the last added) over the screen pixels [x, x + w) x [y, y + h): a
+  /// pixel by default, or the pixels a terminal cell shows; nullptr when there is none.
+  const Button* buttonAt(int x, int y, int w = 1, int h = 1) const;
+  const EditBox* editAt(int x, int y, int w = 1, int h = 1) const;
   /// The names of all buttons, for messages ("A, B" or "none").
   std::string buttonNames() const;
 };

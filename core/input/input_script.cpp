@@ -325,16 +325,30 @@ void ScriptedInput::progressed() {
 }
 
 void ScriptedInput::apply(const ScriptStep& s) {
+  absorbed_ = false;
   switch (s.kind) {
     case ScriptStep::Key:
     case ScriptStep::Hold:
-    case ScriptStep::Press: key_ = s.key; break;
+    case ScriptStep::Press:
+      // An edit box that has the keyboard takes the key: the program's keyboard never sees it.
+      if (!modal_ && controls_ && rules_.typeInto(*controls_, s.key)) absorbed_ = true;
+      else key_ = s.key;
+      break;
     case ScriptStep::Release: key_ = 0; break;
     case ScriptStep::Mouse:
-    case ScriptStep::Click:
-      if (s.mouse.buttons & ~mouse_.buttons) ++presses_;
+    case ScriptStep::Click: {
+      int pressed = s.mouse.buttons & ~mouse_.buttons;
+      if (modal_ && s.kind == ScriptStep::Click) break;  // it answers the box (messageBox())
+      // A press on a button or an edit box goes to it, not to the program's mouse reads.
+      if (pressed && !modal_ && controls_ &&
+          rules_.press(*controls_, s.mouse.x, s.mouse.y) != InputRules::Target::Program) {
+        absorbed_ = true;
+        break;
+      }
+      if (pressed) ++presses_;
       mouse_ = s.mouse;
       break;
+    }
     default: break;  // the rest take effect when a read of their kind sees them
   }
   applied_ = true;
@@ -346,6 +360,7 @@ void ScriptedInput::apply(const ScriptStep& s) {
 void ScriptedInput::finish() {
   ++next_;
   applied_ = false;
+  absorbed_ = false;
   seen_ = false;
   progressed();
 }
@@ -354,6 +369,10 @@ void ScriptedInput::settle(Device device, Controls* controls, std::string_view w
   while (!exhausted()) {
     const ScriptStep& s = script_.steps[next_];
     if (!applied_) apply(s);
+    if (absorbed_) {  // taken by a button or an edit box: nothing more for a read to see
+      finish();
+      continue;
+    }
     if (s.kind == ScriptStep::Wait) {
       if (clock_ < appliedAt_ + s.ms) return;
       finish();
@@ -499,8 +518,23 @@ void ScriptedInput::updateControls(Controls& controls, std::string_view who) {
   checkStall(who, "its buttons and edit boxes");
 }
 
+namespace {
+/// Sets a flag for the time of a call, also when it ends by an exception.
+class Raised {
+ public:
+  explicit Raised(bool& flag) : flag_(flag) { flag_ = true; }
+  ~Raised() { flag_ = false; }
+  Raised(const Raised&) = delete;
+  Raised& operator=(const Raised&) = delete;
+
+ private:
+  bool& flag_;
+};
+}  // namespace
+
 void ScriptedInput::messageBox(std::string_view who) {
   clock_ += kReadMs;
+  Raised modal(modal_);
   for (;;) {
     settle(Device::MessageBox, nullptr, who);
     if (exhausted()) exhaustedError(who);
@@ -509,21 +543,25 @@ void ScriptedInput::messageBox(std::string_view who) {
       finish();
       return;
     }
-    if (s.kind == ScriptStep::Key &&
-        (s.key == keys::kEnter || s.key == keys::kEsc || s.key == keys::kSpace)) {
-      key_ = 0;  // the dialog takes the key: the program never sees it
+    bool answer = (s.kind == ScriptStep::Key && InputRules::answersMessageBox(s.key)) ||
+                  (s.kind == ScriptStep::Click && InputRules::clickAnswersMessageBox(s.mouse.buttons));
+    if (answer) {
+      key_ = 0;  // the dialog takes the key or the click: the program never sees it
       finish();
       return;
     }
     if (s.kind == ScriptStep::Wait) jumpOverWait();
     else if (s.kind == ScriptStep::Release) finish();
     else
-      mismatchError(who, "an answer to the message box (msgbox, or the key enter, esc or space)");
+      mismatchError(who,
+                    "an answer to the message box (msgbox, a left click, or the key enter, esc or "
+                    "space)");
   }
 }
 
-std::string ScriptedInput::inputLine(std::string_view who) {
+std::optional<std::string> ScriptedInput::inputLine(std::string_view who) {
   clock_ += kReadMs;
+  Raised modal(modal_);
   std::string typed;
   for (;;) {
     settle(Device::Line, nullptr, who);
@@ -537,11 +575,10 @@ std::string ScriptedInput::inputLine(std::string_view who) {
       // Keys typed at an input prompt make up the line; enter ends it.
       key_ = 0;
       finish();
-      if (s.key == keys::kEnter) return typed;
-      if (s.key == keys::kBackspace) {
-        if (!typed.empty()) typed.pop_back();
-      } else if (s.key >= 32 && s.key < keys::kExtended && s.key != 127) {
-        typed += static_cast<char>(s.key);
+      switch (InputRules::editLine(typed, s.key)) {
+        case InputRules::LineKey::Done: return typed;
+        case InputRules::LineKey::EndOfInput: return std::nullopt;
+        default: break;
       }
       continue;
     }

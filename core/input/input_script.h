@@ -13,15 +13,22 @@
 // error, since the program cannot read it while it waits. When nothing is left, a blocking read
 // is a runtime error, and a program that keeps polling is stopped once it has polled kStallReads
 // times over kStallMs of virtual time without the script moving on.
+//
+// What the steps do follows the input rules every source of input shares (input_rules.h): a
+// click on one of the program's buttons presses it, a click on an edit box gives it the keys
+// that follow until enter, tab or esc, a left click or enter, esc or space answers a message
+// box, and keys typed at an input prompt make its line.
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "input/input.h"
 #include "base/runtime_error.h"
+#include "input/input.h"
+#include "input/input_rules.h"
 
 namespace rb {
 
@@ -85,13 +92,16 @@ class ScriptedInput {
   ScriptedInput(InputScript script, double& clockMs);
 
   bool given() const { return script_.given; }
+  /// The program's buttons and edit boxes, which clicks and typed keys may reach (nullptr: none).
+  void useControls(Controls* controls) { controls_ = controls; }
   int64_t heldKey(std::string_view who);
   int64_t waitKey(std::string_view who);
   MouseState mouse(std::string_view who);
   MouseState waitClick(std::string_view who);
   void updateControls(Controls& controls, std::string_view who);
   void messageBox(std::string_view who);
-  std::string inputLine(std::string_view who);
+  /// nullopt: the script typed Ctrl-D on an empty line (the end of input).
+  std::optional<std::string> inputLine(std::string_view who);
 
   /// True when every step has been taken.
   bool exhausted() const { return next_ >= script_.steps.size(); }
@@ -117,6 +127,10 @@ class ScriptedInput {
 
   InputScript script_;
   double& clock_;
+  Controls* controls_ = nullptr;
+  InputRules rules_;
+  bool modal_ = false;    ///< a message box or an input prompt is up: controls take nothing
+  bool absorbed_ = false; ///< the current step went to a button or an edit box
   size_t next_ = 0;       ///< the current step
   bool applied_ = false;  ///< the current step has taken effect
   bool seen_ = false;     ///< a read of its kind has seen it

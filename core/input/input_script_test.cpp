@@ -66,6 +66,7 @@ Run runWith(const std::string& program, std::string_view events) {
   }
   ScriptHost host(script(events));
   Machine machine(host, 1);
+  host.player.useControls(&machine.controls);
   Interpreter interp(*compiled, machine);
   RunResult result = interp.run({});
   r.out = host.out;
@@ -378,4 +379,35 @@ TEST_CASE("controls: errors and replacing", "[input]") {
   CHECK(r.out == "12\n");
   CHECK(runWith("getKey k\nwaitKey k\n", "").error ==
         "waitKey: no more scripted input (the --events script is exhausted)");
+}
+
+TEST_CASE("scripted clicks follow the input rules: buttons, edit boxes, message boxes", "[input]") {
+  // A click on a button presses it; a click on an edit box gives it the keys up to enter; a
+  // left click answers a message box. None of them is a mouse click the program sees.
+  Run r = runWith(
+      "AddButton \"Go\", 100, 100\n"
+      "AddEdit \"Name\", 100, 200, 80, \"\"\n"
+      "repeat\n"
+      "  GetButton b\n"
+      "until b <> \"\"\n"
+      "print b\n"
+      "waitKey k\n"
+      "print GetEdit(\"Name\"), \" \", k\n"
+      "MsgBox \"hi\"\n"
+      "waitClick x, y\n"
+      "print x, \",\", y\n",
+      "click 110 110\nclick 120 210\nkeys Al{backspace}n{enter}q\nclick 5 5\nclick 7 8\n");
+  CHECK(r.error == "");
+  CHECK(r.out == "Go\nAn 113\n7,8\n");
+}
+
+TEST_CASE("a key Ctrl-D on an empty input line ends the input", "[input]") {
+  std::vector<ScriptStep> steps = parseKeyText("\x04");
+  REQUIRE(steps.size() == 1);
+  InputScript s;
+  s.given = true;
+  s.steps = steps;
+  double clock = 0;
+  ScriptedInput eof(std::move(s), clock);
+  CHECK(eof.inputLine("input") == std::nullopt);
 }

@@ -51,10 +51,10 @@ Value rLocate(Machine& m, Args& a) {
   return {};
 }
 
-/// The per-step callback of a move: only when rSpeed paces it (a live view then animates each
-/// step); at rSpeed 0 a move is instantaneous.
+/// The per-step callback of a move: only when rSpeed paces it or a live view shows it (it then
+/// animates each step); otherwise a move is instantaneous.
 std::function<void()> stepper(Machine& m) {
-  if (m.robotSpeed <= 0) return nullptr;
+  if (!m.animatesRobot()) return nullptr;
   return [&m] { m.robotStepped(); };
 }
 

@@ -18,6 +18,8 @@
 
 namespace rb {
 
+class Machine;
+
 /// Files and other programs a RobotBASIC program may reach (FileExists, FileRename, DirSet,
 /// Spawn). Student programs are untrusted: rb's commands give an implementation that confines
 /// files to the program's folder and refuses Spawn unless the user allows more
@@ -54,6 +56,10 @@ class Host {
  public:
   virtual ~Host() = default;
 
+  /// Called once the machine the host serves exists, before the program starts: a live view
+  /// draws its screen, and input reaches its buttons and edit boxes.
+  virtual void attachMachine(Machine& /*machine*/) {}
+
   /// Text the program prints (already formatted; "\n" ends lines).
   virtual void output(std::string_view text) = 0;
   /// One line typed in answer to `input` (without its line end); nullopt when input is over.
@@ -87,6 +93,10 @@ class Host {
   virtual void onLine(SourceLoc /*loc*/) {}
   /// Called after each pixel or degree the robot moves, so a live view can animate it.
   virtual void animate() {}
+  /// Milliseconds each pixel or degree of robot motion takes besides rSpeed's: 0 for a run that
+  /// does not show the motion (a move at rSpeed 0 is then instantaneous); a live view gives the
+  /// time RobotBASIC takes to draw a step, so that motion is visible at rSpeed 0 too.
+  virtual double robotStepMs() const { return 0; }
 
   // ---- keyboard, mouse and dialogs (core/input/input.h). `who` names the built-in that asks, for
   // messages. The defaults are a run without keyboard or mouse: reads that do not block see

@@ -356,6 +356,20 @@ RunResult Interpreter::run(const RunLimits& limits) {
   return result;
 }
 
+std::vector<VariableView> Interpreter::variables() const {
+  // The compiler names its hidden slots in parentheses ("(for limit)"): they are not shown.
+  auto named = [](const std::string& n) { return !n.empty() && n[0] != '('; };
+  std::vector<VariableView> out;
+  for (size_t i = 0; i < prog_.globalNames.size() && i < globals_.size(); ++i)
+    if (named(prog_.globalNames[i])) out.push_back({prog_.globalNames[i], false, &globals_[i]});
+  if (sub_ >= 0) {
+    const SubInfo& s = prog_.subs[static_cast<size_t>(sub_)];
+    for (size_t i = 0; i < s.slotNames.size() && base_ + i < stack_.size(); ++i)
+      if (named(s.slotNames[i])) out.push_back({s.slotNames[i], true, &stack_[base_ + i]});
+  }
+  return out;
+}
+
 /// Called when a chunk of steps is used up: checks the step limit, the timeout and the host.
 /// Returns false when the run must stop (stopStatus_ says why).
 bool Interpreter::checkpoint() {

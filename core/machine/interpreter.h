@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "lang/bytecode.h"
@@ -33,12 +34,31 @@ struct RunResult {
   uint64_t steps = 0;  ///< statements executed
 };
 
+/// A variable as a debugger shows it (the live view's variables pane).
+struct VariableView {
+  std::string_view name;
+  bool local = false;            ///< a parameter or local of the running sub
+  const Value* value = nullptr;  ///< valid until the program runs on
+};
+
 class Interpreter {
  public:
   Interpreter(const Program& program, Machine& machine);
 
   /// Runs the program from its first instruction.
   RunResult run(const RunLimits& limits);
+
+  // ---- a read-only look at a running program, for hooks called during run() (Host::onLine)
+
+  /// The named variables now: the globals in the order the program names them, then the running
+  /// sub's parameters and locals. Nothing is copied or changed.
+  std::vector<VariableView> variables() const;
+  /// Nested gosub and sub-call frames now (0: the main code).
+  size_t callDepth() const { return frames_.size(); }
+  /// The name of the sub running now ("" in the main code and its gosubs).
+  std::string_view runningSub() const {
+    return sub_ >= 0 ? std::string_view(prog_.subs[static_cast<size_t>(sub_)].name) : std::string_view();
+  }
 
  private:
   struct Frame {

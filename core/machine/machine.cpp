@@ -26,9 +26,12 @@ void Machine::delay(double ms) {
 }
 
 void Machine::robotStepped() {
-  if (robotSpeed > 0) host_.wait(robotSpeed);
+  double ms = robotSpeed + host_.robotStepMs();
+  if (ms > 0) host_.wait(ms);
   host_.animate();
 }
+
+bool Machine::animatesRobot() const { return robotSpeed > 0 || host_.robotStepMs() > 0; }
 
 void Machine::printPrompt(std::string_view prompt) {
   if (prompt.empty() || (prompt == lastPrompt_ && prints_ == promptPrintedAt_)) return;

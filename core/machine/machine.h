@@ -95,17 +95,29 @@ class Machine {
   std::string input(std::string_view prompt);
   /// `delay`: lets time pass on the run's clock.
   void delay(double ms);
-  /// After each pixel or degree of robot motion: paces it at rSpeed and lets a live view draw.
+  /// After each pixel or degree of robot motion: paces it at rSpeed (plus the host's drawing
+  /// time, Host::robotStepMs) and lets a live view draw.
   void robotStepped();
+  /// Whether robot motion goes a pixel or degree at a time (rSpeed paces it, or a live view
+  /// shows it); otherwise a move is instantaneous.
+  bool animatesRobot() const;
   /// waitKey's prompt: printed like `print` without a line end, except when the same prompt is
   /// still the last thing printed (a loop that waits for a held key would fill the screen).
   void printPrompt(std::string_view prompt);
 
   double robotSpeed = 0;  ///< rSpeed: milliseconds per pixel or degree
 
-  // flip on/off: while on, a live view shows the screen as it was at the last flip.
+  // flip on/off: while on, what is shown of the screen (a live view, rb render's picture) is
+  // the screen as it was at the last flip.
   bool flipMode = false;
   std::vector<Colour> flipped;  ///< the screen at the last flip
+  /// The screen's pixels as a viewer sees them: the last flip's while flip is on, else the
+  /// canvas itself.
+  const std::vector<Colour>& shownScreen() const {
+    return flipMode && !flipped.empty() ? flipped : canvas_.pixels();
+  }
+  /// True while what is shown is not the canvas (flip is on and the canvas changed since).
+  bool showsFlip() const { return flipMode && !flipped.empty(); }
 
   /// AddButton, AddEdit: the program's dialog controls. Live views draw them; they are never
   /// drawn into the canvas, so the robot does not sense them.

@@ -14,8 +14,18 @@ using protocol::kCodes;
 RealRobot::RealRobot(std::unique_ptr<RobotLink> link) : link_(std::move(link)) {}
 
 RobotReply RealRobot::send(uint8_t code, uint8_t param) {
-  last_ = link_->transact(code, param);
+  ++stats_.commands;
+  stats_.lastCode = code;
+  stats_.lastParam = param;
+  try {
+    last_ = link_->transact(code, param);
+  } catch (const RuntimeError& e) {
+    stats_.fault = e.what();
+    throw;
+  }
   haveReply_ = true;
+  ++stats_.replies;
+  stats_.last = last_;
   return last_;
 }
 

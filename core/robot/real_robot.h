@@ -33,6 +33,16 @@ class RealRobot {
   /// Whether the last rPen sent put the pen down.
   bool penDown() const { return penDown_; }
 
+  /// What the link did so far, for a live view (reading it sends nothing).
+  struct LinkStats {
+    uint64_t commands = 0;  ///< commands sent
+    uint64_t replies = 0;   ///< replies received
+    uint8_t lastCode = 0, lastParam = 0;  ///< the last command sent
+    RobotReply last;        ///< the last reply (valid when replies > 0)
+    std::string fault;      ///< the link's fault, when one stopped it
+  };
+  const LinkStats& linkStats() const { return stats_; }
+
   /// rLocate: sends the initialise command; the dead-reckoned pose becomes (x, y, heading).
   void locate(double x, double y, double heading);
   /// rForward: one command per 255 pixels (backward for a negative distance); 0 sends one
@@ -75,6 +85,7 @@ class RealRobot {
   bool penDown_ = false;
   bool haveReply_ = false;
   RobotReply last_;
+  LinkStats stats_;
 };
 
 }  // namespace rb

@@ -102,6 +102,23 @@ def case_ascii(env):
     env.expect_exit(env.run(env.fig17, "--ascii", "--cells", "nope"), 64)
 
 
+def case_flip(env):
+    """With flip on, the picture is the screen at the last flip, as a live view shows it."""
+    prog = env.program("flip.bas", "flip on\nrectangle 0, 0, 800, 600, BLACK, BLACK\nflip\n"
+                                   "clearScr\n")
+    r = env.run(prog, "--ascii", "--cols", "20", "--rows", "5")
+    env.expect_exit(r, 0)
+    expect(r.stdout == ("#" * 20 + "\n") * 5, "not the flipped (black) screen:\n" + r.stdout)
+    svg = env.path("flip.svg")
+    env.expect_exit(env.run(prog, "-o", svg), 0)
+    with open(svg) as f:
+        text = f.read()
+    expect("the last flip" in text and "data:image/png" in text, "SVG lacks the flipped screen")
+    plain = env.program("noflip.bas", "rectangle 0, 0, 800, 600, BLACK, BLACK\nclearScr\n")
+    r = env.run(plain, "--ascii", "--cols", "20", "--rows", "5")
+    expect("#" not in r.stdout, "without flip the cleared screen shows:\n" + r.stdout)
+
+
 def case_bad_extension(env):
     out = env.path("picture.gif")
     r = env.run(env.fig17, "-o", out)

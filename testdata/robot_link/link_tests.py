@@ -243,6 +243,20 @@ def case_emulator_sessions(tmp):
     expect(code == 64 and "--pty" in err, f"rb robot without --pty: exit {code}", err)
 
 
+def case_ports(tmp):
+    """rb ports lists the system's ports (whatever they are) and describes the emulator's pty."""
+    code, out, err, _ = rb("ports")
+    expect(code == 0, f"rb ports exited {code}", err)
+    expect(out.startswith("--port  device") or out == "no serial ports found\n", "rb ports' table", out)
+    with Emulator(tmp) as robot:
+        code, out, err, _ = rb("ports", robot.device)
+        expect(code == 0, f"rb ports DEVICE exited {code}", err)
+        lines = out.splitlines()
+        expect(len(lines) == 2 and lines[0].startswith("--port  device"), "table", out)
+        # A pty has no COM number: only its path opens it.
+        expect(lines[1].split()[:2] == ["-", robot.device], "the pty's row", out)
+
+
 def main():
     global RB, EXAMPLES
     ap = argparse.ArgumentParser()

@@ -19,6 +19,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 COLS, ROWS = 100, 30
+# Generous: CI machines are slow and busy. Tests poll the screen, so a fast machine does not wait.
+TIMEOUT = 30.0
 
 
 class Failure(Exception):
@@ -28,7 +30,7 @@ class Failure(Exception):
 class Session:
     """One `rb run --tui` in its own tmux server."""
 
-    def __init__(self, rb, program, env=None, cols=COLS, rows=ROWS):
+    def __init__(self, rb, program, env=None, cols=COLS, rows=ROWS, args=""):
         self.dir = tempfile.mkdtemp(prefix="rbtui-")
         self.socket = os.path.join(self.dir, "tmux")  # removed with the folder
         self.code_file = os.path.join(self.dir, "code")
@@ -36,8 +38,10 @@ class Session:
         settings = {"TERM": "xterm-256color", "LC_ALL": "C"}  # C locale: the ASCII cell mode
         settings.update(env or {})
         envs = " ".join(f"{k}={v}" for k, v in settings.items())
-        command = (f"cd {HERE} && env {envs} {rb} run --tui {program} 2>{self.err_file}; "
-                   f"echo $? >{self.code_file}.tmp; mv {self.code_file}.tmp {self.code_file}")
+        # After rb exits the pane stays (sleep): the normal screen shows what rb printed there.
+        command = (f"cd {HERE} && env {envs} {rb} run --tui {args} {program} 2>{self.err_file}; "
+                   f"echo $? >{self.code_file}.tmp; mv {self.code_file}.tmp {self.code_file}; "
+                   f"sleep 600")
         self.tmux("new-session", "-d", "-s", "main", "-x", str(cols), "-y", str(rows), command)
 
     def tmux(self, *args):
@@ -59,7 +63,7 @@ class Session:
         self.raw(f"\x1b[<{button};{col + 1};{row + 1}M")
         self.raw(f"\x1b[<{button};{col + 1};{row + 1}m")
 
-    def wait_for(self, what, predicate, timeout=8.0):
+    def wait_for(self, what, predicate, timeout=TIMEOUT):
         deadline = time.monotonic() + timeout
         text = ""
         while time.monotonic() < deadline:
@@ -71,7 +75,7 @@ class Session:
             time.sleep(0.05)
         raise Failure(f"timed out waiting for {what}; the screen was:\n{text}\nstderr:\n{self.stderr()}")
 
-    def settled(self, timeout=8.0):
+    def settled(self, timeout=TIMEOUT):
         """The screen once two captures 0.1 s apart agree: curses may be mid-way through a frame
         when tmux captures it (the state row already new, the pose rows below still old)."""
         deadline = time.monotonic() + timeout
@@ -84,10 +88,10 @@ class Session:
             last = now
         return last
 
-    def wait_text(self, text, timeout=8.0):
+    def wait_text(self, text, timeout=TIMEOUT):
         return self.wait_for(repr(text), lambda s: text in s, timeout)
 
-    def exit_code(self, timeout=8.0):
+    def exit_code(self, timeout=TIMEOUT):
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if os.path.exists(self.code_file):
@@ -110,7 +114,7 @@ class Session:
 
 def status(screen, label):
     """A value of the status panel ("x", "state", ...)."""
-    m = re.search(r"\| " + re.escape(label) + r" +(\S[^|]*?)\s*$", screen, re.M)
+    m = re.search(r"[|+] " + re.escape(label) + r" +(\S[^|]*?)\s*$", screen, re.M)
     return m.group(1) if m else None
 
 
@@ -148,19 +152,18 @@ def test_square(rb):
         still = s.settled()
         check((status(still, "x"), status(still, "y"), status(still, "heading")) == pose,
               "the robot moved while paused:\n" + still)
-        # F3 runs one statement or one robot step (the first may end a wait already under way).
+        # F8 runs one pixel or degree of robot motion (or to the next statement).
         moved = None
         for _ in range(4):
-            s.keys("F3")
-            time.sleep(0.15)
+            s.keys("F8")
             t = s.settled()
             if (status(t, "x"), status(t, "y"), status(t, "heading")) != pose:
                 moved = t
                 break
-        check(moved is not None, "F3 did not step the robot:\n" + s.screen())
+        check(moved is not None, "F8 did not step the robot:\n" + s.screen())
         check(status(moved, "state") == "paused", "not paused after a step:\n" + moved)
         s.keys("F2")
-        done = s.wait_for("the end", lambda t: status(t, "state") == "finished", timeout=15)
+        done = s.wait_for("the end", lambda t: status(t, "state") == "finished")
         check("square done" in done, "the output pane lacks the program's output:\n" + done)
         arena = arena_lines(done)
         drawn = sum(1 for row in arena for c in row if c not in " ")
@@ -197,15 +200,16 @@ def test_mouse(rb):
     s = Session(rb, "clicks.bas")
     try:
         t = s.wait_for("the program", lambda t: status(t, "state") == "running")
-        check("[Stop]" in t, "the Stop button is not drawn:\n" + t)
+        check("Stop" in "\n".join(arena_lines(t)), "the Stop button is not drawn:\n" + t)
         # The arena's cells start at column 1, row 2; a 61 x 23 arena in a 100 x 30 terminal.
         s.click(1 + 15, 2 + 5)
         t = s.wait_text("left ")
         m = re.search(r"left (\d+),(\d+)", t)
         x, y = int(m.group(1)), int(m.group(2))
         check(190 <= x <= 215 and 130 <= y <= 160, f"click mapped to {x},{y}")
-        stop = next(i for i, l in enumerate(t.split("\n")) if "[Stop]" in l)
-        col = t.split("\n")[stop].index("[Stop]") + 2
+        # The button is drawn on the cells that show its pixels; a click there presses it.
+        stop = next(i for i, l in enumerate(t.split("\n")) if "Stop" in l[:62])
+        col = t.split("\n")[stop].index("Stop") + 1
         s.click(col, stop)
         t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
         check("end by 0 Stop" in t, "the button press did not end the program:\n" + t)
@@ -219,7 +223,7 @@ def test_error(rb):
     """A runtime error shows in the view, then on standard error in rb run's format (exit 70)."""
     s = Session(rb, "crash.bas")
     try:
-        t = s.wait_for("the error", lambda t: status(t, "state") == "error", timeout=10)
+        t = s.wait_for("the error", lambda t: status(t, "state") == "error")
         check("crash.bas:5:1: error: robot crashed into an obstacle" in t, "the view lacks the error:\n" + t)
         s.keys("Enter")
         code = s.exit_code()
@@ -232,13 +236,15 @@ def test_error(rb):
 
 def test_quit(rb):
     """F10 ends a running program at once (exit 0); so does q before the program reads keys,
-    and F10 while the program waits for a key (the wait ends, then the run)."""
-    for key in ("F10", "q", "C-c"):
+    and F10 while the program waits for a key (the wait ends, then the run). Ctrl-C exits 130,
+    as a shell reports a program ended by SIGINT."""
+    for key, want in (("F10", 0), ("q", 0), ("C-c", 130)):
         s = Session(rb, "square.bas")
         try:
             s.wait_for("the run", lambda t: status(t, "state") == "running")
             s.keys(key)
-            check(s.exit_code() == 0, f"exit status after {key}")
+            code = s.exit_code()
+            check(code == want, f"exit status {code} after {key}, expected {want}")
             check(s.stderr() == "", f"stderr after {key}: {s.stderr()}")
         finally:
             s.close()
@@ -273,13 +279,251 @@ def test_unicode(rb):
     """In a UTF-8 locale the view may use half blocks or braille; it still shows the robot."""
     s = Session(rb, "square.bas", env={"LC_ALL": "C.UTF-8"})
     try:
-        t = s.wait_for("the end", lambda t: "finished" in t.split("\n")[0], timeout=15)
+        t = s.wait_for("the end", lambda t: "finished" in t.split("\n")[0])
         check(status(t.replace("\u2502", "|"), "pen") == "down", "status:\n" + t)
         s.keys("F6")  # another cell mode
         s.keys("x")
         check(s.exit_code() == 0, "exit status")
     finally:
         s.close()
+
+
+def running_line(screen):
+    """The number of the source pane's highlighted line (the statement about to run)."""
+    m = re.search(r"(?:^|\|)>\s*(\d+) ", screen, re.M)
+    return int(m.group(1)) if m else None
+
+
+def variable(screen, name):
+    """A value in the variables pane."""
+    m = re.search(r"\|" + re.escape(name) + r" +(\S.*?)\s*\|", screen)
+    return m.group(1) if m else None
+
+
+def test_motion(rb):
+    """At rSpeed 0 the view still shows the robot moving: the pose changes between two looks."""
+    s = Session(rb, "motion.bas")
+    try:
+        first = s.wait_for("the robot to move",
+                           lambda t: status(t, "state") == "running"
+                           and status(t, "y") not in (None, "300.0"))
+        pose = (status(first, "x"), status(first, "y"), status(first, "heading"))
+        later = s.wait_for("the robot to move on",
+                           lambda t: (status(t, "x"), status(t, "y"), status(t, "heading")) != pose
+                           and status(t, "state") == "running")
+        check(status(later, "y") is not None, later)
+        s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_paused(rb):
+    """--paused stops before the first statement; nothing runs until F2."""
+    s = Session(rb, "square.bas", args="--paused")
+    try:
+        t = s.wait_for("the pause", lambda t: status(t, "state") == "paused"
+                       and running_line(t) == 3)
+        check(status(t, "robot") == "not placed", "the robot moved before the first statement:\n" + t)
+        time.sleep(0.5)
+        t = s.settled()
+        check(running_line(t) == 3 and status(t, "state") == "paused", "ran while paused:\n" + t)
+        s.keys("F2")
+        s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_step(rb):
+    """F3 steps one statement (into a gosub), F7 steps over it; the highlighted line follows."""
+    s = Session(rb, "debug.bas", args="--paused")
+    try:
+        s.wait_for("the pause at line 2", lambda t: running_line(t) == 2)
+        for key, line in (("F3", 3), ("F3", 4), ("F3", 5), ("F3", 6), ("F3", 13), ("F3", 14),
+                          ("F3", 7), ("F3", 8), ("F3", 6), ("F7", 7)):
+            s.keys(key)
+            t = s.wait_for(f"{key} to line {line}", lambda t, line=line:
+                           running_line(t) == line and status(t, "state") == "paused")
+        check(variable(t, "total") == "3", "the variables pane after two gosubs:\n" + t)
+        s.keys("F10")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_break(rb):
+    """--break stops at its line each time the run comes to it; F9 clears it; the variables pane
+    shows the values at each stop; after the end the output is printed on the normal screen."""
+    s = Session(rb, "debug.bas", args="--break 7")
+    try:
+        t = s.wait_for("the breakpoint", lambda t: running_line(t) == 7
+                       and status(t, "state") == "paused")
+        t = s.wait_for("total 1", lambda t: variable(t, "total") == "1")
+        check(variable(t, "name") == '"rb"', "a string in the variables pane:\n" + t)
+        check(variable(t, "n") == "1", "the loop counter:\n" + t)
+        s.keys("F2")
+        t = s.wait_for("the second stop", lambda t: running_line(t) == 7
+                       and variable(t, "total") == "3" and status(t, "state") == "paused")
+        s.keys("F9")  # clears the breakpoint on the shown line: the run goes on to its end
+        s.wait_for("the title's notice", lambda t: "breakpoint cleared on line 7" in t.split("\n")[0])
+        s.keys("F2")
+        t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        check("total 6" in t, "the output pane:\n" + t)
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
+        after = s.wait_text("total 6")
+        check("rb run debug.bas" not in after, "the view is still shown after the exit:\n" + after)
+    finally:
+        s.close()
+
+
+def test_speed(rb):
+    """--speed sets the pace, F4 and F5 halve and double it."""
+    s = Session(rb, "square.bas", args="--speed 4 --paused")
+    try:
+        s.wait_for("speed x4", lambda t: status(t, "speed") == "x4")
+        s.keys("F5")
+        s.wait_for("speed x8", lambda t: status(t, "speed") == "x8")
+        s.keys("F4", "F4", "F4", "F4")
+        s.wait_for("speed x1/2", lambda t: status(t, "speed") == "x1/2")
+        s.keys("F10")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_text(rb):
+    """Text the program draws shows as characters where its cells are readable."""
+    s = Session(rb, "text.bas")
+    try:
+        t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        arena = "\n".join(arena_lines(t))
+        check(re.search(r"H\s*E\s*L\s*L\s*O", arena) is not None,
+              "the drawn text is not shown as characters:\n" + t)
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+def test_dumb(rb):
+    """A terminal that cannot show the view: one line on stderr, exit 74, nothing drawn."""
+    s = Session(rb, "square.bas", env={"TERM": "dumb"})
+    try:
+        code = s.exit_code()
+        check(code == 74, f"exit status {code}")
+        err = s.stderr()
+        check(err.count("\n") == 1 and "dumb" in err and "without --tui" in err, "stderr: " + err)
+        check("rb run square.bas" not in s.screen(), "the view was drawn:\n" + s.screen())
+    finally:
+        s.close()
+
+
+
+def test_real(rb):
+    """With --real the status shows the link: the port, the commands sent, the last reply."""
+    tmp = tempfile.mkdtemp(prefix="rbtui-robot-")
+    link = os.path.join(tmp, "robot")
+    robot = subprocess.Popen([rb, "robot", "--pty", "--link", link], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL)
+    s = None
+    try:
+        robot.stdout.readline()  # the device: the emulator is ready
+        s = Session(rb, "square.bas", args=f"--real --port {link}")
+        t = s.wait_for("the link in the status", lambda t: status(t, "link") is not None
+                       and status(t, "sent") not in (None, "0 commands"))
+        check(link in status(t, "link"), "the port:\n" + t)
+        t = s.wait_for("a reply", lambda t: (status(t, "reply") or "-").startswith("cmd "))
+        s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        s.keys("Enter")
+        code = s.exit_code()
+        check(code == 0, f"exit status {code}: {s.stderr()}")
+    finally:
+        if s:
+            s.close()
+        robot.terminate()
+        robot.wait(10)
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+
+def test_pixels(rb):
+    """--cells pixels: the screen as a sixel image where the terminal shows them; elsewhere (tmux
+    built without sixel) the best character mode, and the title says why."""
+    s = Session(rb, "square.bas", args="--cells pixels", env={"LC_ALL": "C.UTF-8"})
+    try:
+        t = s.wait_for("the view", lambda t: "rb run square.bas" in t)
+        title = t.split("\n")[0]
+        check("view pixels" in title or "(no pixels: the terminal shows no sixel images)" in title,
+              "title: " + title)
+        s.wait_for("the end", lambda t: "finished" in t.split("\n")[0])
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
+
+def test_sixel(rb):
+    """--cells pixels on a terminal that reports sixel graphics: rb sends the screen as a sixel
+    image. The terminal here is a pseudo-terminal this test answers for (tmux is not needed):
+    it says it is a VT340-class terminal with sixels (CSI ? 63;4 c) and reads what rb draws."""
+    import fcntl
+    import pty
+    import select
+    import struct
+    import termios
+    pid, fd = pty.fork()
+    if pid == 0:
+        os.chdir(HERE)
+        env = dict(os.environ, TERM="xterm-256color", LC_ALL="C.UTF-8")
+        os.execve(rb, [rb, "run", "--tui", "--cells", "pixels", "square.bas"], env)
+    fcntl.ioctl(fd, termios.TIOCSWINSZ, struct.pack("HHHH", 30, 100, 600, 1000))
+    got = b""
+    answered = False
+    deadline = time.monotonic() + TIMEOUT
+    try:
+        while time.monotonic() < deadline:
+            ready, _, _ = select.select([fd], [], [], 0.2)
+            if not ready:
+                continue
+            try:
+                chunk = os.read(fd, 65536)
+            except OSError:
+                break
+            got += chunk
+            if not answered and b"\x1b[c" in got:
+                os.write(fd, b"\x1b[?63;4c")  # a terminal with sixel graphics
+                answered = True
+            if re.search(rb"\x1bPq?[0-9;]*q?\"1;1;\d+;\d+", got):
+                break
+        check(answered, "rb did not ask the terminal what it can do")
+        check(re.search(rb"\x1bP[0-9;]*q\"1;1;\d+;\d+", got) is not None,
+              f"no sixel image in rb's output ({len(got)} bytes)")
+        check(b"view pixels" in got, "the title does not say pixels")
+        os.write(fd, b"\x1b[21~")  # F10
+        end = time.monotonic() + TIMEOUT
+        while time.monotonic() < end:
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                check(os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0, f"exit status {status}")
+                return
+            try:
+                if select.select([fd], [], [], 0.2)[0]:
+                    os.read(fd, 65536)
+            except OSError:
+                pass
+        raise Failure("rb did not exit after F10")
+    finally:
+        try:
+            os.kill(pid, 9)
+            os.waitpid(pid, 0)
+        except OSError:
+            pass
+        os.close(fd)
 
 
 TESTS = {
@@ -290,6 +534,16 @@ TESTS = {
     "quit": test_quit,
     "resize": test_resize,
     "unicode": test_unicode,
+    "motion": test_motion,
+    "paused": test_paused,
+    "step": test_step,
+    "break": test_break,
+    "speed": test_speed,
+    "text": test_text,
+    "dumb": test_dumb,
+    "real": test_real,
+    "pixels": test_pixels,
+    "sixel": test_sixel,
 }
 
 

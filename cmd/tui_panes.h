@@ -1,0 +1,68 @@
+#pragma once
+// The text of the live view's source and variables panes: pure functions, tested without a
+// terminal; cmd/tui_host.cpp draws them.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/source.h"
+#include "machine/interpreter.h"
+
+namespace rb::cli {
+
+/// One line of a pane.
+struct PaneLine {
+  std::string text;
+  bool highlight = false;  ///< the line running now
+  bool marked = false;     ///< a breakpoint is on it
+};
+
+/// The lines of `file` around `line` (the statement about to run; 0: none yet) for a pane of
+/// `height` rows and `width` columns. Each is a marker column ('>' the running line, '*' a
+/// breakpoint), the line number and the text, tabs expanded, cut at `width`. The running line
+/// stays about a third of the way down. `hasBreakpoint(line)` tells which lines are marked.
+template <typename HasBreakpoint>
+std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int height, int width,
+                                  HasBreakpoint hasBreakpoint);
+
+/// The variables pane's lines, `width` columns each: "name  value", names padded to a column;
+/// strings in quotes, arrays as `name[3,4]` and their first elements; a variable without a value
+/// yet as "-". Locals of the running sub `sub` follow the globals under a header line.
+std::vector<std::string> variableLines(const std::vector<VariableView>& vars, std::string_view sub,
+                                       int width);
+
+/// A value as the variables pane shows it, at most `width` characters (0: no limit).
+std::string valueText(const Value& v, size_t width);
+
+// ---- the template's body
+
+/// One source line as a pane shows it.
+std::string paneLineText(std::string_view text, uint32_t number, int numberWidth, char marker,
+                         int width);
+
+template <typename HasBreakpoint>
+std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int height, int width,
+                                  HasBreakpoint hasBreakpoint) {
+  std::vector<PaneLine> out;
+  if (height <= 0 || width <= 0) return out;
+  uint32_t count = file.lineCount();
+  uint32_t rows = static_cast<uint32_t>(height);
+  uint32_t first = 1;
+  if (line > rows / 3) first = line - rows / 3;
+  if (count >= rows && first > count - rows + 1) first = count - rows + 1;
+  if (first < 1) first = 1;
+  int numberWidth = static_cast<int>(std::to_string(count).size());
+  for (uint32_t n = first; n < first + rows && n <= count; ++n) {
+    PaneLine l;
+    l.highlight = n == line;
+    l.marked = hasBreakpoint(n);
+    char marker = l.highlight ? '>' : l.marked ? '*' : ' ';
+    l.text = paneLineText(file.lineText(n), n, numberWidth, marker, width);
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
+}  // namespace rb::cli
