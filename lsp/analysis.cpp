@@ -71,6 +71,15 @@ std::vector<SourceLoc> includeOwners(const SourceSet& sources, const LoadOptions
 
 }  // namespace
 
+int Analysis::scopeAt(uint32_t line) const {
+  for (size_t i = 0; i < symbols.size(); ++i) {
+    const Symbol& s = symbols[i];
+    if (s.kind == Symbol::Kind::Sub && s.loc.file == 0 && s.loc.line <= line && line <= s.end.line)
+      return static_cast<int>(i);
+  }
+  return -1;
+}
+
 std::string Symbol::signature() const {
   if (kind == Kind::Label) return name + ":";
   std::string s = "sub " + name + "(";
@@ -134,15 +143,18 @@ std::unique_ptr<Analysis> analyze(const std::string& name, const std::string& te
   }
 
   auto noByRef = [](std::string_view, size_t) { return false; };
-  for (const ast::Stmt* s : p.stmts) {
+  for (size_t i = 0; i < p.stmts.size(); ++i) {
+    const ast::Stmt* s = p.stmts[i];
+    int scope = subOfStmt[i];
     ast::forEachName(*s, p.builtins, [&](std::string_view n, SourceLoc loc, ast::NameUse) {
-      a->variables[std::string(n)].push_back(loc);
+      a->variables[std::string(n)].push_back({loc, scope});
     }, noByRef);
     if (s->kind == ast::StmtKind::Sub) {
       for (const ast::Param& param : s->params)
-        if (!param.name.empty()) a->variables[std::string(param.name)].push_back(param.loc);
+        if (!param.name.empty()) a->variables[std::string(param.name)].push_back({param.loc, scope});
     }
   }
+  for (std::string_view n : ast::arrayNames(p.stmts)) a->arrays.insert(std::string(n));
   return a;
 }
 

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,19 @@ struct Analysis {
   std::unique_ptr<LoadedProgram> program;  ///< never null
   DiagnosticList diags;                    ///< sorted, as rb check reports them
   std::vector<Symbol> symbols;             ///< in program order, includes too
+  /// One use of a variable: where, and in which scope (the index in `symbols` of the sub whose
+  /// body it is in, -1 for the main program).
+  struct Use {
+    SourceLoc loc;
+    int scope = -1;
+  };
   /// Every variable name used (exact spelling: names are case-sensitive) and where.
-  std::map<std::string, std::vector<SourceLoc>> variables;
+  std::map<std::string, std::vector<Use>> variables;
+  /// The names used as arrays anywhere (arrays are global, language.md §5 Subs).
+  std::set<std::string> arrays;
+
+  /// The scope (as in Use) of a line of the document (file 0, 1-based line).
+  int scopeAt(uint32_t line) const;
   /// Canonical names (as the reader gives them) of every included file.
   std::vector<std::string> includes;
   /// For each source file index: the #include directive in the document (file 0) through which

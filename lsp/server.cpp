@@ -536,12 +536,18 @@ json Server::completion(const json& params) {
     if (statement == (kStatementWords.count(kw) > 0)) add(std::string(kw), kItemKeyword, "keyword", "");
   }
   addSymbols(Symbol::Kind::Sub);
-  for (const auto& [name, locs] : a.variables) {
-    // The name being typed is a "variable" of the text as it stands: leave it out.
-    bool onlyHere = std::all_of(locs.begin(), locs.end(), [&](const SourceLoc& l) {
-      return l.file == 0 && l.line == lineNo + 1 && l.col == b + 1;
-    });
-    if (!onlyHere) add(name, kItemVariable, "variable", "");
+  // Variables of the scope the cursor is in (a sub's locals in a sub, the main program's
+  // outside), and arrays, which are global.
+  int scope = a.scopeAt(lineNo + 1);
+  for (const auto& [name, uses] : a.variables) {
+    bool array = a.arrays.count(name) > 0;
+    bool inScope = false;
+    for (const Analysis::Use& u : uses) {
+      // The name being typed is a "variable" of the text as it stands: it does not count.
+      bool typing = u.loc.file == 0 && u.loc.line == lineNo + 1 && u.loc.col == b + 1;
+      if (!typing && (array || u.scope == scope)) inScope = true;
+    }
+    if (inScope) add(name, kItemVariable, array ? "array" : "variable", "");
   }
   return items;
 }

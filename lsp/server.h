@@ -38,14 +38,16 @@ class Server {
   ~Server();
 
   /// Serves messages from `in` until `exit` or the end of the input. Returns the process's exit
-  /// code: 0 after shutdown then exit, 1 otherwise (as LSP asks).
+  /// code: 0 after shutdown then exit, 1 otherwise (exit without shutdown, as LSP asks, and an
+  /// input that ends without exit).
   int run(std::istream& in);
 
   /// Handles one message body (a JSON text). Replies go to the output stream.
   void handle(const std::string& body);
 
   bool exitReceived() const { return exited_; }
-  int exitCode() const { return shutdown_ ? 0 : 1; }
+  /// 0 once `exit` came after `shutdown`, else 1.
+  int exitCode() const { return exited_ && shutdown_ ? 0 : 1; }
 
  private:
   struct Document {

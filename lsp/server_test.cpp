@@ -266,6 +266,22 @@ TEST_CASE("lsp: completion offers what fits where the cursor is", "[lsp]") {
   CHECK(s.at("textDocument/completion", kUri, 9, 9)["result"].empty());  // inside a string
 }
 
+TEST_CASE("lsp: completion offers the variables of the cursor's scope, and arrays", "[lsp]") {
+  Session s;
+  s.initialize();
+  s.open(kUri, "total = 1\ndim grid[3]\n\nsub Move(size)\n  here = size\n  \nendsub\n");
+  json items = s.at("textDocument/completion", kUri, 2, 0)["result"];
+  CHECK(hasLabel(items, "total"));
+  CHECK(hasLabel(items, "grid"));
+  CHECK_FALSE(hasLabel(items, "here"));
+  CHECK_FALSE(hasLabel(items, "size"));
+  items = s.at("textDocument/completion", kUri, 5, 2)["result"];
+  CHECK(hasLabel(items, "here"));
+  CHECK(hasLabel(items, "size"));
+  CHECK(hasLabel(items, "grid"));
+  CHECK_FALSE(hasLabel(items, "total"));  // a sub's variables are its own
+}
+
 TEST_CASE("lsp: signature help for built-ins and subs", "[lsp]") {
   Session s;
   s.initialize();

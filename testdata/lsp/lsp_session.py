@@ -120,10 +120,45 @@ def substitute(value, mapping):
     return json.loads(text)
 
 
+def bad_input(rb):
+    """Garbage, a request before initialize, a header without a length, a body that is not JSON
+    and a declared length far above the cap: every one gets an error reply (or is skipped), and
+    when the input closes without shutdown the server exits 1 instead of hanging."""
+    import random
+    rng = random.Random(11)
+    junk = bytes(rng.randrange(256) for _ in range(5000)).replace(b"\n", b" ")
+    data = (frame({"jsonrpc": "2.0", "id": 1, "method": "textDocument/hover", "params": {}}) +
+            b"X-Nothing: 1\r\n\r\n" +
+            b"Content-Length: 7\r\n\r\n{oops!}" +
+            frame({"jsonrpc": "2.0", "id": 2, "method": "initialize", "params": {"capabilities": {}}}) +
+            frame({"jsonrpc": "2.0", "id": 3, "method": "no/such/method", "params": {}}) +
+            b"Content-Length: 40000000\r\n\r\n" + b"x" * 40000000 +
+            frame({"jsonrpc": "2.0", "id": 4, "method": "shutdown"}) +
+            junk + b"\r\n\r\n")
+    proc = subprocess.run([rb, "lsp"], input=data, capture_output=True, timeout=60)
+    replies = []
+    out = proc.stdout
+    while out:
+        head, sep, rest = out.partition(b"\r\n\r\n")
+        check(sep and head.startswith(b"Content-Length: "), f"bad framing in the output: {out[:80]!r}")
+        n = int(head.split(b":")[1])
+        replies.append(json.loads(rest[:n]))
+        out = rest[n:]
+    codes = [(r.get("id"), r.get("error", {}).get("code")) for r in replies]
+    want = [(1, -32002), (None, -32700), (None, -32700), (2, None), (3, -32601), (None, -32600), (4, None)]
+    check(codes[:len(want)] == want, f"replies to bad input: {codes}")
+    check(proc.returncode == 1, f"exit status {proc.returncode} after the input ended without exit")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--rb", required=True)
+    ap.add_argument("--bad-input", action="store_true", help="play bad input instead of the session")
     args = ap.parse_args()
+    if args.bad_input:
+        bad_input(os.path.abspath(args.rb))
+        print("lsp bad input: OK")
+        return 0
     steps = [json.loads(l) for l in (HERE / "session.jsonl").read_text().splitlines() if l.strip()]
     with tempfile.TemporaryDirectory() as tmp:
         root = pathlib.Path(tmp)
