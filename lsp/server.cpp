@@ -187,7 +187,40 @@ int Server::run(std::istream& in) {
 
 // ---- messages
 
+namespace {
+
+/// The deepest nesting of arrays and objects in a JSON text (strings skipped). Copying and
+/// destroying a parsed value recurses, so a message nested a million deep must be refused
+/// before it is parsed.
+size_t nestingDepth(std::string_view text) {
+  size_t depth = 0, deepest = 0;
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+constexpr size_t kMaxNesting = 200;
+
+}  // namespace
+
 void Server::handle(const std::string& body) {
+  if (nestingDepth(body) > kMaxNesting) {
+    replyError(nullptr, kInvalidRequest,
+               "rb lsp: the message is nested more than " + std::to_string(kMaxNesting) + " levels deep");
+    return;
+  }
   json msg = json::parse(body, nullptr, false);
   if (msg.is_discarded()) {
     replyError(nullptr, kParseError, "rb lsp: the message is not valid JSON");

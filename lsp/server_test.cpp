@@ -138,6 +138,13 @@ TEST_CASE("lsp: bad messages get error replies and the server goes on", "[lsp]")
   replies = s.sendRaw("42");
   REQUIRE(replies.size() == 1);
   CHECK(replies[0]["error"]["code"] == -32600);
+  // Nested a million deep: refused before parsing (copying it would overflow the stack).
+  replies = s.sendRaw(R"({"jsonrpc":"2.0","id":9,"method":"x","params":)" + std::string(1000000, '[') +
+                      std::string(1000000, ']') + "}");
+  REQUIRE(replies.size() == 1);
+  CHECK(replies[0]["error"]["code"] == -32600);
+  // Brackets inside strings do not count.
+  CHECK(s.request("workspace/nothing", {{"text", std::string(1000, '[')}})["error"]["code"] == -32601);
   CHECK(s.request("workspace/symbolz")["error"]["code"] == -32601);
   CHECK(s.sendRaw(R"({"jsonrpc":"2.0","method":"$/unknownNotification","params":{}})").empty());
   // Parameters of the wrong shape: InvalidParams, not a crash.
