@@ -79,6 +79,65 @@ std::string builtinDoc(const Builtin& b) {
   return s;
 }
 
+/// The keywords, as language.md describes them: how each is written and what it does.
+struct KeywordHelp {
+  std::string_view word;
+  std::string_view usage;
+  std::string_view help;
+};
+constexpr KeywordHelp kKeywords[] = {
+    {"if", "if cond then statement [else statement]\nif cond\n  ...\n[elseif cond]\n[else]\nendif",
+     "runs statements when cond is not 0; a block `if` ends at `endif` (or `end if`)"},
+    {"then", "if cond then statement", "the statement a single-line `if` runs (at the end of a line: a block `if`)"},
+    {"else", "if cond then s1 else s2\nelse", "what runs when the `if` condition is 0"},
+    {"elseif", "elseif cond", "another condition of a block `if` (`else if` means the same)"},
+    {"endif", "endif", "ends a block `if` (also `end if`)"},
+    {"end", "end", "stops the program (`end if` and `end sub` close blocks)"},
+    {"for", "for v = start to limit [step s]\n  ...\nnext [v]",
+     "counts v from start to limit; limit and step are evaluated once"},
+    {"to", "for v = start to limit", "the limit of a `for` loop"},
+    {"step", "for v = start to limit step s", "what a `for` loop adds each pass (default 1; 0 is an error)"},
+    {"next", "next [v]", "ends a `for` loop (naming its variable, if given)"},
+    {"while", "while cond\n  ...\nwend", "repeats while cond is not 0, testing before each pass"},
+    {"wend", "wend", "ends a `while` loop"},
+    {"repeat", "repeat\n  ...\nuntil cond", "repeats until cond is not 0, testing after each pass"},
+    {"until", "until cond", "ends a `repeat` loop"},
+    {"break", "break", "leaves the innermost loop"},
+    {"continue", "continue", "goes to the innermost loop's next test"},
+    {"goto", "goto Label", "jumps to a label (labels are case-sensitive)"},
+    {"gosub", "gosub Label", "calls the code at a label; `return` comes back"},
+    {"return", "return [value]", "comes back from a `gosub` or a sub (a sub may return a value)"},
+    {"sub", "sub Name(a, &b)\n  ...\nendsub",
+     "a sub with local variables; `&` parameters are copied back to the caller"},
+    {"endsub", "endsub", "ends a sub (also `end sub`)"},
+    {"call", "call Name(args)", "calls a sub (`Name(args)` alone does too)"},
+    {"dim", "dim a[n], grid[rows, cols]", "makes arrays (elements 0 to n-1, all 0); arrays are global"},
+    {"data", "data name; v1, v2, ...", "appends values to the one-dimensional array name"},
+    {"print", "print item, item; item", "`,` joins items, `;` puts a tab; a trailing `,` or `;` keeps the line open"},
+    {"input", "input \"prompt\", var", "reads one line into var (a number if it is one, else a string)"},
+    {"and", "a and b", "logical and (also `&&`), short-circuit"},
+    {"or", "a or b", "logical or (also `||`), short-circuit"},
+    {"not", "not a", "logical not (also `!`); binds tight: `not a = b` is `(not a) = b`"},
+    {"mod", "a mod b", "remainder (also `%`)"},
+    {"rem", "rem text", "a comment to the end of the line (also `//` and `'`)"},
+};
+
+const KeywordHelp* keywordHelp(std::string_view word) {
+  std::string w = lower(word);
+  for (const KeywordHelp& k : kKeywords)
+    if (k.word == w) return &k;
+  return nullptr;
+}
+
+std::string keywordDoc(const KeywordHelp& k) {
+  std::string s = "```robotbasic\n";
+  s += k.usage;
+  s += "\n```\n";
+  s += k.help;
+  s += "\n\n*keyword*";
+  return s;
+}
+
 /// The parameter names of a signature with their byte offsets in `label` (which contains the
 /// signature at `offset`): "x, y [, heading]" -> x, y, heading.
 json parameterLabels(std::string_view sig, size_t offset) {
@@ -107,6 +166,10 @@ bool inStringOrComment(std::string_view before) {
     if (c == '"') inString = !inString;
     else if (!inString && (c == '\'' || (c == '/' && i + 1 < before.size() && before[i + 1] == '/')))
       return true;
+    else if (!inString && (c == 'r' || c == 'R') && (i == 0 || !isNameChar(before[i - 1])) &&
+             i + 3 <= before.size() && lower(before.substr(i, 3)) == "rem" &&
+             (i + 3 == before.size() ? false : !isNameChar(before[i + 3])))
+      return true;  // `rem` starts a comment anywhere
   }
   return inString;
 }
@@ -510,6 +573,9 @@ json Server::hover(const json& params) {
     }
   }
   if (text.empty()) {
+    if (const KeywordHelp* k = keywordHelp(word)) text = keywordDoc(*k);
+  }
+  if (text.empty()) {
     auto v = a.variables.find(word);
     if (v != a.variables.end()) text = "```robotbasic\n" + word + "\n```\nvariable (names are case-sensitive)";
   }
@@ -564,9 +630,11 @@ json Server::completion(const json& params) {
   static const std::set<std::string_view> kStatementWords = {
       "if", "else", "elseif", "endif", "end", "for", "next", "while", "wend", "repeat", "until",
       "break", "continue", "goto", "gosub", "return", "sub", "endsub", "call", "dim", "data",
-      "print", "input"};
+      "print", "input", "rem"};
   for (std::string_view kw : keywordSpellings()) {
-    if (statement == (kStatementWords.count(kw) > 0)) add(std::string(kw), kItemKeyword, "keyword", "");
+    if (statement != (kStatementWords.count(kw) > 0)) continue;
+    const KeywordHelp* k = keywordHelp(kw);
+    add(std::string(kw), kItemKeyword, "keyword", k ? keywordDoc(*k) : "");
   }
   addSymbols(Symbol::Kind::Sub);
   // Variables of the scope the cursor is in (a sub's locals in a sub, the main program's

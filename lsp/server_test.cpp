@@ -7,6 +7,7 @@
 #include <random>
 #include <sstream>
 
+#include "lang/token.h"
 #include "machine/builtins.h"
 #include "transport.h"
 
@@ -240,6 +241,24 @@ TEST_CASE("lsp: hover shows a built-in's usage and description, any case", "[lsp
   CHECK(s.at("textDocument/hover", kUri, 1, 0)["result"].is_null() == false);  // "x": a variable
   CHECK(s.at("textDocument/hover", kUri, 1, 11)["result"].is_null());          // a number
   CHECK(s.at("textDocument/hover", kUri, 99, 0)["result"].is_null());          // past the end
+  text = s.at("textDocument/hover", kUri, 5, 1)["result"]["contents"]["value"];  // "call"
+  CHECK(text.find("call Name(args)") != std::string::npos);
+  CHECK(text.find("*keyword*") != std::string::npos);
+}
+
+TEST_CASE("lsp: every keyword has hover help", "[lsp]") {
+  Session s;
+  s.initialize();
+  std::string text;
+  for (std::string_view kw : rb::keywordSpellings()) text += std::string(kw) + "\n";
+  s.open(kUri, text);
+  int line = 0;
+  for (std::string_view kw : rb::keywordSpellings()) {
+    INFO(kw);
+    json h = s.at("textDocument/hover", kUri, line++, 0)["result"];
+    REQUIRE(h.is_object());
+    CHECK(h["contents"]["value"].get<std::string>().find("*keyword*") != std::string::npos);
+  }
 }
 
 TEST_CASE("lsp: completion offers what fits where the cursor is", "[lsp]") {
@@ -271,6 +290,8 @@ TEST_CASE("lsp: completion offers what fits where the cursor is", "[lsp]") {
   CHECK(items.size() == 1);
 
   CHECK(s.at("textDocument/completion", kUri, 9, 9)["result"].empty());  // inside a string
+  s.open("file:///work/p/r.bas", "x = 1 REM rFo\n");
+  CHECK(s.at("textDocument/completion", "file:///work/p/r.bas", 0, 13)["result"].empty());  // a rem comment
 }
 
 TEST_CASE("lsp: completion offers the variables of the cursor's scope, and arrays", "[lsp]") {
