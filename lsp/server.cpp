@@ -388,7 +388,6 @@ void Server::notify(const std::string& method, json params) {
 // ---- lifecycle
 
 json Server::initialize(const json& params) {
-  initialized_ = true;
   const json caps = params.value("capabilities", json::object());
   if (caps.contains("general") && caps["general"].contains("positionEncodings")) {
     for (const json& e : caps["general"]["positionEncodings"])
@@ -407,6 +406,7 @@ json Server::initialize(const json& params) {
       {"documentSymbolProvider", true},
       {"codeLensProvider", {{"resolveProvider", false}}},
   };
+  initialized_ = true;  // only once the parameters were understood: a client may try again
   return {{"capabilities", capabilities}, {"serverInfo", {{"name", "rb"}, {"version", options_.version}}}};
 }
 
