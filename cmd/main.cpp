@@ -9,6 +9,7 @@
 #include "cli_errors.h"
 #include "exit_codes.h"
 #include "ports_command.h"
+#include "lsp_command.h"
 #include "render_command.h"
 #include "robot_command.h"
 #include "run_command.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   rb::cli::addPortsCommand(app, exitCode);
   rb::cli::addTestCommand(app, exitCode);
   rb::cli::addTestJobCommand(app, exitCode);
+  rb::cli::addLspCommand(app, exitCode);
   app.footer("Run 'rb COMMAND --help' (or 'rb help COMMAND') for the options of a command. "
              "Manual: man rb.");
   rb::cli::useRbFailureMessages(app);

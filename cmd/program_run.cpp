@@ -26,6 +26,7 @@ RunLimits runLimits(const RunOptions& opts) {
   RunLimits limits;
   limits.maxSteps = opts.maxSteps;
   limits.timeoutSeconds = opts.timeoutSeconds;
+  limits.maxMemoryBytes = static_cast<uint64_t>(opts.maxMemoryMiB) << 20;
   return limits;
 }
 

@@ -1,0 +1,10 @@
+#pragma once
+// `rb lsp`: the language server (lsp/) on standard input and output, for editors.
+
+#include <CLI/CLI.hpp>
+
+namespace rb::cli {
+
+void addLspCommand(CLI::App& app, int& exitCode);
+
+}  // namespace rb::cli
