@@ -6,6 +6,7 @@
 #include <iostream>
 #include <random>
 
+#include "diagnostic_output.h"
 #include "exit_codes.h"
 #include "files.h"
 #include "robot_port.h"
@@ -55,8 +56,17 @@ int loadForRun(const char* command, const RunOptions& opts, const CompileOptions
                  loaded.readError.c_str());
     return exitcode::kNoInput;
   }
-  printDiagnostics(stderr, loaded.program->sources, loaded.diags, true);
-  return loaded.compiled ? exitcode::kOk : exitcode::kRejected;
+  bool color = useColor(opts.color, stderr);
+  if (!loaded.compiled) {
+    DiagOutputOptions out;
+    out.color = color;
+    DiagnosticReport report(stderr, out);
+    report.add(loaded.program->sources, loaded.diags, true);
+    report.finish();
+    return exitcode::kRejected;
+  }
+  if (!opts.quiet) printWarningLines(command, opts.file, loaded.program->sources, loaded.diags, color);
+  return exitcode::kOk;
 }
 
 uint64_t runSeed(const RunOptions& opts) { return opts.seed ? *opts.seed : std::random_device{}(); }
@@ -128,7 +138,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   reportSeed(command, opts, run.seed, *run.machine);
   if (run.result.status == RunStatus::StepLimit && !run.stepLimitIsError) return exitcode::kOk;
   if (run.result.error) {
-    printDiagnostic(stderr, run.loaded.program->sources, *run.result.error);
+    printDiagnostic(stderr, run.loaded.program->sources, *run.result.error, useColor(opts.color, stderr));
     return exitcode::kRuntime;
   }
   if (run.result.status == RunStatus::Stopped) return exitcode::kRuntime;

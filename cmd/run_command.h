@@ -33,6 +33,9 @@ struct RunOptions {
   // best the terminal can show).
   bool tui = false;
   std::string cells;
+  // Diagnostics: --color auto|always|never; --quiet leaves out the load warnings.
+  std::string color = "auto";
+  bool quiet = false;
 };
 
 /// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.
