@@ -77,6 +77,18 @@ const char* sarifLevel(Severity s) {
   return "error";
 }
 
+/// A SARIF artifact URI: a relative path as it is (relative to where rb ran, as code scanning
+/// expects), an absolute one as a file: URI, spaces and % escaped.
+std::string sarifUri(const std::string& path) {
+  std::string out = !path.empty() && path[0] == '/' ? "file://" : "";
+  for (char c : path) {
+    if (c == ' ') out += "%20";
+    else if (c == '%') out += "%25";
+    else out += c;
+  }
+  return out;
+}
+
 /// GitHub workflow commands: % \r \n escaped in the message, also , and : in properties.
 std::string githubEscape(const std::string& s, bool property) {
   std::string out;
@@ -249,7 +261,7 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
       result["level"] = sarifLevel(d.severity);
       result["message"] = {{"text", d.message}};
       json physical;
-      physical["artifactLocation"] = {{"uri", fileName}};
+      physical["artifactLocation"] = {{"uri", sarifUri(fileName)}};
       if (d.loc.valid()) {
         auto [first, last] = diagnosticColumns(*sources, d);
         physical["region"] = {{"startLine", d.loc.line}, {"startColumn", first},
@@ -266,7 +278,7 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
         related.push_back(json{{"id", id++},
                                {"message", {{"text", n.message}}},
                                {"physicalLocation",
-                                {{"artifactLocation", {{"uri", fileOf(*sources, n.loc)}}},
+                                {{"artifactLocation", {{"uri", sarifUri(fileOf(*sources, n.loc))}}},
                                  {"region", {{"startLine", n.loc.line}, {"startColumn", n.loc.col}}}}}});
       }
       if (!related.empty()) result["relatedLocations"] = related;
@@ -276,7 +288,7 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
           fixes.push_back(json{
               {"description", {{"text", "replace with '" + f.replacement + "'"}}},
               {"artifactChanges",
-               json::array({json{{"artifactLocation", {{"uri", fileOf(*sources, f.start)}}},
+               json::array({json{{"artifactLocation", {{"uri", sarifUri(fileOf(*sources, f.start))}}},
                                  {"replacements",
                                   json::array({json{{"deletedRegion",
                                                      {{"startLine", f.start.line}, {"startColumn", f.start.col},
