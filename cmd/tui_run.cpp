@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "curses_screen.h"
+#include "diagnostic_output.h"
 #include "exit_codes.h"
 #include "headless_run.h"
 #include "machine/interpreter.h"
@@ -82,8 +83,8 @@ int runTui(const RunOptions& opts) {
     quit = result.status == RunStatus::Stopped;  // the user quit: the host stopped the run
     std::string error;
     if (result.error) {
-      error = formatDiagnostic(loaded.program->sources, *result.error);
-      error = error.substr(0, error.find('\n'));
+      error = formatDiagnostic(loaded.program->sources, *result.error, DiagnosticStyle{false, true});
+      error = error.substr(0, error.find('\n'));  // the heading line, without the include chain
     }
     host.showEnd(result, error);
   } catch (...) {
@@ -95,7 +96,7 @@ int runTui(const RunOptions& opts) {
   reportSeed(kCommand, opts, seed, machine);
   if (quit) return exitcode::kOk;  // the user ended the program on purpose
   if (result.error) {
-    printDiagnostic(stderr, loaded.program->sources, *result.error);
+    printDiagnostic(stderr, loaded.program->sources, *result.error, useColor(opts.color, stderr));
     return exitcode::kRuntime;
   }
   return exitcode::kOk;
