@@ -42,3 +42,13 @@ inputs/crash_wall.bas:5:1: error: robot crashed into an obstacle: colour Black a
       | ^~~~~~~~
 [exit 70]
 
+$ rb run --color=never inputs/include_runtime.bas
+In file included from inputs/include_runtime.bas:2:
+inputs/lib_runtime.bas:3:12: error: variable 'd' is used before it is given a value [rb-runtime-error]
+    3 |   return n / d
+      |            ^
+inputs/include_runtime.bas:3:7: note: in sub 'Half' called from line 3
+    3 | print Half(4)
+      |       ^~~~
+[exit 70]
+
