@@ -7,6 +7,7 @@
 #include "machine/builtins.h"
 #include "lang/checker.h"
 #include "lang/code_dump.h"
+#include "diagnostic_output.h"
 #include "exit_codes.h"
 #include "files.h"
 #include "program_loader.h"
@@ -18,6 +19,8 @@ namespace {
 struct CheckOptions {
   std::vector<std::string> files;
   std::string format = "text";
+  std::string color = "auto";
+  size_t maxErrors = 20;
   bool werror = false;
   bool listBuiltins = false;
   bool dumpCode = false;  ///< also print each program's compiled code
@@ -34,16 +37,12 @@ const char* kindName(BuiltinKind k) {
 }
 
 void listBuiltins(bool json) {
-  if (json) std::printf("[\n");
-  bool first = true;
+  nlohmann::json rows = nlohmann::json::array();
   for (const Builtin& b : standardBuiltins().rows()) {
-    std::string usage = std::string(b.name);
-    if (b.kind == BuiltinKind::Function) usage += "(" + std::string(b.signature) + ")";
-    else if (b.kind == BuiltinKind::Command && !b.signature.empty()) usage += " " + std::string(b.signature);
+    std::string usage = b.usage();
     if (json) {
-      std::printf("%s  {\"name\":\"%s\",\"kind\":\"%s\",\"group\":\"%s\",\"usage\":\"%s\",\"help\":\"%s\"}",
-                  first ? "" : ",\n", jsonEscape(b.name).c_str(), kindName(b.kind),
-                  jsonEscape(b.group).c_str(), jsonEscape(usage).c_str(), jsonEscape(b.help).c_str());
+      rows.push_back({{"name", b.name}, {"kind", kindName(b.kind)}, {"group", b.group},
+                      {"usage", usage}, {"help", b.help}});
     } else if (b.kind == BuiltinKind::Constant) {
       std::printf("%-9s %-9s %-40s = %lld\n", std::string(b.group).c_str(), kindName(b.kind),
                   usage.c_str(), static_cast<long long>(b.constant));
@@ -51,23 +50,22 @@ void listBuiltins(bool json) {
       std::printf("%-9s %-9s %-40s %s\n", std::string(b.group).c_str(), kindName(b.kind),
                   usage.c_str(), std::string(b.help).c_str());
     }
-    first = false;
   }
-  if (json) std::printf("\n]\n");
+  if (json) std::printf("%s\n", rows.dump(2).c_str());
 }
 
 int executeCheck(const CheckOptions& opts) {
-  bool json = opts.format == "json";
+  DiagFormat format = parseDiagFormat(opts.format);
   if (opts.listBuiltins) {
-    listBuiltins(json);
+    listBuiltins(format == DiagFormat::Json);
     return exitcode::kOk;
   }
   if (opts.files.empty()) {
     std::fprintf(stderr, "rb check: no files given (see rb check --help)\n");
     return exitcode::kUsage;
   }
-  if (opts.dumpCode && json) {
-    std::fprintf(stderr, "rb check: --dump-code prints text; leave out --format json\n");
+  if (opts.dumpCode && format != DiagFormat::Text) {
+    std::fprintf(stderr, "rb check: --dump-code prints text; leave out --format %s\n", opts.format.c_str());
     return exitcode::kUsage;
   }
   std::vector<std::string> files = expandProgramPaths(opts.files);
@@ -75,10 +73,12 @@ int executeCheck(const CheckOptions& opts) {
     std::fprintf(stderr, "rb check: error: no .bas files in %s\n", opts.files.front().c_str());
     return exitcode::kNoInput;
   }
-  size_t errors = 0, warnings = 0;
-  bool missing = false;
-  bool firstJson = true;
-  if (json) std::printf("[");
+  DiagOutputOptions out;
+  out.format = format;
+  out.color = format == DiagFormat::Text && useColor(opts.color, stdout);
+  out.maxErrors = opts.maxErrors;
+  DiagnosticReport report(stdout, out);
+  size_t unreadable = 0;
   for (const std::string& file : files) {
     LoadedFile loaded = loadFile(file, CompileOptions{}, true);
     if (opts.target == "rb9" && loaded.program) {
@@ -86,37 +86,20 @@ int executeCheck(const CheckOptions& opts) {
       loaded.diags.sort();
     }
     if (loaded.exitCode == exitcode::kNoInput) {
-      missing = true;
-      ++errors;
-      if (json) {
-        std::printf("%s\n  {\"file\":\"%s\",\"line\":0,\"column\":0,\"severity\":\"error\",\"message\":\"%s\"}",
-                    firstJson ? "" : ",", jsonEscape(file).c_str(), jsonEscape(loaded.readError).c_str());
-        firstJson = false;
-      } else {
-        std::printf("%s: error: cannot read '%s': %s\n", file.c_str(), file.c_str(),
-                    loaded.readError.c_str());
-      }
+      ++unreadable;
+      report.addUnreadable(file, loaded.readError);
       continue;
     }
-    errors += loaded.diags.errorCount();
-    warnings += loaded.diags.warningCount();
-    if (json) {
-      for (const Diagnostic& d : loaded.diags.all()) {
-        std::printf("%s\n  %s", firstJson ? "" : ",", formatDiagnosticJson(loaded.program->sources, d).c_str());
-        firstJson = false;
-      }
-    } else {
-      printDiagnostics(stdout, loaded.program->sources, loaded.diags, false);
-    }
+    report.add(loaded.program->sources, loaded.diags);
     if (opts.dumpCode && loaded.compiled) {
       std::string code = dumpCode(*loaded.compiled, loaded.program->sources);
       std::fwrite(code.data(), 1, code.size(), stdout);
     }
   }
-  if (json) std::printf("%s]\n", firstJson ? "" : "\n");
+  report.finish();
   std::fflush(stdout);
-  if (missing && errors == 1) return exitcode::kNoInput;
-  if (errors > 0 || (opts.werror && warnings > 0)) return exitcode::kRejected;
+  if (unreadable && report.errors() == 1) return exitcode::kNoInput;
+  if (report.errors() > 0 || (opts.werror && report.warnings() > 0)) return exitcode::kRejected;
   return exitcode::kOk;
 }
 
@@ -127,8 +110,15 @@ void addCheckCommand(CLI::App& app, int& exitCode) {
   CLI::App* check = app.add_subcommand(
       "check", "Find errors in programs without running them (compiler-style diagnostics)");
   check->add_option("files", opts->files, "Program files, or folders whose *.bas files (and below) are checked");
-  check->add_option("--format", opts->format, "Output format: text (file:line:col: ...) or json")
-      ->check(CLI::IsMember({"text", "json"}));
+  check->add_option("--format", opts->format,
+                    "Output format: text (gcc-style, for people), json (gcc's JSON shape), sarif "
+                    "(SARIF 2.1.0, for code scanning) or github (GitHub Actions annotations)")
+      ->check(CLI::IsMember({"text", "json", "sarif", "github"}));
+  check->add_option("--color", opts->color,
+                    "Colour the text: auto (on a terminal, unless NO_COLOR is set), always or never")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  check->add_option("--max-errors", opts->maxErrors,
+                    "Stop printing after this many errors (text; 0: no limit; default 20)");
   check->add_flag("--werror", opts->werror, "Treat warnings as errors (exit 65 when there are any)");
   check->add_option("--target", opts->target,
                     "Also warn about what this robot cannot do: rb9 (forward moves above 250, "

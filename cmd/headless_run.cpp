@@ -6,6 +6,7 @@
 #include <cstring>
 #include <iostream>
 
+#include "diagnostic_output.h"
 #include "exit_codes.h"
 #include "files.h"
 #include "robot_port.h"

@@ -30,9 +30,25 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
   return out;
 }
 
-void printDiagnostic(std::FILE* out, const SourceSet& sources, const Diagnostic& d) {
-  std::string text = formatDiagnostic(sources, d);
+void printDiagnostic(std::FILE* out, const SourceSet& sources, const Diagnostic& d, bool color) {
+  std::string text = formatDiagnostic(sources, d, DiagnosticStyle{color});
   std::fwrite(text.data(), 1, text.size(), out);
+}
+
+void printWarningLines(const char* command, const std::string& file, const SourceSet& sources,
+                       const DiagnosticList& diags, bool color) {
+  constexpr size_t kShown = 5;
+  size_t shown = 0;
+  for (const Diagnostic& d : diags.all()) {
+    if (d.severity != Severity::Warning) continue;
+    if (shown++ == kShown) break;
+    std::string line = formatDiagnostic(sources, d, DiagnosticStyle{color, true});
+    std::fwrite(line.data(), 1, line.size(), stderr);
+  }
+  size_t total = diags.warningCount();
+  if (total > kShown)
+    std::fprintf(stderr, "%s: %zu more warnings (rb check %s shows them all; --quiet hides them)\n",
+                 command, total - kShown, file.c_str());
 }
 
 void printDiagnostics(std::FILE* out, const SourceSet& sources, const DiagnosticList& diags,

@@ -29,6 +29,11 @@ void printDiagnostics(std::FILE* out, const SourceSet& sources, const Diagnostic
                       bool errorsOnly);
 
 /// Prints one diagnostic (used for runtime errors).
-void printDiagnostic(std::FILE* out, const SourceSet& sources, const Diagnostic& d);
+void printDiagnostic(std::FILE* out, const SourceSet& sources, const Diagnostic& d, bool color = false);
+
+/// Before a run: the warnings rb check would give, one line each (file:line:col: warning:
+/// message), at most 5; beyond that a count and where to see them all.
+void printWarningLines(const char* command, const std::string& file, const SourceSet& sources,
+                       const DiagnosticList& diags, bool color);
 
 }  // namespace rb::cli

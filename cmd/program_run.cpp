@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <random>
 
+#include "diagnostic_output.h"
 #include "exit_codes.h"
 #include "robot_port.h"
 
@@ -16,8 +17,17 @@ int loadForRun(const char* command, const RunOptions& opts, const CompileOptions
                  loaded.readError.c_str());
     return exitcode::kNoInput;
   }
-  printDiagnostics(stderr, loaded.program->sources, loaded.diags, true);
-  return loaded.compiled ? exitcode::kOk : exitcode::kRejected;
+  bool color = useColor(opts.color, stderr);
+  if (!loaded.compiled) {
+    DiagOutputOptions out;
+    out.color = color;
+    DiagnosticReport report(stderr, out);
+    report.add(loaded.program->sources, loaded.diags, true);
+    report.finish();
+    return exitcode::kRejected;
+  }
+  if (!opts.quiet) printWarningLines(command, opts.file, loaded.program->sources, loaded.diags, color);
+  return exitcode::kOk;
 }
 
 uint64_t runSeed(const RunOptions& opts) { return opts.seed ? *opts.seed : std::random_device{}(); }
@@ -79,7 +89,7 @@ int ProgramRun::conclude(const char* command, const RunOptions& opts, int stoppe
   if (result.status == RunStatus::Stopped) return stoppedCode;
   if (result.status == RunStatus::StepLimit && !stepLimitIsError) return exitcode::kOk;
   if (result.error) {
-    printDiagnostic(stderr, loaded.program->sources, *result.error);
+    printDiagnostic(stderr, loaded.program->sources, *result.error, useColor(opts.color, stderr));
     return exitcode::kRuntime;
   }
   return exitcode::kOk;

@@ -57,6 +57,10 @@ const CLI::Validator kNotEmpty(
 }  // namespace
 
 void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
+  app.add_option("--color", opts.color,
+                 "Colour the diagnostics: auto (on a terminal, unless NO_COLOR is set), always or never")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_flag("--quiet", opts.quiet, "Leave out the warnings rb check would give (errors still show)");
   app.add_option("--seed", opts.seed,
                  "Seed for random numbers and rSlip (default: a random seed, reported on stderr "
                  "when the program uses it)");

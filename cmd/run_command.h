@@ -38,6 +38,9 @@ struct RunOptions {
   double speed = 1;
   bool paused = false;
   std::vector<std::string> breaks;
+  // Diagnostics: --color auto|always|never; --quiet leaves out the load warnings.
+  std::string color = "auto";
+  bool quiet = false;
 };
 
 /// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "curses_screen.h"
+#include "diagnostic_output.h"
 #include "exit_codes.h"
 #include "program_run.h"
 #include "robot_port.h"
@@ -114,8 +115,8 @@ int runTui(const RunOptions& opts) {
     run.run(opts);
     std::string error;
     if (run.result.error) {
-      error = formatDiagnostic(sources, *run.result.error);
-      error = error.substr(0, error.find('\n'));
+      error = formatDiagnostic(sources, *run.result.error, DiagnosticStyle{false, true});
+      error = error.substr(0, error.find('\n'));  // the heading line, without the include chain
     }
     view.showEnd(run.result, error);
   } catch (...) {

@@ -61,7 +61,6 @@ size_t sink = 0;  // keeps the formatted text observable
 void formatAll(const rb::SourceSet& sources, rb::DiagnosticList& diags) {
   for (const rb::Diagnostic& d : diags.all()) {
     sink += rb::formatDiagnostic(sources, d).size();
-    sink += rb::formatDiagnosticJson(sources, d).size();
   }
   diags.sort();
   for (const rb::Diagnostic& d : diags.all()) sink += rb::formatDiagnostic(sources, d).size();

@@ -1,26 +1,29 @@
 #include "base/diagnostic.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
 
 namespace rb {
 
-void DiagnosticList::error(SourceLoc loc, std::string message) {
-  add({Severity::Error, loc, std::move(message)});
+Diagnostic& DiagnosticList::error(SourceLoc loc, std::string message, std::string code) {
+  return add({Severity::Error, loc, std::move(message), std::move(code)});
 }
-void DiagnosticList::warning(SourceLoc loc, std::string message) {
-  add({Severity::Warning, loc, std::move(message)});
+Diagnostic& DiagnosticList::warning(SourceLoc loc, std::string message, std::string code) {
+  return add({Severity::Warning, loc, std::move(message), std::move(code)});
 }
-void DiagnosticList::note(SourceLoc loc, std::string message) {
-  add({Severity::Note, loc, std::move(message)});
+Diagnostic& DiagnosticList::note(SourceLoc loc, std::string message) {
+  return add({Severity::Note, loc, std::move(message) });
 }
 
-void DiagnosticList::add(Diagnostic d) {
+Diagnostic& DiagnosticList::add(Diagnostic d) {
   if (d.severity == Severity::Error) {
     ++errorCount_;
     errorLines_.insert((uint64_t(d.loc.file) << 32) | d.loc.line);
   }
   if (d.severity == Severity::Warning) ++warningCount_;
   items_.push_back(std::move(d));
+  return items_.back();
 }
 
 void DiagnosticList::sort() {
@@ -54,59 +57,165 @@ const char* severityName(Severity s) {
   return "error";
 }
 
-std::string formatDiagnostic(const SourceSet& sources, const Diagnostic& d) {
-  std::string out;
-  bool located = d.loc.valid() && d.loc.file < sources.size();
-  if (located) {
-    const SourceFile& f = sources.file(d.loc.file);
-    out += f.name() + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.col) + ": ";
+namespace {
+
+bool isWordChar(unsigned char c) { return std::isalnum(c) || c == '_' || c == '$' || c >= 0x80; }
+
+/// The last column of the token that starts at `col` (1-based) in `line`.
+uint32_t wordEnd(std::string_view line, uint32_t col) {
+  if (col == 0 || col > line.size()) return col;
+  size_t i = col - 1;
+  unsigned char c = static_cast<unsigned char>(line[i]);
+  if (c == '"') {
+    size_t close = line.find('"', i + 1);
+    return static_cast<uint32_t>(close == std::string_view::npos ? line.size() : close + 1);
   }
-  out += severityName(d.severity);
-  out += ": ";
-  out += d.message;
-  out += '\n';
-  if (located) {
-    std::string_view line = sources.file(d.loc.file).lineText(d.loc.line);
-    out += ' ';
-    out += line;
-    out += '\n';
-    // The caret sits under the column; tabs in the line are kept so terminals align it.
-    out += ' ';
-    for (uint32_t i = 1; i < d.loc.col && i - 1 < line.size(); ++i)
-      out += line[i - 1] == '\t' ? '\t' : ' ';
-    out += "^\n";
+  if (std::isdigit(c) || (c == '.' && i + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[i + 1])))) {
+    size_t j = i;
+    while (j < line.size() && (std::isalnum(static_cast<unsigned char>(line[j])) || line[j] == '.')) ++j;
+    return static_cast<uint32_t>(j);
+  }
+  if (isWordChar(c)) {
+    size_t j = i;
+    while (j < line.size() && isWordChar(static_cast<unsigned char>(line[j]))) ++j;
+    return static_cast<uint32_t>(j);
+  }
+  return col;
+}
+
+const char* severityColor(Severity s) {
+  switch (s) {
+    case Severity::Error: return "\033[1;31m";
+    case Severity::Warning: return "\033[1;35m";
+    case Severity::Note: return "\033[1;36m";
+  }
+  return "";
+}
+
+struct Painter {
+  bool on;
+  std::string paint(std::string_view text, const char* color) const {
+    std::string out;
+    if (on) out += color;
+    out += text;
+    if (on) out += "\033[m";
+    return out;
+  }
+};
+
+/// Spaces (or the tab at the same place, so terminals line them up) under line[0, col-1); a
+/// UTF-8 character takes one column.
+std::string padTo(std::string_view line, uint32_t col) {
+  std::string out;
+  for (uint32_t i = 1; i < col; ++i) {
+    if (i - 1 >= line.size()) {
+      out += ' ';
+      continue;
+    }
+    unsigned char c = static_cast<unsigned char>(line[i - 1]);
+    if ((c & 0xC0) == 0x80) continue;  // a UTF-8 continuation byte
+    out += c == '\t' ? '\t' : ' ';
   }
   return out;
 }
 
-std::string jsonEscape(std::string_view s) {
-  std::string out;
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (c < 0x20) {
-          static const char* hex = "0123456789abcdef";
-          out += "\\u00";
-          out += hex[c >> 4];
-          out += hex[c & 15];
-        } else {
-          out += static_cast<char>(c);
-        }
+void formatOne(const SourceSet& sources, const Diagnostic& d, const Painter& p, bool brief, std::string& out) {
+  // A note without a line (a built-in's usage) names no file either.
+  bool named = d.loc.file < sources.size() && (d.loc.valid() || d.severity != Severity::Note);
+  bool located = named && d.loc.valid();
+  if (named && d.severity != Severity::Note && !brief) {
+    // The chain of #include lines that brought the file in, outermost last (as gcc prints it).
+    SourceLoc from = sources.file(d.loc.file).includedFrom();
+    bool first = true;
+    for (int guard = 0; from.valid() && from.file < sources.size() && guard < 64; ++guard) {
+      out += first ? "In file included from " : "                 from ";
+      out += sources.file(from.file).name();
+      out += ':';
+      out += std::to_string(from.line);
+      first = false;
+      from = sources.file(from.file).includedFrom();
+      out += from.valid() ? ",\n" : ":\n";
     }
   }
-  return out;
+  if (named) {
+    std::string where = sources.file(d.loc.file).name();
+    if (located) {
+      where += ':';
+      where += std::to_string(d.loc.line);
+      where += ':';
+      where += std::to_string(d.loc.col);
+    }
+    where += ':';
+    out += p.paint(where, "\033[1m");
+    out += ' ';
+  }
+  std::string label = severityName(d.severity);
+  label += ':';
+  out += p.paint(label, severityColor(d.severity));
+  out += ' ';
+  out += d.message;
+  if (!d.code.empty()) {
+    out += " [";
+    out += p.paint(d.code, severityColor(d.severity));
+    out += ']';
+  }
+  out += '\n';
+  if (brief) return;
+  if (located) {
+    std::string_view line = sources.file(d.loc.file).lineText(d.loc.line);
+    std::string number = std::to_string(d.loc.line);
+    size_t width = std::max<size_t>(5, number.size() + 1);
+    std::string gutter(width - number.size(), ' ');
+    std::string blank(width, ' ');
+    out += gutter;
+    out += number;
+    out += " | ";
+    out += line;
+    out += '\n';
+    auto [first, last] = diagnosticColumns(sources, d);
+    std::string underline = "^";
+    if (last > first) {
+      // One mark per character, not per byte.
+      for (uint32_t i = first + 1; i <= last && i - 1 < line.size(); ++i)
+        if ((static_cast<unsigned char>(line[i - 1]) & 0xC0) != 0x80) underline += '~';
+    }
+    out += blank;
+    out += " | ";
+    out += padTo(line, first);
+    out += p.paint(underline, "\033[1;32m");
+    out += '\n';
+    for (const FixIt& f : d.fixits) {
+      if (f.start.file != d.loc.file || f.start.line != d.loc.line || f.replacement.empty()) continue;
+      out += blank;
+      out += " | ";
+      out += padTo(line, f.start.col);
+      out += p.paint(f.replacement, "\033[1;32m");
+      out += '\n';
+    }
+  }
+  for (const Diagnostic& n : d.notes) formatOne(sources, n, p, false, out);
 }
 
-std::string formatDiagnosticJson(const SourceSet& sources, const Diagnostic& d) {
-  std::string file = d.loc.file < sources.size() ? sources.file(d.loc.file).name() : "";
-  return "{\"file\":\"" + jsonEscape(file) + "\",\"line\":" + std::to_string(d.loc.line) +
-         ",\"column\":" + std::to_string(d.loc.col) + ",\"severity\":\"" +
-         severityName(d.severity) + "\",\"message\":\"" + jsonEscape(d.message) + "\"}";
+}  // namespace
+
+std::pair<uint32_t, uint32_t> diagnosticColumns(const SourceSet& sources, const Diagnostic& d) {
+  uint32_t first = d.loc.col == 0 ? 1 : d.loc.col;
+  if (!d.loc.valid() || d.loc.file >= sources.size()) return {first, first};
+  std::string_view line = sources.file(d.loc.file).lineText(d.loc.line);
+  uint32_t last = first;
+  if (d.end.valid() && d.end.file == d.loc.file) {
+    if (d.end.line > d.loc.line) last = static_cast<uint32_t>(std::max<size_t>(line.size(), first));
+    else if (d.end.line == d.loc.line && d.end.col >= first) last = d.end.col;
+  } else {
+    last = std::max(first, wordEnd(line, first));
+  }
+  return {first, last};
+}
+
+std::string formatDiagnostic(const SourceSet& sources, const Diagnostic& d, const DiagnosticStyle& style) {
+  std::string out;
+  formatOne(sources, d, Painter{style.color}, style.brief, out);
+  return out;
 }
 
 }  // namespace rb

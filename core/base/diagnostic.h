@@ -1,10 +1,14 @@
 #pragma once
-// The one diagnostic type and its formatter. Load-time errors, warnings from `rb check` and
+// The one diagnostic type and its text formatter. Load-time errors, warnings from `rb check` and
 // runtime errors are all Diagnostics, printed gcc-style:
-//   file:line:col: error: message
-//    source line
-//        ^
+//   file:line:col: error: message [rb-rule-code]
+//       3 | rForwrd 120
+//         | ^~~~~~~
+//         | rForward
+// (the machine formats, JSON, SARIF and GitHub annotations, are written by cmd/ from the same
+// Diagnostics).
 
+#include <cstdint>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -15,19 +19,40 @@ namespace rb {
 
 enum class Severity { Error, Warning, Note };
 
+/// A suggested edit: replace the text from `start` up to (not including) `end` on one line by
+/// `replacement` (start == end: insert).
+struct FixIt {
+  SourceLoc start;
+  SourceLoc end;
+  std::string replacement;
+};
+
 struct Diagnostic {
+  Diagnostic() = default;
+  Diagnostic(Severity severity_, SourceLoc loc_, std::string message_, std::string code_ = {},
+             SourceLoc end_ = {})
+      : severity(severity_), loc(loc_), message(std::move(message_)), code(std::move(code_)), end(end_) {}
+
   Severity severity = Severity::Error;
-  SourceLoc loc;
+  SourceLoc loc;            ///< where the caret goes: the start of the range
   std::string message;
+  std::string code;         ///< the rule ("rb-undefined-label"; docs/diagnostics.md lists them)
+  SourceLoc end;            ///< the range's last character (inclusive); invalid: the word at loc
+  std::vector<FixIt> fixits;
+  /// Notes that belong to this diagnostic (runtime errors: "called from here"). Load-time
+  /// notes are separate entries of a DiagnosticList, right after their diagnostic.
+  std::vector<Diagnostic> notes;
 };
 
 /// A list of diagnostics that remembers whether any of them is an error.
 class DiagnosticList {
  public:
-  void error(SourceLoc loc, std::string message);
-  void warning(SourceLoc loc, std::string message);
-  void note(SourceLoc loc, std::string message);
-  void add(Diagnostic d);
+  /// Each adds a diagnostic and returns it (valid until the next add), to set its range or
+  /// fix-its.
+  Diagnostic& error(SourceLoc loc, std::string message, std::string code = {});
+  Diagnostic& warning(SourceLoc loc, std::string message, std::string code = {});
+  Diagnostic& note(SourceLoc loc, std::string message);
+  Diagnostic& add(Diagnostic d);
 
   bool hasErrors() const { return errorCount_ > 0; }
   /// True when an error was already reported on that line (so a parser can stay quiet about
@@ -50,13 +75,19 @@ class DiagnosticList {
 
 const char* severityName(Severity s);
 
-/// "file:line:col: error: message\n source line\n     ^\n" (no source part when loc is invalid).
-std::string formatDiagnostic(const SourceSet& sources, const Diagnostic& d);
+/// The columns a diagnostic underlines on its line: [first, last], 1-based. With `end` unset,
+/// the word at loc (a name, a number, a string literal) or one character.
+std::pair<uint32_t, uint32_t> diagnosticColumns(const SourceSet& sources, const Diagnostic& d);
 
-/// One JSON object on one line: {"file":..,"line":..,"column":..,"severity":..,"message":..}.
-std::string formatDiagnosticJson(const SourceSet& sources, const Diagnostic& d);
+struct DiagnosticStyle {
+  bool color = false;  ///< ANSI colours as gcc uses them (bold location, red error, ...)
+  bool brief = false;  ///< the heading line only: no include chain, source quote or notes
+};
 
-/// Escapes a string for a JSON string literal (without the quotes).
-std::string jsonEscape(std::string_view s);
+/// The text form: "[In file included from F:L:\n]file:line:col: error: message [code]\n", then
+/// the line in a gutter with the range underlined and any fix-it, then the attached notes. No
+/// source part when loc has no line; no location when it has no file either.
+std::string formatDiagnostic(const SourceSet& sources, const Diagnostic& d,
+                             const DiagnosticStyle& style = {});
 
 }  // namespace rb

@@ -10,7 +10,13 @@ namespace rb {
 
 class RuntimeError : public std::runtime_error {
  public:
-  explicit RuntimeError(const std::string& message) : std::runtime_error(message) {}
+  explicit RuntimeError(const std::string& message, const char* code = "rb-runtime-error")
+      : std::runtime_error(message), code_(code) {}
+  /// The rule code of the diagnostic it becomes (docs/diagnostics.md).
+  const char* code() const { return code_; }
+
+ private:
+  const char* code_;
 };
 
 /// Thrown from inside a long call (waiting for input, a long search) when the run's --timeout

@@ -28,6 +28,7 @@ struct Expr {
   ExprKind kind = ExprKind::Int;
   Tok op = Tok::Eof;
   SourceLoc loc;
+  SourceLoc end;  ///< the last character of the expression (set for whole expressions: arguments)
   std::string_view text;
   int64_t ival = 0;
   double dval = 0;

@@ -142,6 +142,19 @@ std::string Builtin::arityText() const {
   return std::to_string(minArgs) + " to " + std::to_string(maxArgs);
 }
 
+std::string Builtin::usage() const {
+  std::string out(name);
+  if (kind == BuiltinKind::Function) {
+    out += '(';
+    out += signature;
+    out += ')';
+  } else if (kind == BuiltinKind::Command && !signature.empty()) {
+    out += ' ';
+    out += signature;
+  }
+  return out;
+}
+
 // ---- BuiltinTable
 
 size_t BuiltinTable::FoldedHash::operator()(std::string_view s) const {

@@ -61,6 +61,8 @@ struct Builtin {
   const ParamSpec& param(int n, int i) const;
   /// "2", "1 to 3", "at least 1": for messages.
   std::string arityText() const;
+  /// How a call is written: "rForward distance", "left(s, n)" (the signature after the name).
+  std::string usage() const;
 };
 
 /// Where a program puts a name, for the one rule about built-in names (BuiltinTable::misuse).

@@ -1,5 +1,6 @@
 #include "lang/checker.h"
 
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -21,6 +22,27 @@ struct ScopeUse {
   std::set<std::string_view> written;
   std::map<std::string_view, SourceLoc> firstRead;  // ordered for stable output
 };
+
+/// Every word that looks like a name on a line that has an error.
+std::unordered_set<std::string> namesOnErrorLines(const SourceSet& sources, const DiagnosticList& diags) {
+  std::unordered_set<std::string> names;
+  auto wordChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$'; };
+  for (const Diagnostic& d : diags.all()) {
+    if (d.severity != Severity::Error || !d.loc.valid() || d.loc.file >= sources.size()) continue;
+    std::string_view line = sources.file(d.loc.file).lineText(d.loc.line);
+    for (size_t i = 0; i < line.size();) {
+      if (!wordChar(line[i])) {
+        ++i;
+        continue;
+      }
+      size_t j = i;
+      while (j < line.size() && wordChar(line[j])) ++j;
+      names.insert(std::string(line.substr(i, j - i)));
+      i = j;
+    }
+  }
+  return names;
+}
 
 }  // namespace
 
@@ -75,17 +97,23 @@ void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
     }, isByRef);
   }
 
+  // A line with an error was not (or not wholly) understood: any name on it may have been
+  // assigned there, so a read of it elsewhere is no news (no cascade from a missing ')').
+  std::unordered_set<std::string> onBrokenLines = namesOnErrorLines(program.sources, diags);
+
   auto report = [&](const ScopeUse& scope, const char* where) {
     std::vector<std::string_view> written(scope.written.begin(), scope.written.end());
     for (const auto& [name, loc] : scope.firstRead) {
-      if (scope.written.count(name)) continue;
+      if (scope.written.count(name) || onBrokenLines.count(std::string(name))) continue;
       std::string msg = "variable '" + std::string(name) + "' is read but never assigned" + where;
       std::string hint = closestMatch(name, written, true);
       if (!hint.empty()) {
         msg += "; did you mean '" + hint + "'?";
         if (editDistance(name, hint, true) == 0) msg += " (names are case-sensitive)";
       }
-      diags.warning(loc, msg);
+      Diagnostic& d = diags.warning(loc, msg, "rb-unassigned-variable");
+      if (!hint.empty())
+        d.fixits.push_back({loc, {loc.file, loc.line, loc.col + static_cast<uint32_t>(name.size())}, hint});
     }
   };
   report(global, "");
@@ -129,7 +157,7 @@ void checkExpr(const ast::Expr* e, const BuiltinTable& builtins, DiagnosticList&
   if (e->kind == ast::ExprKind::Call) {
     if (const Builtin* b = builtins.find(e->text, BuiltinKind::Function)) {
       std::string why = missingOnRb9(b->name);
-      if (!why.empty()) diags.warning(e->loc, why);
+      if (!why.empty()) diags.warning(e->loc, why, "rb-rb9-unsupported");
     }
   }
   for (const ast::Expr* a : e->args) checkExpr(a, builtins, diags);
@@ -142,7 +170,8 @@ void checkStmt(const ast::Stmt* s, const BuiltinTable& builtins, DiagnosticList&
     if (b && b->name == "rForward" && n && std::abs(*n) > kRb9MaxMove)
       diags.warning(s->loc, "rForward " + formatNumber(*n) +
                                 ": the RB-9 moves at most about 250 per command (the seed "
-                                "recommends staying below 200); use several shorter moves");
+                                "recommends staying below 200); use several shorter moves",
+                    "rb-rb9-long-move");
   }
   checkExpr(s->target, builtins, diags);
   checkExpr(s->value, builtins, diags);

@@ -33,7 +33,7 @@ void Compiler::run() {
       continue;
     }
     if (s->kind == StmtKind::EndSub) {
-      diags_.error(s->loc, "endsub without a sub");
+      diags_.error(s->loc, "endsub without a sub", "rb-unmatched-block");
       continue;
     }
     statement(*s, true);
@@ -55,17 +55,17 @@ void Compiler::declare() {
     if (s->kind == StmtKind::Label) {
       auto [it, fresh] = labels_.try_emplace(s->name, LabelInfo{s->loc, Target{}, false});
       if (!fresh) {
-        diags_.error(s->loc, "duplicate label " + quoted(s->name));
+        diags_.error(s->loc, "duplicate label " + quoted(s->name), "rb-duplicate-label");
         diags_.note(it->second.loc, quoted(s->name) + " was first defined here");
       }
     } else if (s->kind == StmtKind::Sub && !s->broken) {
       if (subIndex_.count(s->name)) {
-        diags_.error(s->nameLoc, "duplicate sub " + quoted(s->name));
+        diags_.error(s->nameLoc, "duplicate sub " + quoted(s->name), "rb-duplicate-sub");
         diags_.note(p_.subs[subIndex_[s->name]].loc, quoted(s->name) + " was first defined here");
         continue;
       }
       if (std::optional<std::string> why = builtins_.misuse(s->name, NamePlace::Sub))
-        diags_.error(s->nameLoc, std::move(*why));
+        diags_.error(s->nameLoc, std::move(*why), "rb-misplaced-builtin");
       SubInfo info;
       info.name = std::string(s->name);
       info.loc = s->nameLoc;
@@ -73,7 +73,7 @@ void Compiler::declare() {
       std::unordered_set<std::string_view> seen;
       for (const ast::Param& prm : s->params) {
         if (!seen.insert(prm.name).second)
-          diags_.error(prm.loc, "parameter " + quoted(prm.name) + " appears twice");
+          diags_.error(prm.loc, "parameter " + quoted(prm.name) + " appears twice", "rb-duplicate-parameter");
         info.byRef.push_back(prm.byRef);
       }
       subIndex_[s->name] = static_cast<uint32_t>(p_.subs.size());
@@ -82,7 +82,7 @@ void Compiler::declare() {
   }
   for (const auto& [name, info] : labels_) {
     if (subIndex_.count(name)) {
-      diags_.error(info.loc, "label " + quoted(name) + " has the name of a sub");
+      diags_.error(info.loc, "label " + quoted(name) + " has the name of a sub", "rb-label-is-sub");
     }
   }
 }
@@ -146,15 +146,25 @@ void Compiler::statementBody(const Stmt& s) {
   }
 }
 
-void Compiler::fail(SourceLoc loc, std::string message) {
-  diags_.error(loc, std::move(message));
+void Compiler::fail(SourceLoc loc, std::string message, const char* code) {
+  diags_.error(loc, std::move(message), code);
+  throw StatementAbandoned{};
+}
+
+void Compiler::fail(Diagnostic d, std::vector<Diagnostic> notes) {
+  d.severity = Severity::Error;
+  diags_.add(std::move(d));
+  for (Diagnostic& n : notes) {
+    n.severity = Severity::Note;
+    diags_.add(std::move(n));
+  }
   throw StatementAbandoned{};
 }
 
 /// Fails when `name` is a built-in's and cannot stand at `place` (the rule is
 /// BuiltinTable::misuse).
 void Compiler::checkName(std::string_view name, SourceLoc loc, NamePlace place) {
-  if (std::optional<std::string> why = builtins_.misuse(name, place)) fail(loc, std::move(*why));
+  if (std::optional<std::string> why = builtins_.misuse(name, place)) fail(loc, std::move(*why), "rb-misplaced-builtin");
 }
 
 /// A target that receives a value: a variable, or an element of an array.

@@ -43,7 +43,7 @@ void Compiler::ifStmt(const Stmt& s) {
 
 void Compiler::elseIfStmt(const Stmt& s) {
   Block& b = openIf(s, "elseif");
-  if (b.sawElse) fail(s.loc, "elseif after else (the if is at " + lineOf(b.stmt->loc) + ")");
+  if (b.sawElse) fail(s.loc, "elseif after else (the if is at " + lineOf(b.stmt->loc) + ")", "rb-unmatched-block");
   b.endPatches.push_back(emitTransfer(Op::Jump, 0, 0, 0, s.loc));
   patchAll(b.nextPatches, placeTarget());
   b.nextPatches = branchFalse(s.value);
@@ -51,7 +51,7 @@ void Compiler::elseIfStmt(const Stmt& s) {
 
 void Compiler::elseStmt(const Stmt& s) {
   Block& b = openIf(s, "else");
-  if (b.sawElse) fail(s.loc, "second else for the if at " + lineOf(b.stmt->loc));
+  if (b.sawElse) fail(s.loc, "second else for the if at " + lineOf(b.stmt->loc), "rb-unmatched-block");
   b.sawElse = true;
   b.endPatches.push_back(emitTransfer(Op::Jump, 0, 0, 0, s.loc));
   patchAll(b.nextPatches, placeTarget());
@@ -85,8 +85,9 @@ Block& Compiler::openIf(const Stmt& s, const char* word) {
   if (blocks_.empty() || blocks_.back().kind != Block::If) {
     if (!blocks_.empty())
       fail(s.loc, std::string(word) + " does not match the open " + blockWord(blocks_.back()) +
-                      " at " + lineOf(blocks_.back().stmt->loc));
-    fail(s.loc, std::string(word) + " without if");
+                      " at " + lineOf(blocks_.back().stmt->loc),
+           "rb-unmatched-block");
+    fail(s.loc, std::string(word) + " without if", "rb-unmatched-block");
   }
   return blocks_.back();
 }
@@ -96,7 +97,7 @@ Block& Compiler::openIf(const Stmt& s, const char* word) {
 void Compiler::forStmt(const Stmt& s) {
   // Reported, but the loop still pairs with its next.
   if (std::optional<std::string> why = builtins_.misuse(s.target->text, NamePlace::Store))
-    diags_.error(s.target->loc, std::move(*why));
+    diags_.error(s.target->loc, std::move(*why), "rb-misplaced-builtin");
   uint32_t var = variable(s.target->text);
   uint32_t limit;
   if (inSub()) {
@@ -123,7 +124,8 @@ void Compiler::nextStmt(const Stmt& s) {
   if (!s.name.empty() && s.name != b.stmt->target->text) {
     blocks_.push_back(std::move(b));  // keep the loop open so later statements make sense
     fail(s.nameLoc, "next " + std::string(s.name) + " does not match the for " +
-                        std::string(b.stmt->target->text) + " at " + lineOf(b.stmt->loc));
+                        std::string(b.stmt->target->text) + " at " + lineOf(b.stmt->loc),
+         "rb-unmatched-block");
   }
   patchAll(b.continuePatches, placeTarget());
   patch(emitTransfer(Op::ForLoop, b.forVar, b.forLimit, 0, s.loc), b.bodyStart);
@@ -164,7 +166,7 @@ void Compiler::untilStmt(const Stmt& s) {
 void Compiler::breakOrContinue(const Stmt& s) {
   Block* loop = innermostLoop();
   const char* word = s.kind == StmtKind::Break ? "break" : "continue";
-  if (!loop) fail(s.loc, std::string(word) + " outside a loop");
+  if (!loop) fail(s.loc, std::string(word) + " outside a loop", "rb-outside-loop");
   uint32_t j = emitTransfer(Op::Jump, 0, 0, 0, s.loc);
   (s.kind == StmtKind::Break ? loop->breakPatches : loop->continuePatches).push_back(j);
 }
@@ -179,14 +181,26 @@ Block* Compiler::innermostLoop() {
 /// jumps would land after the loop.
 Block Compiler::closeLoop(const Stmt& s, Block::Kind kind, const char* closer,
                           const char* opener) {
-  if (blocks_.empty()) fail(s.loc, std::string(closer) + " without " + opener);
+  if (blocks_.empty()) fail(s.loc, std::string(closer) + " without " + opener, "rb-unmatched-block");
   Block& top = blocks_.back();
   if (top.kind != kind) {
     bool hasOpener = false;
     for (const Block& b : blocks_) hasOpener = hasOpener || b.kind == kind;
-    if (!hasOpener) fail(s.loc, std::string(closer) + " without " + opener);
-    fail(s.loc, std::string(closer) + " closes a " + opener + ", but the " + blockWord(top) +
-                    " at " + lineOf(top.stmt->loc) + " is still open (missing " + closerWord(top) + ")");
+    if (!hasOpener) fail(s.loc, std::string(closer) + " without " + opener, "rb-unmatched-block");
+    std::string message = std::string(closer) + " closes a " + opener + ", but the " + blockWord(top) +
+                          " at " + lineOf(top.stmt->loc) + " is still open (missing " + closerWord(top) + ")";
+    // A loop left open inside (a missing next or wend): the closer ends its own loop all the
+    // same, and the inner loops are this error's news, not errors again at the end of the file
+    // (no cascade). An if left open may still get its endif after the closer: keep it.
+    bool innerLoopsOnly = true;
+    for (auto it = blocks_.rbegin(); it != blocks_.rend() && it->kind != kind; ++it)
+      innerLoopsOnly = innerLoopsOnly && it->kind != Block::If;
+    while (innerLoopsOnly && !blocks_.empty()) {
+      bool match = blocks_.back().kind == kind;
+      blocks_.pop_back();
+      if (match) break;
+    }
+    fail(s.loc, std::move(message), "rb-unmatched-block");
   }
   Block b = std::move(top);
   blocks_.pop_back();
@@ -205,11 +219,13 @@ void Compiler::closeBlocksAtEnd(SourceLoc where) {
     const char* place = where.valid() ? "before the next sub" : "before the end of the file";
     if (b.kind == Block::If) {
       diags_.warning(b.stmt->loc, std::string("if without endif ") + place +
-                                      "; the block runs to that point");
+                                      "; the block runs to that point",
+                     "rb-unclosed-if");
       patchAll(b.nextPatches, end);
       patchAll(b.endPatches, end);
     } else {
-      diags_.error(b.stmt->loc, std::string(blockWord(b)) + " without " + closerWord(b) + " " + place);
+      diags_.error(b.stmt->loc, std::string(blockWord(b)) + " without " + closerWord(b) + " " + place,
+                   "rb-unclosed-block");
     }
   }
   blocks_.clear();
@@ -232,7 +248,8 @@ void Compiler::brokenOpener(const Stmt& s) {
 
 void Compiler::gotoOrGosub(const Stmt& s) {
   if (subIndex_.count(s.name) && !labels_.count(s.name))
-    fail(s.nameLoc, quoted(s.name) + " is a sub: use call " + std::string(s.name) + "(...)");
+    fail(s.nameLoc, quoted(s.name) + " is a sub: use call " + std::string(s.name) + "(...)",
+         "rb-sub-as-label");
   uint32_t pc = s.kind == StmtKind::Goto ? emitTransfer(Op::Jump, 0, 0, 0, s.loc)
                                          : emitTransfer(Op::Gosub, 0, 0, 0, s.loc);
   if (s.kind == StmtKind::Gosub) scope_->gosubs.push_back(pc);
@@ -260,7 +277,9 @@ void Compiler::resolveLabels() {
       std::string msg = "undefined label " + quoted(f.name);
       std::string hint = closestMatch(f.name, names, false);
       if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
-      diags_.error(f.loc, msg);
+      Diagnostic& d = diags_.error(f.loc, msg, "rb-undefined-label");
+      if (!hint.empty())
+        d.fixits.push_back({f.loc, {f.loc.file, f.loc.line, f.loc.col + static_cast<uint32_t>(f.name.size())}, hint});
       continue;
     }
     patch(f.pc, it->second.target);

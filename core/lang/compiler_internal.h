@@ -112,7 +112,9 @@ class Compiler {
   void declare();
   void statement(const Stmt& s, bool topLevel);
   void statementBody(const Stmt& s);
-  [[noreturn]] void fail(SourceLoc loc, std::string message);
+  [[noreturn]] void fail(SourceLoc loc, std::string message, const char* code);
+  /// Reports `d` (an error) with its notes and abandons the statement.
+  [[noreturn]] void fail(Diagnostic d, std::vector<Diagnostic> notes = {});
   void checkName(std::string_view name, SourceLoc loc, NamePlace place);
   void checkTarget(const Expr& target);
   uint32_t emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc, uint16_t count = 0);
@@ -132,7 +134,7 @@ class Compiler {
   void dim(const Stmt& s);
   void data(const Stmt& s);
   void command(const Stmt& s);
-  void checkArity(const Builtin& b, size_t n, SourceLoc loc);
+  void checkArity(const Builtin& b, const std::vector<Expr*>& args, SourceLoc loc);
   void callBuiltin(const Builtin& b, const std::vector<Expr*>& args, const std::vector<Tok>* seps,
                    uint32_t dest, SourceLoc loc);
   void store(const Expr& target, uint32_t v);

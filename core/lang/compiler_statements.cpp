@@ -54,7 +54,7 @@ void Compiler::assign(const Stmt& s) {
 }
 
 void Compiler::print(const Stmt& s) {
-  if (s.exprs.size() > 0xffff) fail(s.loc, "too many items");
+  if (s.exprs.size() > 0xffff) fail(s.loc, "too many items", "rb-too-many-arguments");
   uint32_t first = s.exprs.empty() ? 0 : items(s.exprs, 0);
   emit(Op::Print, 0, first, separators(s.seps), s.loc, static_cast<uint16_t>(s.exprs.size()));
 }
@@ -107,17 +107,26 @@ void Compiler::data(const Stmt& s) {
 
 void Compiler::command(const Stmt& s) {
   const Builtin* b = builtins_.find(s.name, BuiltinKind::Command);
-  if (!b) fail(s.nameLoc, "unknown command " + quoted(s.name));
+  if (!b) fail(s.nameLoc, "unknown command " + quoted(s.name), "rb-unknown-command");
   callBuiltin(*b, s.exprs, b->printList ? &s.seps : nullptr, kNoOperand, s.nameLoc);
 }
 
-void Compiler::checkArity(const Builtin& b, size_t n, SourceLoc loc) {
-  if (!b.acceptsCount(static_cast<int>(n))) {
-    std::string what(b.name);
-    if (b.kind != BuiltinKind::Command) what += "()";
-    fail(loc, quoted(what) + " takes " + b.arityText() + " argument" +
-                  (b.arityText() == "1" ? "" : "s") + ", got " + std::to_string(n));
+void Compiler::checkArity(const Builtin& b, const std::vector<Expr*>& args, SourceLoc loc) {
+  size_t n = args.size();
+  if (b.acceptsCount(static_cast<int>(n))) return;
+  std::string what(b.name);
+  if (b.kind != BuiltinKind::Command) what += "()";
+  Diagnostic d;
+  d.code = "rb-argument-count";
+  d.message = quoted(what) + " takes " + b.arityText() + " argument" +
+              (b.arityText() == "1" ? "" : "s") + ", got " + std::to_string(n);
+  d.loc = loc;
+  // Too many: the first argument too many, to the end of the last; too few: the name.
+  if (b.maxArgs >= 0 && n > static_cast<size_t>(b.maxArgs)) {
+    d.loc = args[static_cast<size_t>(b.maxArgs)]->loc;
+    d.end = args.back()->end;
   }
+  fail(std::move(d), {Diagnostic{Severity::Note, SourceLoc{}, "usage: " + b.usage()}});
 }
 
 /// Evaluates a built-in's arguments into consecutive temporaries and calls it. Output
@@ -130,10 +139,10 @@ void Compiler::callBuiltin(const Builtin& b, const std::vector<Expr*>& args,
   if (b.printList && seps) {
     // Leading fixed parameters, then every remaining item formatted into one string.
     int fixed = b.minArgs - 1;
-    if (n < b.minArgs) checkArity(b, args.size(), loc);
+    if (n < b.minArgs) checkArity(b, args, loc);
     for (int i = 0; i < fixed; ++i)
       if ((*seps)[static_cast<size_t>(i)] != Tok::Comma)
-        fail(args[static_cast<size_t>(i)]->loc, "expected ',' after argument " + std::to_string(i + 1));
+        fail(args[static_cast<size_t>(i)]->loc, "expected ',' after argument " + std::to_string(i + 1), "rb-syntax");
     first = temps(static_cast<uint32_t>(fixed + 1));
     for (int i = 0; i < fixed; ++i) exprInto(args[static_cast<size_t>(i)], first + static_cast<uint32_t>(i));
     uint32_t itemsFirst = items(args, static_cast<size_t>(fixed));
@@ -142,14 +151,17 @@ void Compiler::callBuiltin(const Builtin& b, const std::vector<Expr*>& args,
          static_cast<uint16_t>(n - fixed));
     n = fixed + 1;
   } else {
-    checkArity(b, args.size(), loc);
+    checkArity(b, args, loc);
     first = n ? temps(static_cast<uint32_t>(n)) : 0;
     for (int i = 0; i < n; ++i) {
       const Expr* a = args[static_cast<size_t>(i)];
       if (b.param(n, i).out) {
         if (a->kind != ExprKind::Var && a->kind != ExprKind::Index)
-          fail(a->loc, "argument " + std::to_string(i + 1) + " of " + std::string(b.name) +
-                           " must be a variable: it receives " + std::string(b.param(n, i).name));
+          fail(Diagnostic{Severity::Error, a->loc,
+                          "argument " + std::to_string(i + 1) + " of " + std::string(b.name) +
+                              " must be a variable: it receives " + std::string(b.param(n, i).name),
+                          "rb-output-argument", a->end},
+               {Diagnostic{Severity::Note, SourceLoc{}, "usage: " + b.usage()}});
         checkTarget(*a);
         outputs[static_cast<size_t>(i)] = a;
         emit(Op::Move, first + static_cast<uint32_t>(i), intConst(0), 0, a->loc);
@@ -179,7 +191,7 @@ void Compiler::store(const Expr& target, uint32_t v) {
 /// Index operands of an Index expression: a single index is used in place; several go to
 /// consecutive temporaries.
 std::pair<uint32_t, uint16_t> Compiler::indices(const Expr& e) {
-  if (e.args.size() > 64) fail(e.loc, "too many indices");
+  if (e.args.size() > 64) fail(e.loc, "too many indices", "rb-too-many-indices");
   if (e.args.size() == 1) return {expr(e.args[0]), 1};
   uint32_t first = temps(static_cast<uint32_t>(e.args.size()));
   for (size_t i = 0; i < e.args.size(); ++i) exprInto(e.args[i], first + static_cast<uint32_t>(i));

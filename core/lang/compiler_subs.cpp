@@ -132,8 +132,12 @@ const SubInfo& Compiler::subNamed(std::string_view name, SourceLoc loc, bool asF
   names.insert(names.end(), builtinNames.begin(), builtinNames.end());
   std::string msg = (asFunction ? "unknown function " : "unknown command or sub ") + quoted(name);
   std::string hint = closestMatch(name, names, true);
-  if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
-  fail(loc, msg);
+  Diagnostic d{Severity::Error, loc, msg, asFunction ? "rb-unknown-function" : "rb-unknown-command"};
+  if (!hint.empty()) {
+    d.message += "; did you mean '" + hint + "'?";
+    d.fixits.push_back({loc, {loc.file, loc.line, loc.col + static_cast<uint32_t>(name.size())}, hint});
+  }
+  fail(std::move(d));
 }
 
 /// Calls a sub: arguments go to consecutive temporaries that become the callee's parameters;
@@ -141,17 +145,27 @@ const SubInfo& Compiler::subNamed(std::string_view name, SourceLoc loc, bool asF
 void Compiler::callSub(const SubInfo& sub, const std::vector<Expr*>& args, uint32_t dest,
                        SourceLoc loc, SourceLoc nameLoc) {
   if (args.size() != sub.paramCount)
-    fail(nameLoc, "sub '" + sub.name + "' takes " + std::to_string(sub.paramCount) +
-                      " argument" + (sub.paramCount == 1 ? "" : "s") + ", got " +
-                      std::to_string(args.size()));
+  {
+    Diagnostic d{Severity::Error, nameLoc,
+                 "sub '" + sub.name + "' takes " + std::to_string(sub.paramCount) + " argument" +
+                     (sub.paramCount == 1 ? "" : "s") + ", got " + std::to_string(args.size()),
+                 "rb-argument-count"};
+    if (args.size() > sub.paramCount) {
+      d.loc = args[sub.paramCount]->loc;
+      d.end = args.back()->end;
+    }
+    fail(std::move(d), {Diagnostic{Severity::Note, sub.loc, "'" + sub.name + "' is defined here"}});
+  }
   uint32_t n = static_cast<uint32_t>(args.size());
   uint32_t first = temps(n == 0 ? 1 : n);
   for (uint32_t i = 0; i < n; ++i) {
     const Expr* a = args[i];
     if (sub.byRef[i]) {
       if (a->kind != ExprKind::Var)
-        fail(a->loc, "argument " + std::to_string(i + 1) + " of " + sub.name +
-                         " is passed by reference (&): it must be a variable");
+        fail(Diagnostic{Severity::Error, a->loc,
+                        "argument " + std::to_string(i + 1) + " of " + sub.name +
+                            " is passed by reference (&): it must be a variable",
+                        "rb-reference-argument", a->end});
       checkName(a->text, a->loc, NamePlace::Store);
     }
     if (sub.byRef[i]) {
@@ -175,7 +189,7 @@ void Compiler::callStmt(const Stmt& s) {
 
 void Compiler::returnStmt(const Stmt& s) {
   if (s.value) {
-    if (!inSub()) fail(s.loc, "return with a value outside a sub");
+    if (!inSub()) fail(s.loc, "return with a value outside a sub", "rb-return-outside-sub");
     uint32_t r = expr(s.value);
     emitTransfer(Op::Return, 0, r, 1, s.loc);
   } else {

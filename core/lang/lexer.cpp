@@ -89,7 +89,7 @@ class Lexer {
       if (!op(out)) {
         unsigned char uc = static_cast<unsigned char>(c);
         std::string shown = uc >= 0x20 && uc < 0x7f ? std::string(1, c) : "\\x" + hex(uc);
-        diags_.error(loc(pos_), "unexpected character '" + shown + "'");
+        diags_.error(loc(pos_), "unexpected character '" + shown + "'", "rb-unexpected-character");
         ++pos_;
       }
     }
@@ -133,7 +133,7 @@ class Lexer {
       ++pos_;
     }
     if (pos_ >= text_.size()) {
-      diags_.error(startLoc, "unterminated /* comment");
+      diags_.error(startLoc, "unterminated /* comment", "rb-unterminated-comment");
       return;
     }
     pos_ += 2;
@@ -143,7 +143,8 @@ class Lexer {
     ++pos_;
     while (pos_ < text_.size() && text_[pos_] != '"' && text_[pos_] != '\n') ++pos_;
     if (pos_ >= text_.size() || text_[pos_] != '"') {
-      diags_.error(loc(start), "unterminated string (a string must close on the same line)");
+      diags_.error(loc(start), "unterminated string (a string must close on the same line)",
+                   "rb-unterminated-string");
       Token t;
       t.kind = Tok::String;
       t.loc = loc(start);
@@ -167,7 +168,7 @@ class Lexer {
     while (pos_ < text_.size() && isDigit(text_[pos_])) ++pos_;
     uint64_t v = 0;
     auto r = std::from_chars(text_.data() + digits, text_.data() + pos_, v, base);
-    if (r.ec != std::errc()) diags_.error(t.loc, std::string(what) + " number too large");
+    if (r.ec != std::errc()) diags_.error(t.loc, std::string(what) + " number too large", "rb-number-too-large");
     t.kind = Tok::Int;
     t.intValue = static_cast<int64_t>(v);
     t.text = std::string_view(text_).substr(start, pos_ - start);

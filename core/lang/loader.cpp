@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <set>
 
+#include "base/source.h"
 #include "lang/lexer.h"
 #include "lang/parser.h"
 
@@ -20,8 +21,7 @@ class Loader {
 
   void loadMain(const std::string& name, std::string text) {
     if (auto canonical = reader_.find(name)) seen_.insert(*canonical);
-    uint32_t index = out_.sources.add(name, std::move(text));
-    parseFile(index, 0, out_.stmts);
+    addAndParse(name, std::move(text), SourceLoc{}, 0, out_.stmts);
   }
 
  private:
@@ -41,7 +41,8 @@ class Loader {
     std::string wanted(s.name);
     if (depth + 1 > kMaxIncludeDepth) {
       diags_.error(s.nameLoc, "includes nested too deeply (more than " +
-                                  std::to_string(kMaxIncludeDepth) + " levels)");
+                                  std::to_string(kMaxIncludeDepth) + " levels)",
+                   "rb-include-depth");
       return;
     }
     namespace fs = std::filesystem;
@@ -65,17 +66,31 @@ class Loader {
       }
     }
     if (!found) {
-      diags_.error(s.nameLoc, "include file '" + wanted + "' not found");
+      diags_.error(s.nameLoc, "include file '" + wanted + "' not found", "rb-include-not-found");
       return;
     }
     if (!seen_.insert(*found).second) return;  // each file once
     std::optional<std::string> text = reader_.read(*found);
     if (!text) {
-      diags_.error(s.nameLoc, "cannot read include file '" + wanted + "'");
+      diags_.error(s.nameLoc, "cannot read include file '" + wanted + "'", "rb-include-unreadable");
       return;
     }
-    uint32_t index = out_.sources.add(display, std::move(*text));
-    parseFile(index, depth + 1, dest);
+    addAndParse(display, std::move(*text), s.loc, depth + 1, dest);
+  }
+
+  /// Decodes a file's bytes (BOM, Windows-1252), adds it to the program and parses it; a file
+  /// that is not text is reported once and not parsed.
+  void addAndParse(const std::string& name, std::string raw, SourceLoc includedFrom, int depth,
+                   std::vector<ast::Stmt*>& dest) {
+    DecodedText decoded = decodeSourceText(std::move(raw));
+    uint32_t index = out_.sources.add(name, std::move(decoded.text), includedFrom);
+    if (decoded.kind == DecodedText::Binary) {
+      diags_.error(SourceLoc{index, 0, 0},
+                   "this is a binary file, not a program (it holds " + decoded.why + ")",
+                   "rb-binary-input");
+      return;
+    }
+    parseFile(index, depth, dest);
   }
 
   LoadedProgram& out_;

@@ -118,9 +118,16 @@ class Parser {
     return true;
   }
 
-  [[noreturn]] void fail(SourceLoc loc, std::string message) {
+  [[noreturn]] void fail(SourceLoc loc, std::string message, const char* code = "rb-syntax",
+                         std::string suggestion = {}, size_t length = 0) {
     // One error per line: a lexical error already explains what follows it.
-    if (!diags_.hasErrorOnLine(loc.file, loc.line)) diags_.error(loc, std::move(message));
+    if (!diags_.hasErrorOnLine(loc.file, loc.line)) {
+      Diagnostic& d = diags_.error(loc, std::move(message), code);
+      if (!suggestion.empty() && length > 0) {
+        SourceLoc end{loc.file, loc.line, static_cast<uint32_t>(loc.col + length)};
+        d.fixits.push_back({loc, end, std::move(suggestion)});
+      }
+    }
     throw StatementAbandoned{};
   }
   /// One level of nesting (a parenthesis, an operator's operand, a single-line if's
@@ -130,7 +137,7 @@ class Parser {
   class Nested {
    public:
     Nested(Parser& p, SourceLoc loc) : p_(p) {
-      if (p_.depth_ >= kMaxNesting) p_.fail(loc, "expression nested too deeply");
+      if (p_.depth_ >= kMaxNesting) p_.fail(loc, "expression nested too deeply", "rb-nesting-too-deep");
       p_.deepen(loc);
       ++p_.depth_;
     }
@@ -148,7 +155,8 @@ class Parser {
   void deepen(SourceLoc loc) {
     if (treeDepth_ >= kMaxTreeDepth)
       fail(loc, "expression too long (more than " + std::to_string(kMaxTreeDepth) +
-                    " operators or nested parts in one expression)");
+                    " operators or nested parts in one expression)",
+           "rb-nesting-too-deep");
     ++treeDepth_;
   }
   /// Runs `parse` one level deeper.
@@ -182,7 +190,7 @@ class Parser {
       s->loc = cur().loc;
       ++pos_;
       if (!at(Tok::Ident) || lower(cur().text) != "include")
-        fail(cur().loc, "unknown directive: only #include is supported");
+        fail(cur().loc, "unknown directive: only #include is supported", "rb-unknown-directive");
       ++pos_;
       const Token& file = expect(Tok::String, "a file name in quotes after #include");
       s->name = file.text;
@@ -340,7 +348,8 @@ class Parser {
 
   void noBlockInLineIf(bool inLineIf, SourceLoc loc, const char* what) {
     if (inLineIf)
-      fail(loc, std::string("'") + what + "' cannot be part of a single-line if (put it on its own line)");
+      fail(loc, std::string("'") + what + "' cannot be part of a single-line if (put it on its own line)",
+           "rb-block-in-line-if");
   }
 
   static std::string lower(std::string_view s) {
@@ -489,7 +498,7 @@ class Parser {
     if (isAssignOp(next) || next == Tok::LBracket) return assignment();
     if (const Builtin* b = builtins_.find(name.text, BuiltinKind::Command)) return command(*b);
     if (std::optional<std::string> why = builtins_.misuse(name.text, NamePlace::Statement))
-      fail(name.loc, std::move(*why));
+      fail(name.loc, std::move(*why), "rb-misplaced-builtin");
     if (next == Tok::LParen) {
       Stmt* s = newStmt(StmtKind::Call, name.loc);
       s->name = name.text;
@@ -503,7 +512,7 @@ class Parser {
     std::string msg = "unknown command '" + std::string(name.text) + "'";
     std::string hint = suggestCommand(builtins_, name.text);
     if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
-    fail(name.loc, msg);
+    fail(name.loc, msg, "rb-unknown-command", hint, name.text.size());
   }
 
   // assignment -> lvalue ('=' | '+=' | '-=' | '*=' | '/=') expr | lvalue ('++' | '--')
@@ -586,7 +595,19 @@ class Parser {
   }
 
   // expression -> precedence climbing over binaryOpInfo()
-  Expr* expression() { return binary(1); }
+  Expr* expression() {
+    Expr* e = binary(1);
+    if (!e->end.valid() && pos_ > 0) e->end = tokenEnd(toks_[pos_ - 1]);
+    return e;
+  }
+
+  /// The last character of a token (a string's closing quote).
+  static SourceLoc tokenEnd(const Token& t) {
+    SourceLoc end = t.loc;
+    if (t.kind == Tok::String) end.col += static_cast<uint32_t>(t.text.size() + 1);
+    else if (!t.text.empty()) end.col += static_cast<uint32_t>(t.text.size() - 1);
+    return end;
+  }
 
   Expr* binary(int minPrec) {
     // Each operator folded here makes the tree one level deeper on the left; the levels are

@@ -6,6 +6,7 @@
 
 #include "base/runtime_error.h"
 #include "lang/builtins.h"
+#include "lang/suggest.h"
 
 // The dispatch loop is threaded: each handler jumps straight to the next through a table of
 // label addresses (computed goto, a GNU extension), and the arithmetic uses GCC's overflow
@@ -151,7 +152,40 @@ std::string Interpreter::slotName(uint32_t op) const {
 RB_COLD void Interpreter::undefined(uint32_t op) const {
   std::string name = slotName(op);
   if (name.empty()) throw RuntimeError("a value is missing");
-  throw RuntimeError("variable '" + name + "' is used before it is given a value");
+  // Did you mean a variable that has a value (as rb check suggests, now from what ran)?
+  std::vector<std::string_view> known;
+  for (size_t i = 0; i < prog_.globalNames.size() && i < globals_.size(); ++i)
+    if (!globals_[i].isUndef()) known.push_back(prog_.globalNames[i]);
+  if (sub_ >= 0) {
+    const SubInfo& s = prog_.subs[static_cast<size_t>(sub_)];
+    for (size_t i = 0; i < s.slotNames.size() && base_ + i < stack_.size(); ++i)
+      if (!stack_[base_ + i].isUndef()) known.push_back(s.slotNames[i]);
+  }
+  std::string message = "variable '" + name + "' is used before it is given a value";
+  std::string hint = closestMatch(name, known, true);
+  if (!hint.empty() && hint != name) {
+    message += "; did you mean '" + hint + "'?";
+    if (editDistance(name, hint, true) == 0) message += " (names are case-sensitive)";
+  }
+  throw RuntimeError(message);
+}
+
+RB_COLD std::vector<Diagnostic> Interpreter::callChain() const {
+  std::vector<Diagnostic> notes;
+  constexpr size_t kShown = 10;
+  for (size_t k = frames_.size(); k-- > 0;) {
+    const Frame& f = frames_[k];
+    if (notes.size() == kShown) {
+      notes.push_back({Severity::Note, SourceLoc{}, "... and " + std::to_string(k + 1) + " calls before"});
+      break;
+    }
+    uint32_t callPc = f.returnPc - 1;
+    if (callPc >= prog_.locs.size()) continue;
+    std::string what = f.sub >= 0 ? "sub '" + prog_.subs[static_cast<size_t>(f.sub)].name + "'" : "the gosub";
+    notes.push_back({Severity::Note, prog_.locs[callPc],
+                     "in " + what + " called from line " + std::to_string(prog_.locs[callPc].line)});
+  }
+  return notes;
 }
 
 /// The end of every instruction whose operands are not what it needs: an operand without a
@@ -345,7 +379,8 @@ RunResult Interpreter::run(const RunLimits& limits) {
     } else {
       result.status = RunStatus::RuntimeError;
       SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
-      result.error = Diagnostic{Severity::Error, loc, e.what()};
+      result.error = Diagnostic{Severity::Error, loc, e.what(), e.code()};
+      result.error->notes = callChain();
     }
   } catch (const std::bad_alloc&) {
     result.status = RunStatus::RuntimeError;

@@ -99,6 +99,8 @@ class Interpreter {
   [[noreturn]] void operandError(const Instr& in) const;
   [[noreturn]] void undefined(uint32_t op) const;
   [[noreturn]] void tooDeep() const;
+  /// Notes for a runtime error: where each active gosub and sub call came from, innermost first.
+  std::vector<Diagnostic> callChain() const;
   std::string slotName(uint32_t op) const;
   Value& arrayOperand(uint32_t op);
   size_t elementOffset(ArrObj& a, uint32_t arrOp, const Value* idx, uint32_t n);

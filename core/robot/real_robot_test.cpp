@@ -228,5 +228,5 @@ TEST_CASE("a link fault stops the program at the statement, naming the port", "[
   host.wire->failNext = true;
   ProgramRun run = runWith(host, "rCommPort 5\nprint 1\nrForward 10\nprint 2\n");
   CHECK(run.out == "1\n");
-  CHECK_THAT(run.diagnostics, Catch::StartsWith("test.bas:3:1: error: robot on fake did not answer within 2 s\n"));
+  CHECK_THAT(run.diagnostics, Catch::StartsWith("test.bas:3:1: error: robot on fake did not answer within 2 s [rb-runtime-error]\n"));
 }

@@ -138,6 +138,8 @@ bool SimRobot::stepCrashes(const Eigen::Vector2d& from, const Eigen::Vector2d& t
       if (f < std::abs(s)) continue;                             // not in the leading quadrant
       double wx = x - from.x(), wy = y - from.y();
       if (wx * wx + wy * wy <= r2) continue;                     // already inside before it
+      hitX_ = x;
+      hitY_ = y;
       return true;
     }
   }
@@ -204,6 +206,28 @@ Colour SimRobot::trailColour() const {
   return inv.empty() ? canvas_.foreground : inv.front();
 }
 
+namespace {
+std::string colourName(Colour c) {
+  static const char* kNames[16] = {"Black", "Blue", "Green", "Cyan", "Red", "Magenta", "Brown",
+                                   "Gray", "DarkGray", "LightBlue", "LightGreen", "LightCyan",
+                                   "LightRed", "LightMagenta", "Yellow", "White"};
+  if (c < 16) return kNames[c];
+  return "RGB(" + std::to_string(c & 0xff) + ", " + std::to_string((c >> 8) & 0xff) + ", " +
+         std::to_string((c >> 16) & 0xff) + ")";
+}
+}  // namespace
+
+std::string SimRobot::crashMessage() const {
+  std::string msg = "robot crashed into an obstacle";
+  if (!Canvas::inside(hitX_, hitY_)) return msg + ": the edge of the screen";
+  Colour c = canvas_.at(hitX_, hitY_);
+  std::string name = colourName(c);
+  if (penDown_ && c == trailColour())
+    return msg + ": its own pen trail (colour " + name + "); add 'rInvisible " + name +
+           "' before 'rPen down' so the robot does not see its trail";
+  return msg + ": colour " + name + " at (" + std::to_string(hitX_) + ", " + std::to_string(hitY_) + ")";
+}
+
 double SimRobot::forward(double distance, const std::function<void()>& onStep) {
   requireLocated();
   distance = applySlip(distance);
@@ -228,7 +252,7 @@ double SimRobot::forward(double distance, const std::function<void()>& onStep) {
     Eigen::Vector2d next = pose_.pos + step;
     if (!freeRun && stepCrashes(pose_.pos, next, dir)) {
       if (penDown_ && !trailEachStep) extendTrail();
-      throw RuntimeError("robot crashed into an obstacle");
+      throw RuntimeError(crashMessage(), "rb-robot-crash");
     }
     pose_.pos = next;
     if (trailEachStep) extendTrail();

@@ -64,8 +64,11 @@ class SimRobot {
   /// crashes: an obstacle pixel outside the disc at `from` is inside the disc at `to`, in the
   /// quadrant around `dir` (seen from `to`, both edges included).
   bool stepCrashes(const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& dir);
+  /// The runtime error of a crash into the pixel stepCrashes hit: what it was and the usual fix.
+  std::string crashMessage() const;
 
  private:
+  int hitX_ = 0, hitY_ = 0;  ///< the obstacle pixel of the last crash
   /// A pixel near the robot, relative to its centre pixel.
   struct Offset {
     int dx, dy;

@@ -79,7 +79,7 @@ EXPECTED = {
         ["corners", "solution-trail", "ends-in"]),
     "crashing.bas": (
         "fail",
-        r"^the robot crashed at crashing\.bas:6:1 after 5 steps: robot crashed into an obstacle$",
+        r"^the robot crashed at crashing\.bas:6:1 after 5 steps: robot crashed into an obstacle: the edge of the screen$",
         ["no-error", "solution-output", "corners", "solution-trail", "ends-in", "solution-screen"]),
     "looping.bas": (
         "fail",
@@ -289,7 +289,7 @@ def case_trace(env):
            (end["x"], end["y"], end["heading"]) == (400, 300, 0), "the solution's end record", end)
     end = crash_events[-1]
     expect(end["status"] == "error" and (end["line"], end["col"]) == (6, 1) and
-           end["message"] == "robot crashed into an obstacle" and end["steps"] == 5 and end["exit"] == 70,
+           end["message"] == "robot crashed into an obstacle: the edge of the screen" and end["steps"] == 5 and end["exit"] == 70,
            "the crash's end record", end)
     # Several files on standard output: each record names its program.
     r = env.rb_run("trace", "--format", "jsonl", sol, os.path.join(CLASS, "not_compiling.bas"))

@@ -5,7 +5,7 @@ rLocate 400,300
 LineWidth 4
 rPen DOWN
 for n = 1 to 4
-  rForward 120 // expect-runtime-error: robot crashed into an obstacle
+  rForward 120 // expect-runtime-error: robot crashed into an obstacle: its own pen trail (colour Black); add 'rInvisible Black' before 'rPen down' so the robot does not see its trail
   print n, " ", rGPSX(), " ", rGPSY()
   rTurn 90
 next

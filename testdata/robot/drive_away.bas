@@ -8,4 +8,4 @@ print rBumper() // expect: 11
 rForward 40
 print rGPSX() // expect: 360
 rForward -18
-rForward -10 // expect-runtime-error: robot crashed into an obstacle
+rForward -10 // expect-runtime-error: robot crashed into an obstacle: colour Black at (405, 300)

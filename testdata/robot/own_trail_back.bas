@@ -8,4 +8,4 @@ rTurn 90
 rTurn -180
 rForward 40
 print rGPSY() // expect: 260
-rForward -1 // expect-runtime-error: robot crashed into an obstacle
+rForward -1 // expect-runtime-error: robot crashed into an obstacle: its own pen trail (colour Black); add 'rInvisible Black' before 'rPen down' so the robot does not see its trail

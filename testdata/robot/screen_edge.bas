@@ -3,4 +3,4 @@ rLocate 400, 300
 print rLook(), " ", rRange() // expect: 0 281
 rForward 279
 print rGPSY() // expect: 21
-rForward 5 // expect-runtime-error: robot crashed into an obstacle
+rForward 5 // expect-runtime-error: robot crashed into an obstacle: the edge of the screen

@@ -15,7 +15,7 @@ print rGPSX(), " ", rGPSY() // expect: 395 327
 rTurn 90
 while (rFeel() & 4) = 0
   b = rBumper()
-  rForward 1 // expect-runtime-error: robot crashed into an obstacle
+  rForward 1 // expect-runtime-error: robot crashed into an obstacle: colour Black at (400, 300)
   print rGPSY(), " ", b
 wend
 // expect: 326 0

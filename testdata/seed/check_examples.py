@@ -26,7 +26,7 @@ RUNS = {
 }
 # Figure 1.9 as printed calls a label that does not exist: the error is at line 3.
 FIG_1_9_ERROR = ("fig_1_9.bas:3:9: error: undefined label 'InitializeRobot'; "
-                 "did you mean 'InitializeSimulator'?")
+                 "did you mean 'InitializeSimulator'? [rb-undefined-label]")
 TRACES = {
     "fig_1_5.bas": [],
     "fig_1_6.bas": [],

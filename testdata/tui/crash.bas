@@ -2,4 +2,4 @@
 rLocate 400, 300
 rectangle 380, 100, 420, 120, Red, Red
 rSpeed 1
-rForward 300 // expect-runtime-error: robot crashed into an obstacle
+rForward 300 // expect-runtime-error: robot crashed into an obstacle: colour Red at (400, 120)

@@ -1,0 +1,2 @@
+﻿// nontest: a UTF-8 byte-order mark (diagnostics/input.t)
+print "café"

@@ -1,0 +1,3 @@
+// nontest: Windows-1252 text (diagnostics/input.t)
+print "café € “"
+prnt "été"

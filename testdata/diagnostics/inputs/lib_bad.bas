@@ -1,0 +1,2 @@
+// nontest: included by include.bas
+prnt "from the library"

@@ -1,0 +1,3 @@
+// nontest: included by include_runtime.bas
+sub Half(n)
+  return n / d

@@ -1,0 +1,26 @@
+// nontest: more errors than --max-errors shows (diagnostics/check.t)
+prnt 0
+prnt 1
+prnt 2
+prnt 3
+prnt 4
+prnt 5
+prnt 6
+prnt 7
+prnt 8
+prnt 9
+prnt 10
+prnt 11
+prnt 12
+prnt 13
+prnt 14
+prnt 15
+prnt 16
+prnt 17
+prnt 18
+prnt 19
+prnt 20
+prnt 21
+prnt 22
+prnt 23
+prnt 24
