@@ -12,6 +12,7 @@
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+"$here/../scripts/setup.sh" --bench >/dev/null   # the peers: Lua, yabasic, brandy, hyperfine
 runs=7
 
 usage() {

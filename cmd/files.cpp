@@ -125,11 +125,22 @@ std::vector<std::string> libraryDirs() {
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
+    // Installed (cmake --install, or the tree copied anywhere): PREFIX/bin/rb finds
+    // PREFIX/share/rb/lib, relative to itself.
     fs::path installed = exe.parent_path().parent_path() / "share" / "rb" / "lib";
     if (fs::is_directory(installed, ec)) dirs.push_back(installed.string());
   }
-#ifdef RB_SOURCE_LIB_DIR
-  dirs.push_back(RB_SOURCE_LIB_DIR);
+#if defined(RB_SOURCE_LIB_DIR) && defined(RB_BUILD_DIR)
+  // The source tree's lib/ only for the binary that still sits in its build tree: a copied or
+  // installed rb never reaches back into the sources it was built from.
+  std::error_code builtEc;
+  if (!exe.empty()) {
+    std::string built = fs::weakly_canonical(fs::path(RB_BUILD_DIR), builtEc).string();
+    std::string at = exe.string();
+    if (!builtEc && !built.empty() && at.compare(0, built.size(), built) == 0 &&
+        (at.size() == built.size() || at[built.size()] == '/'))
+      dirs.push_back(RB_SOURCE_LIB_DIR);
+  }
 #endif
   return dirs;
 }

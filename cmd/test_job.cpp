@@ -74,7 +74,7 @@ int executeJob(JobOptions opts) {
       if (run.result.error) rec.error = diagRecord(sources, *run.result.error);
       rec.steps = countedSteps(run.result, started);
       rec.seed = run.seed;
-      rec.located = run.machine->robot().located();
+      rec.located = run.machine->robotLocated();
       const Pose& pose = run.machine->robotPose();
       rec.pos = {pose.pos.x(), pose.pos.y()};
       rec.heading = pose.heading;

@@ -210,7 +210,7 @@ class TraceWriter : public RobotObserver {
       r.hasPose = true;
       r.pose = run_.machine->robotPose();
       r.pen = run_.machine->robotPenDown();
-      r.located = run_.machine->robot().located();
+      r.located = run_.machine->robotLocated();
     } else if (run_.loaded.program && !run_.loaded.compiled) {
       r.status = "rejected";
       r.steps = 0;

@@ -666,7 +666,7 @@ void TuiHost::drawStatus() {
   s.speedFactor = clock_.factor();
   s.rSpeed = m.robotSpeed;
   RealRobot* real = m.realRobot();
-  s.located = m.robot().located() || real;
+  s.located = m.robotLocated();
   const Pose& pose = m.robotPose();
   s.x = pose.pos.x();
   s.y = pose.pos.y();

@@ -11,7 +11,7 @@ namespace rb::render {
 /// real robot's dead-reckoned pose when one is connected, else the simulator's).
 inline RobotView robotView(const Machine& machine) {
   RobotView view;
-  view.visible = machine.robot().located();
+  view.visible = machine.robotLocated();
   const Pose& pose = machine.robotPose();
   view.x = pose.pos.x();
   view.y = pose.pos.y();

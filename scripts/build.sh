@@ -1,17 +1,26 @@
 #!/usr/bin/env bash
-# Configures and builds rb. Usage: scripts/build.sh [--sanitize] [--fuzz]
-#   (default) Release build in build/
-#   --sanitize  Debug build with AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
-#   --fuzz      clang build of the libFuzzer target in build-fuzz/
+# Configures and builds rb. Usage: scripts/build.sh [--tests] [--sanitize | --fuzz]
+#   (default)   Release build of rb in build/
+#   --tests     also the unit and golden tests (CMake's BUILD_TESTING)
+#   --sanitize  Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, with the tests,
+#               in build-asan/
+#   --fuzz      clang build of the libFuzzer targets in build-fuzz/
+# Warnings are errors only when RB_WERROR=ON is in the environment (CI sets it): a user's build
+# never fails on a warning a newer compiler invents.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mode=${1:-release}
-case "$mode" in
-  release|"") dir=build; flags=(-DCMAKE_BUILD_TYPE=Release -DRB_WERROR=ON) ;;
-  --sanitize) dir=build-asan; flags=(-DCMAKE_BUILD_TYPE=Debug -DRB_SANITIZE=ON -DRB_WERROR=ON) ;;
-  --fuzz) dir=build-fuzz; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON -DRB_BUILD_TESTS=OFF
-                                 -DCMAKE_CXX_COMPILER=clang++) ;;
-  *) echo "usage: $0 [--sanitize|--fuzz]" >&2; exit 64 ;;
-esac
+dir=build
+flags=(-DCMAKE_BUILD_TYPE=Release)
+tests=OFF
+for arg in "$@"; do
+  case "$arg" in
+    --tests) tests=ON ;;
+    --sanitize) dir=build-asan; tests=ON; flags=(-DCMAKE_BUILD_TYPE=Debug -DRB_SANITIZE=ON) ;;
+    --fuzz) dir=build-fuzz; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON
+                                   -DCMAKE_CXX_COMPILER=clang++) ;;
+    *) echo "usage: $0 [--tests] [--sanitize|--fuzz]" >&2; exit 64 ;;
+  esac
+done
+flags+=(-DBUILD_TESTING="$tests" -DRB_BUILD_TESTS="$tests" -DRB_WERROR="${RB_WERROR:-OFF}")
 cmake -S . -B "$dir" -G Ninja "${flags[@]}" >/dev/null
 ninja -C "$dir"

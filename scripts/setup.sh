@@ -1,22 +1,37 @@
 #!/usr/bin/env bash
-# Installs every build, test and benchmark dependency of rb from Debian packages.
-# Idempotent: packages already present are left alone. Run as root or with sudo available.
+# Installs rb's dependencies from Debian packages. Idempotent: packages already present are left
+# alone. Run as root or with sudo available.
+#   scripts/setup.sh           what building and running rb needs (the demo calls this)
+#   scripts/setup.sh --test    also the test tools (scripts/test.sh and .ci/run call this)
+#   scripts/setup.sh --bench   also the benchmark peers (bench/*.sh call this)
 set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libcli11-dev catch2 libeigen3-dev libpng-dev libncurses-dev
+  libcli11-dev libeigen3-dev libpng-dev libncurses-dev
   libfreetype-dev fonts-liberation2   # text: FreeType rasterizes the Liberation fonts compiled into rb
-  libtomlplusplus-dev nlohmann-json3-dev   # rb test's assignment files (TOML) and JSON reports
+  libtomlplusplus-dev nlohmann-json3-dev   # rb test's assignment files (TOML); JSON everywhere
+  libserialport-dev     # rb ports: the serial ports and what is known of each
+  libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
+)
+test_packages=(
+  catch2                # unit tests
   libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
-  libserialport-dev     # rb ports: the serial ports and what is known of each
-  libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
   python3               # golden-test helpers and PNG checks
+)
+bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)
 )
+for arg in "$@"; do
+  case "$arg" in
+    --test) packages+=("${test_packages[@]}") ;;
+    --bench) packages+=("${test_packages[@]}" "${bench_packages[@]}") ;;
+    *) echo "usage: scripts/setup.sh [--test] [--bench]" >&2; exit 64 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

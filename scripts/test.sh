@@ -4,9 +4,13 @@
 # Usage: scripts/test.sh [--sanitize]   (--sanitize: the same suite under ASan + UBSan)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-scripts/build.sh "$@"
+scripts/setup.sh --test
 dir=build
-[ "${1:-}" = "--sanitize" ] && dir=build-asan
+if [ "${1:-}" = "--sanitize" ]; then
+  dir=build-asan
+  scripts/build.sh --sanitize
+else
+  scripts/build.sh --tests
+fi
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --test-dir "$dir" --output-on-failure -j "$(nproc)"

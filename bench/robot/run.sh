@@ -5,6 +5,7 @@
 # Usage: bench/robot/run.sh [path/to/rb] [-n N]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
+"$here/../../scripts/setup.sh" --bench >/dev/null   # the peer: Python turtle under Xvfb
 rb="$here/../../build/cmd/rb"
 runs=7
 while [ $# -gt 0 ]; do

@@ -77,6 +77,8 @@ class Machine {
   /// when connected, else the simulator's.
   const Pose& robotPose() const { return real_ ? real_->pose() : robot_.pose(); }
   bool robotPenDown() const { return real_ ? real_->penDown() : robot_.penDown(); }
+  /// Whether the robot a picture shows (real or simulated, as robotPose) was placed by rLocate.
+  bool robotLocated() const { return real_ ? real_->located() : robot_.located(); }
 
   /// The statement running now (the interpreter sets it before calling a built-in).
   SourceLoc location() const { return location_; }

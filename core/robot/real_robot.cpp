@@ -68,6 +68,7 @@ void RealRobot::sendSplit(const char* what, double amount, uint8_t positiveCode,
 
 void RealRobot::locate(double x, double y, double heading) {
   send(kCodes.locate, 0);
+  located_ = true;
   pose_.pos = {x, y};
   pose_.heading = normalizeDegrees(heading);
 }

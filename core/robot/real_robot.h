@@ -30,6 +30,8 @@ class RealRobot {
   std::string name() const { return link_->name(); }
   /// The dead-reckoned pose.
   const Pose& pose() const { return pose_; }
+  /// Whether rLocate placed it (until then a picture shows no robot, as for the simulator).
+  bool located() const { return located_; }
   /// Whether the last rPen sent put the pen down.
   bool penDown() const { return penDown_; }
 
@@ -82,6 +84,7 @@ class RealRobot {
 
   std::unique_ptr<RobotLink> link_;
   Pose pose_{Eigen::Vector2d(kRealStartX, kRealStartY), kRealStartHeading};
+  bool located_ = false;
   bool penDown_ = false;
   bool haveReply_ = false;
   RobotReply last_;

@@ -126,6 +126,35 @@ def case_fig_1_13_run(tmp):
     expect(sent == ["03 00"] + ["06 78", "0c 5a"] * 4, "commands on the wire", sent)
 
 
+def case_line_poses_real(tmp):
+    """rb trace --lines --real: each line event carries the real robot's pose (once every
+    line event said x=0 y=0), the same poses as on the simulator."""
+    sim = trace("--lines", "square.bas")
+    with Emulator(tmp) as robot:
+        real = trace("--lines", "--real", "--port", robot.link, "square.bas")
+    # From rLocate on (before it, the simulator has no pose yet and the real robot its default).
+    lines_sim = poses(sim, {"line"})[1:]
+    lines_real = poses(real, {"line"})[1:]
+    expect(len(lines_sim) > 10, "too few line events on the simulator", lines_sim)
+    expect(lines_sim == lines_real, "line events' poses differ", lines_sim, lines_real)
+    expect(any(p[1] not in ("0", "0.0") for p in lines_real[2:]), "line events at y=0", lines_real)
+
+
+def case_render_real(tmp):
+    """rb render --real --ascii draws the real robot where it ended (once it drew none)."""
+    code, sim, err, _ = rb("render", "--ascii", "--cols", "80", "--rows", "30", "square.bas")
+    expect(code == 0, f"render on the simulator: exit {code}", err)
+    with Emulator(tmp) as robot:
+        code, real, err, _ = rb("render", "--real", "--port", robot.link, "--ascii", "--cols", "80",
+                                "--rows", "30", "square.bas")
+    expect(code == 0, f"render --real: exit {code}", err)
+    # The real robot draws no trail on the screen; its glyph stands where the simulator's does.
+    def glyph(picture):
+        return [(r, c) for r, row in enumerate(picture.splitlines()) for c, ch in enumerate(row) if ch == "^"]
+    expect(glyph(sim) != [], "no robot glyph on the simulator's picture", sim)
+    expect(glyph(real) == glyph(sim), "the real robot's glyph is not where the simulator's is", sim, real)
+
+
 def case_gps_over_wire(tmp):
     _, sim, _, _ = rb("run", "square_gps.bas")
     with Emulator(tmp) as robot:
