@@ -518,6 +518,8 @@ void Server::publish(const Document& doc) {
     json item = {{"severity", d.severity == Severity::Error ? kSeverityError : kSeverityWarning},
                  {"source", "rb"},
                  {"message", d.message}};
+    // The rule code, so that editors show it and users can look it up (docs/diagnostics.md).
+    if (!d.code.empty()) item["code"] = d.code;
     if (d.loc.file == 0 || !d.loc.valid()) {
       item["range"] = range(a, d.loc);
     } else {

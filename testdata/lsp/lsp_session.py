@@ -189,6 +189,8 @@ def main():
                 check(got == [tuple(x) for x in want["lines_severities"]], f"diagnostics: {diags}")
                 for d, text in zip(diags, want["messages"]):
                     check(text in d["message"], f"diagnostic {text!r} not in {d['message']!r}")
+                for d, code in zip(diags, want.get("codes", [])):
+                    check(d.get("code") == code, f"diagnostic code {d.get('code')!r}, expected {code!r}")
         try:
             code = client.proc.wait(timeout=20)
         except subprocess.TimeoutExpired:
