@@ -14,6 +14,7 @@
 #include "arena_view.h"
 #include "lang/compiler.h"
 #include "lang/loader.h"
+#include "machine/builtins.h"
 #include "machine/interpreter.h"
 #include "machine/machine.h"
 #include "png_writer.h"
@@ -74,7 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   OneFileReader reader(text);
   rb::DiagnosticList diags;
   std::unique_ptr<rb::LoadedProgram> loaded =
-      rb::loadProgram("fuzz.bas", text, reader, rb::LoadOptions{}, diags);
+      rb::loadProgram("fuzz.bas", text, reader, rb::standardBuiltins(), rb::LoadOptions{}, diags);
   if (!loaded) __builtin_trap();
   std::unique_ptr<rb::Program> program = rb::compileProgram(*loaded, rb::CompileOptions{}, diags);
   if (!program) return 0;
