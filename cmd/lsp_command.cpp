@@ -22,7 +22,9 @@ void addLspCommand(CLI::App& app, int& exitCode) {
       "standard output until the editor sends exit. Diagnostics come from the same checks as rb "
       "check. Setup for VS Code, Neovim, Helix and others: docs/editors.md. Exit status: 0 after "
       "shutdown and exit, 1 when the input ends without them.");
-  lsp->callback([&exitCode] {
+  // The callback holds the flag's storage, so it lives as long as the App that parses into it.
+  lsp->callback([&exitCode, stdio] {
+    (void)stdio;
     std::ios::sync_with_stdio(false);
     std::cin.tie(nullptr);
     FileSourceReader reader;

@@ -39,6 +39,10 @@ class Client:
             while True:
                 line = out.readline()
                 if not line:
+                    # The server closed its output (it ended, or crashed): keep what it said on
+                    # standard error for the failure message.
+                    self.proc.wait()
+                    self.stderr_text = self.proc.stderr.read().decode("utf-8", "replace")
                     with self.cond:
                         self.messages.append(None)
                         self.cond.notify_all()
@@ -66,7 +70,8 @@ class Client:
                         self.messages.remove(m)
                         return m
                 if None in self.messages:
-                    raise AssertionError(f"rb lsp closed its output while waiting for {what}")
+                    raise AssertionError(f"rb lsp closed its output while waiting for {what}; "
+                                         f"its standard error: {getattr(self, 'stderr_text', '')[-3000:]}")
                 if not self.cond.wait(timeout):
                     raise AssertionError(f"timed out waiting for {what}")
 
