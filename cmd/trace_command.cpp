@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/diagnostic.h"
+#include "base/text.h"
 #include "exit_codes.h"
 #include "headless_run.h"
 #include "record.h"
@@ -93,29 +94,6 @@ std::string csvField(const std::string& s) {
   for (char c : s) {
     if (c == '"') out += '"';
     out += c;
-  }
-  return out + "\"";
-}
-
-/// Printed text for the text format: quoted with C escapes.
-std::string escapedText(std::string_view s) {
-  std::string out = "\"";
-  for (char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 32) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned char>(c));
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
   }
   return out + "\"";
 }
@@ -322,7 +300,7 @@ class TraceWriter : public RobotObserver {
     }
     std::string out;
     if (r.event == "output") {
-      out = std::to_string(seq_) + " line " + where + ": output " + escapedText(r.text);
+      out = std::to_string(seq_) + " line " + where + ": output " + cQuoted(r.text);
     } else if (r.event == "end") {
       out = std::to_string(seq_) + " end: " + r.status;
       if (!r.limit.empty()) out += " (" + r.limit + ")";

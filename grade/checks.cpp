@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 
+#include "base/text.h"
 #include "text.h"
 
 namespace rb::grade {
@@ -14,32 +15,7 @@ namespace {
 std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 /// A string for a message: quoted, escaped, shortened.
-std::string quote(std::string_view s) {
-  std::string out = "\"";
-  size_t n = 0;
-  for (char c : s) {
-    if (++n > 160) {
-      out += "...";
-      break;
-    }
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      case '\n': out += "\\n"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 32) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned char>(c));
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
+std::string quote(std::string_view s) { return cQuoted(s, 160); }
 
 std::vector<std::string> splitLines(const std::string& s, bool dropFinalEmpty) {
   std::vector<std::string> lines;

@@ -42,14 +42,10 @@ constexpr size_t kMaxStringLength = 64u << 20;
 void concatenate(Value& d, const Value& a, const Value& b) {
   if (&d == &a) {
     if (std::string* s = d.uniqueStr()) {
-      if (b.isStr()) {
-        if (s->size() + b.str().size() > kMaxStringLength) stringTooLong();
-        s->append(b.str());  // also right when b is s itself
-      } else {
-        std::string right = formatValue(b);
-        if (s->size() + right.size() > kMaxStringLength) stringTooLong();
-        s->append(right);
-      }
+      std::string formatted;
+      const std::string& right = b.isStr() ? b.str() : (formatted = formatValue(b));
+      if (s->size() + right.size() > kMaxStringLength) stringTooLong();
+      s->append(right);  // also right when b is s itself
       return;
     }
   }
@@ -561,6 +557,13 @@ void Interpreter::doInput(const Instr& in) {
       stepsLeft = stepsLeft_;         \
     }                                 \
   } while (0)
+// A conditional transfer that jumps gives back the statements its fall-through path counted
+// before the target (Instr::flags; see isConditionalTransfer).
+#define JUMP_TAKEN(in, target) \
+  do {                         \
+    stepsLeft += (in).flags;   \
+    pc = (target);             \
+  } while (0)
 #define SYNC_FRAME() B[Base::Frame] = bases_[Base::Frame]
 // After a call into the host that may block (a built-in, input, a traced line): a host that
 // was asked to end the run (the user quit a live view) has returned at once; stop here.
@@ -755,8 +758,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       auto cmp = static_cast<Cmp>(static_cast<uint8_t>(in.op) -
                                   static_cast<uint8_t>(jumpWhen ? Op::JumpIfEq : Op::JumpIfNotEq));
       if (compare(cmp, B(in.b), B(in.c), in) == jumpWhen) {
-        stepsLeft += in.flags;
-        pc = in.a;
+        JUMP_TAKEN(in, in.a);
       } else {
         ++pc;
       }
@@ -818,8 +820,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       else if (v.isNum()) t = v.d() != 0;
       else operandError(in);
       if (t == (in.op == Op::JumpIfTrue)) {
-        stepsLeft += in.flags;
-        pc = in.a;
+        JUMP_TAKEN(in, in.a);
       } else {
         ++pc;
       }
@@ -841,8 +842,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       if (enter) {
         ++pc;
       } else {
-        stepsLeft += in.flags;
-        pc = in.c;
+        JUMP_TAKEN(in, in.c);
       }
       NEXT;
     }
@@ -856,8 +856,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       if (v.isInt() && limit.isInt() && step.isInt() && !__builtin_add_overflow(v.i(), step.i(), &r)) {
         v.setInt(r);
         if (step.i() > 0 ? r <= limit.i() : r >= limit.i()) {
-          stepsLeft += in.flags;
-          pc = in.c;
+          JUMP_TAKEN(in, in.c);
         } else {
           ++pc;
         }
@@ -867,8 +866,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       double x = v.asDouble() + step.asDouble();
       v.setNum(x);
       if (step.asDouble() > 0 ? x <= limit.asDouble() : x >= limit.asDouble()) {
-        stepsLeft += in.flags;
-        pc = in.c;
+        JUMP_TAKEN(in, in.c);
       } else {
         ++pc;
       }
@@ -991,6 +989,7 @@ void Interpreter::execute(uint32_t& pcOut) {
 
 #undef COUNT_STEPS
 #undef SYNC_FRAME
+#undef JUMP_TAKEN
 #undef STOP_IF_ASKED
 #undef CASE
 #undef NEXT
