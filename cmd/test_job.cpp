@@ -74,11 +74,11 @@ int executeJob(JobOptions opts) {
       if (run.result.error) rec.error = diagRecord(sources, *run.result.error);
       rec.steps = countedSteps(run.result, started);
       rec.seed = run.seed;
-      rec.located = run.machine->robotLocated();
-      const Pose& pose = run.machine->robotPose();
+      rec.located = run.machine->robot().located();
+      const Pose& pose = run.machine->robot().pose();
       rec.pos = {pose.pos.x(), pose.pos.y()};
       rec.heading = pose.heading;
-      rec.penDown = run.machine->robotPenDown();
+      rec.penDown = run.machine->robot().penDown();
       rec.crashed = recorder.crashed;
       rec.path = std::move(recorder.path);
       rec.trail = std::move(recorder.trail);

@@ -154,8 +154,8 @@ class TraceWriter : public RobotObserver {
     Record r;
     r.event = "line";
     r.loc = loc;
-    r.pose = run_.machine->robotPose();
-    r.pen = run_.machine->robotPenDown();
+    r.pose = run_.machine->robot().pose();
+    r.pen = run_.machine->robot().penDown();
     write(r);
   }
 
@@ -164,8 +164,8 @@ class TraceWriter : public RobotObserver {
     r.event = "output";
     r.loc = last_;
     r.text = std::string(text);
-    r.pose = run_.machine->robotPose();
-    r.pen = run_.machine->robotPenDown();
+    r.pose = run_.machine->robot().pose();
+    r.pen = run_.machine->robot().penDown();
     write(r);
   }
 
@@ -186,9 +186,9 @@ class TraceWriter : public RobotObserver {
         r.text = run_.result.error->message;
       }
       r.hasPose = true;
-      r.pose = run_.machine->robotPose();
-      r.pen = run_.machine->robotPenDown();
-      r.located = run_.machine->robotLocated();
+      r.pose = run_.machine->robot().pose();
+      r.pen = run_.machine->robot().penDown();
+      r.located = run_.machine->robot().located();
     } else if (run_.loaded.program && !run_.loaded.compiled) {
       r.status = "rejected";
       r.steps = 0;

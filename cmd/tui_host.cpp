@@ -665,31 +665,30 @@ void TuiHost::drawStatus() {
   s.state = stateText();
   s.speedFactor = clock_.factor();
   s.rSpeed = m.robotSpeed;
-  RealRobot* real = m.realRobot();
-  s.located = m.robotLocated();
-  const Pose& pose = m.robotPose();
+  Robot& robot = m.robot();
+  s.located = robot.located();
+  const Pose& pose = robot.pose();
   s.x = pose.pos.x();
   s.y = pose.pos.y();
   s.heading = pose.heading;
-  s.pen = m.robotPenDown();
-  if (real) {
-    // What the robot itself reported last: no command is sent for the view.
+  s.pen = robot.penDown();
+  // Read without a trace event, a random number or a robot command: the simulator's sensors
+  // now, or what a real robot reported last.
+  if (std::optional<QuietReadings> r = robot.quietReadings()) {
+    s.bumper = r->bumper;
+    s.feel = r->feel;
+  }
+  if (const RealRobot* real = m.realRobot()) {
     const RealRobot::LinkStats& link = real->linkStats();
     s.real = true;
     s.port = real->name();
     s.commands = link.commands;
     if (link.replies > 0) {
-      s.bumper = link.last.bumper;
-      s.feel = link.last.feel;
       s.lastReply = "cmd " + std::to_string(link.lastCode) + "," + std::to_string(link.lastParam) +
                     " -> " + hex2(link.last.feel) + " " + hex2(link.last.bumper) + " " +
                     hex2(link.last.sense) + " = " + std::to_string(link.last.result);
     }
     if (!link.fault.empty()) s.lastReply = link.fault;
-  } else if (m.robot().located()) {
-    // Read straight from the simulator: no trace event, no random number, no robot command.
-    s.bumper = m.robot().bumper();
-    s.feel = m.robot().feel();
   }
   s.range = lastRange_;
   const Rect& r = layout_.status;

@@ -7,17 +7,17 @@
 
 namespace rb::render {
 
-/// The robot's view: visible once rLocate placed it; the pose is the one a trace shows (the
-/// real robot's dead-reckoned pose when one is connected, else the simulator's).
+/// The robot's view: the active robot (the real robot's dead-reckoned pose when one is
+/// connected, else the simulator), visible once rLocate placed it.
 inline RobotView robotView(const Machine& machine) {
+  const Robot& robot = machine.robot();
   RobotView view;
-  view.visible = machine.robotLocated();
-  const Pose& pose = machine.robotPose();
-  view.x = pose.pos.x();
-  view.y = pose.pos.y();
-  view.heading = pose.heading;
-  view.radius = machine.robot().radius();
-  view.colour = machine.robot().colour();
+  view.visible = robot.located();
+  view.x = robot.pose().pos.x();
+  view.y = robot.pose().pos.y();
+  view.heading = robot.pose().heading;
+  view.radius = robot.radius();
+  view.colour = robot.colour();
   return view;
 }
 

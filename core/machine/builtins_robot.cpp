@@ -1,5 +1,6 @@
-// Robot built-ins: rLocate, rForward, rTurn, the sensors. They act on the simulated robot
-// (SimRobot) and report what they did to the Machine's observer for `rb trace`.
+// Robot built-ins: rLocate, rForward, rTurn, the sensors. They act on the active robot
+// (Machine::robot(): the simulator or a connected real robot) and report what they did to the
+// Machine's observer for `rb trace`.
 #include <cmath>
 #include <functional>
 
@@ -45,8 +46,7 @@ Value rLocate(Machine& m, Args& a) {
   double heading = a.has(2) ? a.within(2, kMaxDegrees) : 0;
   double radius = a.numOr(3, sim::kDefaultRadius);
   Colour colour = a.has(4) ? a.colour(4) : static_cast<Colour>(sim::kDefaultColour);
-  if (RealRobot* r = m.realRobot()) r->locate(x, y, heading);
-  else m.robot().locate(x, y, heading, radius, colour);
+  m.robot().locate(x, y, heading, radius, colour);
   report(m, RobotEvent::Locate, a);
   return {};
 }
@@ -61,8 +61,7 @@ std::function<void()> stepper(Machine& m) {
 Value rForward(Machine& m, Args& a) {
   try {
     double distance = a.within(0, kMaxDistance);
-    if (RealRobot* r = m.realRobot()) r->forward(distance);
-    else m.robot().forward(distance, stepper(m));
+    m.robot().forward(distance, stepper(m));
   } catch (const RuntimeError&) {
     report(m, RobotEvent::Crash, a);
     throw;
@@ -73,8 +72,7 @@ Value rForward(Machine& m, Args& a) {
 
 Value rTurn(Machine& m, Args& a) {
   double degrees = a.within(0, kMaxDegrees);
-  if (RealRobot* r = m.realRobot()) r->turn(degrees);
-  else m.robot().turn(degrees, stepper(m));
+  m.robot().turn(degrees, stepper(m));
   report(m, RobotEvent::Turn, a);
   return {};
 }
@@ -83,14 +81,13 @@ Value rSpeed(Machine& m, Args& a) {
   double s = a.within(0, kMaxDistance);
   if (s < 0) throw RuntimeError(a.describe(0) + " must not be negative");
   m.robotSpeed = s;
-  if (RealRobot* r = m.realRobot()) r->speed(s);
+  m.robot().setSpeed(s);
   report(m, RobotEvent::Setting, a);
   return {};
 }
 
 Value rPen(Machine& m, Args& a) {
-  if (RealRobot* r = m.realRobot()) r->pen(a.num(0) != 0);
-  else m.robot().setPen(a.num(0) != 0);
+  m.robot().setPen(a.num(0) != 0);
   report(m, RobotEvent::Pen, a);
   return {};
 }
@@ -106,7 +103,7 @@ Value rInvisible(Machine& m, Args& a) {
 Value rSlip(Machine& m, Args& a) {
   double p = a.num(0);
   if (p < 0 || p > 100) throw RuntimeError(a.describe(0) + " must be a percentage from 0 to 100");
-  m.robot().setSlip(p);
+  m.simulator().setSlip(p);  // the simulator's error; a real robot has its own
   report(m, RobotEvent::Setting, a);
   return {};
 }
@@ -119,17 +116,11 @@ Value rCommPort(Machine& m, Args& a) {
 
 Value rCommand(Machine& m, Args& a) {
   int64_t code = a.integer(0), param = a.integer(1);
-  RealRobot* r = m.realRobot();
-  return sensor(m, a, r ? static_cast<double>(r->command(code, param)) : 0);  // 0 in the simulator
+  return sensor(m, a, static_cast<double>(m.robot().command(code, param)));  // 0 in the simulator
 }
 
-// Each sensor reads the real robot when one is connected, else the simulator.
-#define RB_SENSOR(name, expr)                                      \
-  Value name(Machine& m, Args& a) {                                \
-    RealRobot* real = m.realRobot();                               \
-    auto& robot = m.robot();                                       \
-    return sensor(m, a, real ? (double)real->expr : (double)robot.expr); \
-  }
+#define RB_SENSOR(name, expr) \
+  Value name(Machine& m, Args& a) { return sensor(m, a, static_cast<double>(m.robot().expr)); }
 RB_SENSOR(rBumper, bumper())
 RB_SENSOR(rFeel, feel())
 RB_SENSOR(rSense, sense())
@@ -142,8 +133,7 @@ RB_SENSOR(rGPSY, gpsY())
 #undef RB_SENSOR
 
 Value rChargeLevel(Machine& m, Args& a) {
-  RealRobot* r = m.realRobot();
-  return sensor(m, a, std::floor(r ? r->chargeLevel() : m.robot().chargeLevel()));
+  return sensor(m, a, std::floor(m.robot().chargeLevel()));
 }
 
 }  // namespace

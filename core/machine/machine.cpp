@@ -61,7 +61,7 @@ void Machine::connectRobot(std::unique_ptr<RobotLink> link) {
 void Machine::emit(RobotEvent::Kind kind, std::string_view command, std::string args,
                    std::optional<double> value) {
   if (!observer_) return;
-  RobotEvent e{kind, command, location_, std::move(args), robotPose(), robotPenDown(), value};
+  RobotEvent e{kind, command, location_, std::move(args), robot().pose(), robot().penDown(), value};
   observer_->robotEvent(e);
 }
 

@@ -38,7 +38,7 @@ class RobotObserver {
 class Machine {
  public:
   Machine(Host& host, uint64_t seed)
-      : host_(host), rng_(seed), robot_(canvas_, rng_) {}
+      : host_(host), rng_(seed), sim_(canvas_, rng_) {}
   Machine(const Machine&) = delete;
   Machine& operator=(const Machine&) = delete;
 
@@ -60,25 +60,25 @@ class Machine {
     rngUsed_ = true;
     return rng_;
   }
-  bool rngUsed() const { return rngUsed_ || robot_.slipPercent() > 0; }
+  bool rngUsed() const { return rngUsed_ || sim_.slipPercent() > 0; }
   Canvas& canvas() { return canvas_; }
   const Canvas& canvas() const { return canvas_; }
-  SimRobot& robot() { return robot_; }
-  const SimRobot& robot() const { return robot_; }
 
-  /// The real robot robot commands go to, or nullptr when they go to the simulator.
+  /// The robot the program's robot statements go to: the real robot while one is connected
+  /// (rb's --real, rCommPort n), else the simulator. Traces, pictures and live views show this
+  /// one.
+  Robot& robot() { return real_ ? static_cast<Robot&>(*real_) : sim_; }
+  const Robot& robot() const { return real_ ? static_cast<const Robot&>(*real_) : sim_; }
+  /// The simulator, for what only it has (rSlip's error, the obstacle field).
+  SimRobot& simulator() { return sim_; }
+  /// The connected real robot, for what only it has (the port, what the link did), or nullptr.
   RealRobot* realRobot() { return real_.get(); }
+  const RealRobot* realRobot() const { return real_.get(); }
   /// rCommPort n: opens port n through the host (n = 0: back to the simulator, closing it).
   void useCommPort(int64_t port);
   /// Sends robot commands to the real robot at the end of `link` from now on (rb's --real
   /// opens the link itself), closing any earlier one.
   void connectRobot(std::unique_ptr<RobotLink> link);
-  /// The pose and pen a trace or a live view should show: the real robot's dead-reckoned one
-  /// when connected, else the simulator's.
-  const Pose& robotPose() const { return real_ ? real_->pose() : robot_.pose(); }
-  bool robotPenDown() const { return real_ ? real_->penDown() : robot_.penDown(); }
-  /// Whether the robot a picture shows (real or simulated, as robotPose) was placed by rLocate.
-  bool robotLocated() const { return real_ ? real_->located() : robot_.located(); }
 
   /// The statement running now (the interpreter sets it before calling a built-in).
   SourceLoc location() const { return location_; }
@@ -135,7 +135,7 @@ class Machine {
   Rng rng_;
   bool rngUsed_ = false;
   Canvas canvas_;
-  SimRobot robot_;
+  SimRobot sim_;
   std::unique_ptr<RealRobot> real_;
   SourceLoc location_;
   RobotObserver* observer_ = nullptr;

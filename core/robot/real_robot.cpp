@@ -66,28 +66,37 @@ void RealRobot::sendSplit(const char* what, double amount, uint8_t positiveCode,
   } while (total > 0);
 }
 
-void RealRobot::locate(double x, double y, double heading) {
+std::optional<QuietReadings> RealRobot::quietReadings() {
+  if (!haveReply_) return std::nullopt;
+  return QuietReadings{last_.bumper, last_.feel};
+}
+
+void RealRobot::locate(double x, double y, double heading, double radius, Colour colour) {
   send(kCodes.locate, 0);
   located_ = true;
+  radius_ = radius;
+  colour_ = colour;
   pose_.pos = {x, y};
   pose_.heading = normalizeDegrees(heading);
 }
 
-void RealRobot::forward(double distance) {
+double RealRobot::forward(double distance, const StepFn&) {
   sendSplit("rForward", distance, kCodes.forward, kCodes.backward,
             [this](double d) { pose_.pos += headingVector(pose_.heading) * d; });
+  return distance;
 }
 
-void RealRobot::turn(double degrees) {
+double RealRobot::turn(double degrees, const StepFn&) {
   sendSplit("rTurn", degrees, kCodes.turnRight, kCodes.turnLeft,
             [this](double d) { pose_.heading = normalizeDegrees(pose_.heading + d); });
+  return degrees;
 }
 
-void RealRobot::speed(double delay) {
+void RealRobot::setSpeed(double delay) {
   send(kCodes.speed, static_cast<uint8_t>(std::clamp(std::lround(delay), 0L, 255L)));
 }
 
-void RealRobot::pen(bool down) {
+void RealRobot::setPen(bool down) {
   send(kCodes.pen, down ? 1 : 0);
   penDown_ = down;
 }

@@ -92,21 +92,21 @@ ProgramRun runWith(FakeRobotHost& host, const std::string& text) {
 
 TEST_CASE("moves and turns: one command per 255, the odd code for negative", "[real]") {
   Rig r;
-  r.robot.forward(10);
+  r.robot.forward(10, {});
   CHECK(r.wire->sent == Bytes{{6, 10}});  // SERVO 2008's own example: rForward 10 -> 06 0A
   r.wire->sent.clear();
-  r.robot.forward(600);
+  r.robot.forward(600, {});
   CHECK(r.wire->sent == Bytes{{6, 255}, {6, 255}, {6, 90}});
   r.wire->sent.clear();
-  r.robot.forward(-20);
+  r.robot.forward(-20, {});
   CHECK(r.wire->sent == Bytes{{7, 20}});
   r.wire->sent.clear();
-  r.robot.turn(400);
-  r.robot.turn(-90);
+  r.robot.turn(400, {});
+  r.robot.turn(-90, {});
   CHECK(r.wire->sent == Bytes{{12, 255}, {12, 145}, {13, 90}});
   r.wire->sent.clear();
-  r.robot.forward(0);  // still a command: programs use it to refresh the sensors
-  r.robot.turn(0);
+  r.robot.forward(0, {});  // still a command: programs use it to refresh the sensors
+  r.robot.turn(0, {});
   CHECK(r.wire->sent == Bytes{{6, 0}, {12, 0}});
 }
 
@@ -115,15 +115,15 @@ TEST_CASE("the dead-reckoned pose starts at the screen centre and follows the co
   CHECK(r.robot.pose().pos.x() == 400);
   CHECK(r.robot.pose().pos.y() == 300);
   CHECK(r.robot.pose().heading == 0);
-  r.robot.forward(100);
-  r.robot.turn(90);
-  r.robot.forward(50);
+  r.robot.forward(100, {});
+  r.robot.turn(90, {});
+  r.robot.forward(50, {});
   CHECK(r.robot.pose().pos.x() == Approx(450));
   CHECK(r.robot.pose().pos.y() == Approx(200));
   CHECK(r.robot.pose().heading == Approx(90));
-  r.robot.turn(-450);
+  r.robot.turn(-450, {});
   CHECK(r.robot.pose().heading == Approx(0));
-  r.robot.locate(100, 200, 45);
+  r.robot.locate(100, 200, 45, 20, 1);
   CHECK(r.wire->sent.back() == std::pair<int, int>(3, 0));
   CHECK(r.robot.pose().pos.x() == 100);
   CHECK(r.robot.pose().heading == 45);
@@ -131,8 +131,8 @@ TEST_CASE("the dead-reckoned pose starts at the screen centre and follows the co
 
 TEST_CASE("amounts that are not numbers or absurdly large stop before anything is sent", "[real]") {
   Rig r;
-  CHECK_THROWS_WITH(r.robot.forward(1e9), Catch::Contains("too far for a real robot"));
-  CHECK_THROWS_WITH(r.robot.turn(std::nan("")), Catch::Contains("not a number"));
+  CHECK_THROWS_WITH(r.robot.forward(1e9, {}), Catch::Contains("too far for a real robot"));
+  CHECK_THROWS_WITH(r.robot.turn(std::nan(""), {}), Catch::Contains("not a number"));
   CHECK(r.wire->sent.empty());
 }
 
@@ -151,7 +151,7 @@ TEST_CASE("rFeel, rBumper and rSense read the latest reply, asking once if there
   RobotReply moved;
   moved.feel = 16;
   r.wire->replies.push_back(moved);
-  r.robot.forward(5);
+  r.robot.forward(5, {});
   CHECK(r.robot.feel() == 16);
   CHECK(r.robot.bumper() == 0);
 }
@@ -172,10 +172,10 @@ TEST_CASE("sensor commands carry their parameter and return the 16-bit result", 
         Bytes{{193, 45}, {193, 60}, {48, 10}, {96, 4}, {24, 0}, {66, 0}, {66, 1}, {200, 7}});
   r.wire->sent.clear();
   r.robot.look(-0.2);  // rounds to 0: straight ahead is "right"
-  r.robot.pen(true);
-  r.robot.pen(false);
-  r.robot.speed(5);
-  r.robot.speed(1000);
+  r.robot.setPen(true);
+  r.robot.setPen(false);
+  r.robot.setSpeed(5);
+  r.robot.setSpeed(1000);
   CHECK(r.wire->sent == Bytes{{48, 0}, {129, 1}, {129, 0}, {36, 5}, {36, 255}});
   CHECK_FALSE(r.robot.penDown());
 }
@@ -229,4 +229,31 @@ TEST_CASE("a link fault stops the program at the statement, naming the port", "[
   ProgramRun run = runWith(host, "rCommPort 5\nprint 1\nrForward 10\nprint 2\n");
   CHECK(run.out == "1\n");
   CHECK_THAT(run.diagnostics, Catch::StartsWith("test.bas:3:1: error: robot on fake did not answer within 2 s [rb-runtime-error]\n"));
+}
+
+TEST_CASE("Machine::robot() is the connected real robot, and the simulator again after rCommPort 0",
+          "[real]") {
+  FakeRobotHost host;
+  Machine machine(host, 1);
+  CHECK(&machine.robot() == &machine.simulator());
+  machine.useCommPort(3);
+  REQUIRE(machine.realRobot() != nullptr);
+  CHECK(&machine.robot() == machine.realRobot());
+  // Placing and driving the active robot moves the real robot's pose, not the simulator's.
+  machine.robot().locate(100, 200, 90, 25, 4);
+  machine.robot().forward(30, {});
+  CHECK(machine.robot().located());
+  CHECK(machine.robot().pose().pos.x() == Approx(130));
+  CHECK(machine.robot().radius() == 25);
+  CHECK(machine.robot().colour() == 4);
+  CHECK_FALSE(machine.simulator().located());
+  // Readings a live view shows come from the last reply; none are asked for.
+  size_t sent = host.wire->sent.size();
+  CHECK(machine.robot().quietReadings().has_value());
+  CHECK(host.wire->sent.size() == sent);
+  machine.useCommPort(0);
+  CHECK(machine.realRobot() == nullptr);
+  CHECK(&machine.robot() == &machine.simulator());
+  CHECK_FALSE(machine.robot().located());
+  CHECK_FALSE(machine.robot().quietReadings().has_value());
 }

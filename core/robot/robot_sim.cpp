@@ -38,19 +38,12 @@ size_t fromDistance(const List& list, const std::vector<Index>& starts, double d
 }
 }  // namespace
 
-double normalizeDegrees(double d) {
-  double r = std::fmod(d, 360.0);
-  if (r < 0) r += 360.0;
-  if (r >= 360.0) r = 0;
-  return r;
-}
-
-Eigen::Vector2d headingVector(double degrees) {
-  // Heading 0 points up (-y); the rotation is clockwise on screen, where y grows downward.
-  return Eigen::Rotation2Dd(degrees * kDegToRad) * Eigen::Vector2d(0, -1);
-}
-
 SimRobot::SimRobot(Canvas& canvas, Rng& rng) : canvas_(canvas), rng_(rng), field_(canvas) {}
+
+std::optional<QuietReadings> SimRobot::quietReadings() {
+  if (!located_) return std::nullopt;
+  return QuietReadings{bumper(), feel()};
+}
 
 void SimRobot::requireLocated() const {
   if (!located_) throw RuntimeError("the robot has not been placed: use rLocate x, y first");
@@ -228,7 +221,7 @@ std::string SimRobot::crashMessage() const {
   return msg + ": colour " + name + " at (" + std::to_string(hitX_) + ", " + std::to_string(hitY_) + ")";
 }
 
-double SimRobot::forward(double distance, const std::function<void()>& onStep) {
+double SimRobot::forward(double distance, const StepFn& onStep) {
   requireLocated();
   distance = applySlip(distance);
   if (!std::isfinite(distance)) throw RuntimeError("rForward: the distance is not a number");
@@ -263,7 +256,7 @@ double SimRobot::forward(double distance, const std::function<void()>& onStep) {
   return distance;
 }
 
-double SimRobot::turn(double degrees, const std::function<void()>& onStep) {
+double SimRobot::turn(double degrees, const StepFn& onStep) {
   requireLocated();
   degrees = applySlip(degrees);
   if (!std::isfinite(degrees)) throw RuntimeError("rTurn: the angle is not a number");
@@ -415,22 +408,22 @@ double SimRobot::beacon(Colour colour) {
   return 0;
 }
 
-int SimRobot::compass() const {
+int SimRobot::compass() {
   requireLocated();
   return static_cast<int>(std::lround(pose_.heading)) % 360;
 }
 
-int SimRobot::gpsX() const {
+int SimRobot::gpsX() {
   requireLocated();
   return static_cast<int>(std::lround(pose_.pos.x()));
 }
 
-int SimRobot::gpsY() const {
+int SimRobot::gpsY() {
   requireLocated();
   return static_cast<int>(std::lround(pose_.pos.y()));
 }
 
-double SimRobot::chargeLevel() const {
+double SimRobot::chargeLevel() {
   double used = travelled_ / sim::kChargePixelsPerPercent + turned_ / sim::kChargeDegreesPerPercent;
   return std::max(0.0, sim::kChargeFull - used);
 }

@@ -4,59 +4,59 @@
 // pixels. Geometry constants live in sim_constants.h; docs/robot.md describes the model.
 
 #include <Eigen/Core>
-#include <functional>
 #include <vector>
 
-#include "screen/canvas.h"
-#include "robot/obstacle_field.h"
 #include "base/rng.h"
+#include "robot/obstacle_field.h"
+#include "robot/robot.h"
+#include "screen/canvas.h"
 
 namespace rb {
 
-/// Position (pixels, y down) and heading (degrees, 0 = up, clockwise positive).
-struct Pose {
-  Eigen::Vector2d pos{0, 0};
-  double heading = 0;
-};
-
-class SimRobot {
+class SimRobot final : public Robot {
  public:
   SimRobot(Canvas& canvas, Rng& rng);
 
-  bool located() const { return located_; }
-  const Pose& pose() const { return pose_; }
-  double radius() const { return radius_; }
-  Colour colour() const { return colour_; }
-  bool penDown() const { return penDown_; }
+  bool located() const override { return located_; }
+  const Pose& pose() const override { return pose_; }
+  double radius() const override { return radius_; }
+  Colour colour() const override { return colour_; }
+  bool penDown() const override { return penDown_; }
+  /// Its bumper and infrared sensors, read now (reading moves nothing and draws no number).
+  std::optional<QuietReadings> quietReadings() override;
   double slipPercent() const { return slip_; }
 
   /// rLocate. A robot that would stick out of the screen is moved just inside, touching the
   /// edge. Throws RuntimeError when the robot would then overlap a drawn obstacle.
-  void locate(double x, double y, double heading, double radius, Colour colour);
+  void locate(double x, double y, double heading, double radius, Colour colour) override;
   /// rForward: moves in steps of at most one pixel. A step crashes when the quadrant of the rim
   /// that leads the motion (the front one going forward, the rear one backing up) sweeps over an
   /// obstacle pixel: the robot stays where it last was and RuntimeError("robot crashed into an
   /// obstacle") is thrown. `onStep`, when given, is called after each step (a live view animates
   /// the move; without it the pen draws the whole segment at once). Returns the distance after
   /// slip.
-  double forward(double distance, const std::function<void()>& onStep);
+  double forward(double distance, const StepFn& onStep) override;
   /// rTurn: with `onStep` it turns in steps of one degree, calling it after each; turning in
   /// place never crashes (a turning disc covers nothing new).
-  double turn(double degrees, const std::function<void()>& onStep);
-  void setPen(bool down);
+  double turn(double degrees, const StepFn& onStep) override;
+  void setPen(bool down) override;
+  /// Nothing to do: the run paces simulated motion (Machine::robotStepped).
+  void setSpeed(double) override {}
   void setSlip(double percent) { slip_ = percent; }
 
   // Sensors (see sim_constants.h for the geometry).
-  int bumper();
-  int feel();
-  int sense();
-  double range(double relativeAngle);
-  Colour look(double relativeAngle);
-  double beacon(Colour colour);
-  int compass() const;
-  int gpsX() const;
-  int gpsY() const;
-  double chargeLevel() const;
+  int bumper() override;
+  int feel() override;
+  int sense() override;
+  double range(double relativeAngle) override;
+  Colour look(double relativeAngle) override;
+  double beacon(Colour colour) override;
+  int compass() override;
+  int gpsX() override;
+  int gpsY() override;
+  double chargeLevel() override;
+  /// A raw command means nothing to the simulator: 0.
+  int64_t command(int64_t, int64_t) override { return 0; }
 
   /// True when the disc at `pos` overlaps an obstacle pixel (rLocate's test).
   bool collides(const Eigen::Vector2d& pos);
@@ -122,10 +122,5 @@ class SimRobot {
   /// Where the pen's trail ends (the robot's centre when it last drew).
   Eigen::Vector2d penAt_{0, 0};
 };
-
-/// Degrees normalised to [0, 360).
-double normalizeDegrees(double d);
-/// The unit vector of a heading (0 = up, clockwise; y grows downward).
-Eigen::Vector2d headingVector(double degrees);
 
 }  // namespace rb
