@@ -1,7 +1,7 @@
 #pragma once
 // `rb check FILE...`: finds errors without running anything, in compiler format.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

@@ -1,5 +1,6 @@
 #include "cli_errors.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <string>
 #include <string_view>

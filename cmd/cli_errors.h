@@ -4,7 +4,7 @@
 // rb exits 64. CLI11 parses; this file looks at the command line first for what CLI11 words
 // poorly, and replaces CLI11's failure message.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 #include <optional>
 
 namespace rb::cli {

@@ -1,5 +1,6 @@
 #include "lsp_command.h"
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 

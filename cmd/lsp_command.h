@@ -1,7 +1,7 @@
 #pragma once
 // `rb lsp`: the language server (lsp/) on standard input and output, for editors.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

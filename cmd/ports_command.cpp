@@ -1,5 +1,6 @@
 #include "ports_command.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
 #include <string>

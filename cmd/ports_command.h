@@ -1,7 +1,7 @@
 #pragma once
 // `rb ports`: the serial ports a real robot may be on, and the --port number of each.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

@@ -2,7 +2,7 @@
 // `rb render FILE -o OUT`: runs a program headless and writes its final screen as PNG, SVG or
 // text.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

@@ -1,5 +1,6 @@
 #include "robot_command.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
 #include <optional>

@@ -2,7 +2,7 @@
 // `rb robot --pty`: a robot emulator on a pseudo-terminal, for tests and for users without a
 // robot. The emulation itself lives in drivers/.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

@@ -1,5 +1,6 @@
 #include "run_command.h"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <string>
 

@@ -2,7 +2,7 @@
 // `rb run FILE`: runs a program headless on the simulator (output on stdout, diagnostics on
 // stderr).
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -1,5 +1,6 @@
 #include "test_command.h"
 
+#include <CLI/CLI.hpp>
 #include <unistd.h>
 
 #include <cstdio>

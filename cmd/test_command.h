@@ -2,7 +2,7 @@
 // `rb test [PATH...]`: grades programs against the expectations in their comments or an
 // assignment file, several at a time, each in a child process (grade/).
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

@@ -1,5 +1,6 @@
 #include "test_job.h"
 
+#include <CLI/CLI.hpp>
 #include <string>
 
 #include "exit_codes.h"

@@ -4,7 +4,7 @@
 // diagnostics and of the run (grade/record.h), and the final screen when asked. `rb test`
 // starts one of these per program run, so each runs in a process of its own.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

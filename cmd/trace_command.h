@@ -1,7 +1,7 @@
 #pragma once
 // `rb trace FILE`: runs a program headless and prints what the robot did, one line per event.
 
-#include <CLI/CLI.hpp>
+#include "cli_app.h"
 
 namespace rb::cli {
 

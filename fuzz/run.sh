@@ -37,8 +37,7 @@ echo "run.sh: $n seed programs"
 # from rb's own table, so the fuzzer reaches every command and function.
 dict="$work/rb.dict"
 cp "$root/fuzz/bas.dict" "$dict"
-"$root/build-fuzz/cmd/rb" check --list-builtins --format json |
-  python3 -c 'import json,sys; [print("\"%s\"" % b["name"]) for b in json.load(sys.stdin)]' >> "$dict"
+"$root/build-fuzz/fuzz/rb_fuzz_words" >> "$dict"
 
 artifacts="$root/build-fuzz/fuzz/artifacts"
 mkdir -p "$artifacts"

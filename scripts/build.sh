@@ -4,12 +4,13 @@
 #   --tests     also the unit and golden tests (CMake's BUILD_TESTING)
 #   --sanitize  Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, with the tests,
 #               in build-asan/
-#   --fuzz      clang build of the libFuzzer targets in build-fuzz/
+#   --fuzz      clang build of the libFuzzer targets (only those) in build-fuzz/
 # Warnings are errors only when RB_WERROR=ON is in the environment (CI sets it): a user's build
 # never fails on a warning a newer compiler invents.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=build
+targets=()   # all
 flags=(-DCMAKE_BUILD_TYPE=Release)
 tests=OFF
 for arg in "$@"; do
@@ -17,10 +18,11 @@ for arg in "$@"; do
     --tests) tests=ON ;;
     --sanitize) dir=build-asan; tests=ON; flags=(-DCMAKE_BUILD_TYPE=Debug -DRB_SANITIZE=ON) ;;
     --fuzz) dir=build-fuzz; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON
-                                   -DCMAKE_CXX_COMPILER=clang++) ;;
+                                   -DCMAKE_CXX_COMPILER=clang++)
+            targets=(rb_fuzz rb_fuzz_run rb_fuzz_words) ;;
     *) echo "usage: $0 [--tests] [--sanitize|--fuzz]" >&2; exit 64 ;;
   esac
 done
 flags+=(-DBUILD_TESTING="$tests" -DRB_BUILD_TESTS="$tests" -DRB_WERROR="${RB_WERROR:-OFF}")
 cmake -S . -B "$dir" -G Ninja "${flags[@]}" >/dev/null
-ninja -C "$dir"
+ninja -C "$dir" "${targets[@]}"
