@@ -18,11 +18,20 @@ def run_once(cmd, expect=None, cwd=None):
     """Runs cmd once. Returns (wall seconds, cpu seconds, peak RSS in KiB, stdout text).
     Raises Failed on a non-zero exit or, when `expect` is given, a different standard output
     (compared without trailing white space)."""
-    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err, \
+            tempfile.NamedTemporaryFile("r") as peak:
+        # The peak memory comes from GNU time when there is one: a child forked from Python
+        # keeps Python's high-water mark across exec, so wait4's figure is at least Python's.
+        timed = (["/usr/bin/time", "-f", "%M", "-o", peak.name] + cmd
+                 if os.path.exists("/usr/bin/time") else cmd)
         t = time.perf_counter()
-        p = subprocess.Popen(cmd, stdout=out, stderr=err, cwd=cwd)
+        p = subprocess.Popen(timed, stdout=out, stderr=err, cwd=cwd)
         _, status, usage = os.wait4(p.pid, 0)
         wall = time.perf_counter() - t
+        try:
+            maxrss = int(peak.read().strip().splitlines()[-1])
+        except (ValueError, IndexError):
+            maxrss = usage.ru_maxrss
         p.returncode = os.waitstatus_to_exitcode(status)
         out.seek(0)
         err.seek(0)
@@ -31,7 +40,7 @@ def run_once(cmd, expect=None, cwd=None):
             raise Failed(f"{' '.join(cmd)}: exit {p.returncode}: {err.read().decode(errors='replace')[:400]}")
         if expect is not None and text.strip() != expect.strip():
             raise Failed(f"{' '.join(cmd)}: printed {text.strip()[:200]!r}, expected {expect.strip()[:200]!r}")
-        return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss, text
+        return wall, usage.ru_utime + usage.ru_stime, maxrss, text
 
 
 def alternate(jobs, runs):
