@@ -24,6 +24,7 @@ test_packages=(
 bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)
+  python3-pil           # Pillow, the shapes benchmark's peer (bench/shapes/run.sh)
 )
 for arg in "$@"; do
   case "$arg" in

@@ -4,7 +4,7 @@
 // repeat/until, sub/endsub) stay separate entries; the compiler pairs them, which lets
 // goto/gosub jump into and out of blocks as RobotBASIC allows.
 
-#include <deque>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -30,8 +30,10 @@ struct Expr {
   SourceLoc loc;
   SourceLoc end;  ///< the last character of the expression (set for whole expressions: arguments)
   std::string_view text;
-  int64_t ival = 0;
-  double dval = 0;
+  union {
+    int64_t ival = 0;  ///< Int
+    double dval;       ///< Float
+  };
   std::vector<Expr*> args;
 };
 
@@ -74,10 +76,10 @@ struct Param {
 
 struct Stmt {
   StmtKind kind = StmtKind::End;
+  Tok op = Tok::Eof;
   SourceLoc loc;              ///< first token of the statement
   std::string_view name;      ///< label, sub, command or variable name
   SourceLoc nameLoc;
-  Tok op = Tok::Eof;
   Expr* target = nullptr;
   Expr* value = nullptr;
   std::vector<Expr*> exprs;
@@ -89,15 +91,33 @@ struct Stmt {
                               ///< reported): it only keeps its closer paired
 };
 
-/// Owns every node of a program; pointers stay valid for its lifetime.
+/// Owns every node of a program; pointers stay valid for its lifetime. Nodes come from
+/// blocks of a few hundred, so a node costs its size and nothing more (a big program has
+/// millions of them).
 class Arena {
  public:
-  Expr* expr() { return &exprs_.emplace_back(); }
-  Stmt* stmt() { return &stmts_.emplace_back(); }
+  Expr* expr() { return exprs_.next(); }
+  Stmt* stmt() { return stmts_.next(); }
 
  private:
-  std::deque<Expr> exprs_;
-  std::deque<Stmt> stmts_;
+  template <typename T>
+  class Pool {
+   public:
+    T* next() {
+      if (used_ == kBlock) {
+        blocks_.push_back(std::make_unique<T[]>(kBlock));
+        used_ = 0;
+      }
+      return &blocks_.back()[used_++];
+    }
+
+   private:
+    static constexpr size_t kBlock = 256;
+    std::vector<std::unique_ptr<T[]>> blocks_;
+    size_t used_ = kBlock;
+  };
+  Pool<Expr> exprs_;
+  Pool<Stmt> stmts_;
 };
 
 }  // namespace rb::ast

@@ -45,57 +45,64 @@ class Lexer {
   Lexer(const SourceSet& sources, uint32_t file, DiagnosticList& diags)
       : text_(sources.file(file).text()), file_(file), diags_(diags) {}
 
+  /// Appends the tokens of the next line to `out`: up to and including its Newline token (a
+  /// block comment across lines ends the line too), or, once the text is used up, the final
+  /// Newline and then the Eof token alone.
+  void line(std::vector<Token>& out) {
+    if (done_) {
+      push(out, Tok::Eof, pos_, 0);
+      return;
+    }
+    for (;;) {
+      if (pos_ >= text_.size()) {
+        push(out, Tok::Newline, pos_, 0);
+        done_ = true;
+        return;
+      }
+      size_t before = out.size();
+      element(out);
+      if (out.size() > before && out.back().kind == Tok::Newline) return;
+    }
+  }
+
   std::vector<Token> run() {
     std::vector<Token> out;
     out.reserve(text_.size() / 3 + 4);
-    while (pos_ < text_.size()) {
-      char c = text_[pos_];
-      if (c == '\n') {
-        push(out, Tok::Newline, pos_, 1);
-        ++pos_;
-        ++line_;
-        lineStart_ = pos_;
-        continue;
-      }
-      if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-        ++pos_;
-        continue;
-      }
-      if (c == '/' && peek(1) == '/') {
-        skipToLineEnd();
-        continue;
-      }
-      if (c == '\'') {
-        skipToLineEnd();
-        continue;
-      }
-      if (c == '/' && peek(1) == '*') {
-        blockComment(out);
-        continue;
-      }
-      if (c == '"') {
-        string(out);
-        continue;
-      }
-      if (std::isdigit(static_cast<unsigned char>(c)) ||
-          (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1))))) {
-        number(out);
-        continue;
-      }
-      if (isIdentStart(c)) {
-        identifier(out);
-        continue;
-      }
-      if (!op(out)) {
-        unsigned char uc = static_cast<unsigned char>(c);
-        std::string shown = uc >= 0x20 && uc < 0x7f ? std::string(1, c) : "\\x" + hex(uc);
-        diags_.error(loc(pos_), "unexpected character '" + shown + "'", "rb-unexpected-character");
-        ++pos_;
-      }
-    }
-    push(out, Tok::Newline, pos_, 0);
-    push(out, Tok::Eof, pos_, 0);
+    while (!done_) line(out);
+    line(out);  // Eof
     return out;
+  }
+
+ private:
+  /// Lexes what starts at pos_ (pos_ < text_.size()): a token, a comment, blanks or a bad
+  /// character.
+  void element(std::vector<Token>& out) {
+    char c = text_[pos_];
+    if (c == '\n') {
+      push(out, Tok::Newline, pos_, 1);
+      ++pos_;
+      ++line_;
+      lineStart_ = pos_;
+      return;
+    }
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+      ++pos_;
+      return;
+    }
+    if (c == '/' && peek(1) == '/') return skipToLineEnd();
+    if (c == '\'') return skipToLineEnd();
+    if (c == '/' && peek(1) == '*') return blockComment(out);
+    if (c == '"') return string(out);
+    if (std::isdigit(static_cast<unsigned char>(c)) ||
+        (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1)))))
+      return number(out);
+    if (isIdentStart(c)) return identifier(out);
+    if (!op(out)) {
+      unsigned char uc = static_cast<unsigned char>(c);
+      std::string shown = uc >= 0x20 && uc < 0x7f ? std::string(1, c) : "\\x" + hex(uc);
+      diags_.error(loc(pos_), "unexpected character '" + shown + "'", "rb-unexpected-character");
+      ++pos_;
+    }
   }
 
  private:
@@ -313,9 +320,24 @@ class Lexer {
   size_t pos_ = 0;
   uint32_t line_ = 1;
   size_t lineStart_ = 0;
+  bool done_ = false;  ///< the final Newline was given out
 };
 
 }  // namespace
+
+struct LineLexer::Impl {
+  Lexer lexer;
+};
+
+LineLexer::LineLexer(const SourceSet& sources, uint32_t fileIndex, DiagnosticList& diags)
+    : impl_(std::make_unique<Impl>(Impl{Lexer(sources, fileIndex, diags)})) {}
+
+LineLexer::~LineLexer() = default;
+
+void LineLexer::next(std::vector<Token>& out) {
+  out.clear();
+  impl_->lexer.line(out);
+}
 
 std::vector<Token> lex(const SourceSet& sources, uint32_t fileIndex, DiagnosticList& diags) {
   return Lexer(sources, fileIndex, diags).run();

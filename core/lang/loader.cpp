@@ -4,7 +4,6 @@
 #include <set>
 
 #include "base/source.h"
-#include "lang/lexer.h"
 #include "lang/parser.h"
 
 namespace rb {
@@ -26,8 +25,7 @@ class Loader {
 
  private:
   void parseFile(uint32_t index, int depth, std::vector<ast::Stmt*>& dest) {
-    std::vector<Token> tokens = lex(out_.sources, index, diags_);
-    std::vector<ast::Stmt*> stmts = parseTokens(tokens, out_.arena, out_.builtins, diags_);
+    std::vector<ast::Stmt*> stmts = rb::parseFile(out_.sources, index, out_.arena, out_.builtins, diags_);
     for (ast::Stmt* s : stmts) {
       if (s->kind == ast::StmtKind::Include) {
         include(*s, index, depth, dest);

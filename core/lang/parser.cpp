@@ -6,6 +6,7 @@
 
 #include "lang/abandon.h"
 #include "lang/builtins.h"
+#include "lang/lexer.h"
 #include "lang/suggest.h"
 
 namespace rb {
@@ -49,26 +50,67 @@ std::string quoted(std::string_view text, char quote = '\'') {
   return out;
 }
 
+/// Where the parser's tokens come from, one line at a time (see LineLexer::next).
+class TokenLines {
+ public:
+  virtual ~TokenLines() = default;
+  virtual void next(std::vector<Token>& out) = 0;
+};
+
+/// Straight from the source text: only one line's tokens exist at a time.
+class LexedLines : public TokenLines {
+ public:
+  LexedLines(const SourceSet& sources, uint32_t file, DiagnosticList& diags)
+      : lexer_(sources, file, diags) {}
+  void next(std::vector<Token>& out) override { lexer_.next(out); }
+
+ private:
+  LineLexer lexer_;
+};
+
+/// From tokens lexed beforehand, cut at each Newline.
+class TokenVectorLines : public TokenLines {
+ public:
+  explicit TokenVectorLines(const std::vector<Token>& toks) : toks_(toks) {}
+  void next(std::vector<Token>& out) override {
+    out.clear();
+    while (i_ < toks_.size()) {
+      out.push_back(toks_[i_++]);
+      if (out.back().kind == Tok::Newline || out.back().kind == Tok::Eof) return;
+    }
+    Token eof;
+    if (!toks_.empty()) eof.loc = toks_.back().loc;
+    out.push_back(eof);
+  }
+
+ private:
+  const std::vector<Token>& toks_;
+  size_t i_ = 0;
+};
+
 class Parser {
  public:
-  Parser(const std::vector<Token>& toks, ast::Arena& arena, const BuiltinTable& builtins,
+  Parser(TokenLines& lines, ast::Arena& arena, const BuiltinTable& builtins,
          DiagnosticList& diags)
-      : toks_(toks), arena_(arena), builtins_(builtins), diags_(diags) {}
+      : lines_(lines), arena_(arena), builtins_(builtins), diags_(diags) {}
 
+  /// Parses line by line: toks_ holds the tokens of one line, ending with its Newline (or the
+  /// Eof); nothing in a statement looks past its line.
   std::vector<Stmt*> run() {
     std::vector<Stmt*> out;
-    while (cur().kind != Tok::Eof) {
-      if (cur().kind == Tok::Newline) {
-        ++pos_;
-        continue;
-      }
-      size_t start = pos_;
+    for (;;) {
+      lines_.next(toks_);
+      pos_ = 0;
+      items_.clear();  // what an abandoned line left
+      if (cur().kind == Tok::Eof) break;
+      if (cur().kind == Tok::Newline) continue;
       try {
         line(out);
       } catch (const StatementAbandoned&) {
-        keepBlockOpener(start, out);
+        keepBlockOpener(0, out);
         while (cur().kind != Tok::Newline && cur().kind != Tok::Eof) ++pos_;
       }
+      if (cur().kind == Tok::Eof) break;
     }
     return out;
   }
@@ -369,6 +411,8 @@ class Parser {
         break;
       }
     }
+    s->exprs.shrink_to_fit();
+    s->seps.shrink_to_fit();
   }
 
   // input -> INPUT [prompt (',' | ';')] lvalue
@@ -408,6 +452,7 @@ class Parser {
     Nested level(*this, loc);
     s->body.push_back(statement(true));
     if (accept(Tok::KwElse)) s->body.push_back(statement(true));
+    s->body.shrink_to_fit();
     return s;
   }
 
@@ -424,6 +469,7 @@ class Parser {
     expect(Tok::KwTo, "'to'");
     s->exprs.push_back(expression());
     if (accept(Tok::KwStep)) s->exprs.push_back(expression());
+    s->exprs.shrink_to_fit();
     return s;
   }
 
@@ -568,10 +614,17 @@ class Parser {
     return false;
   }
 
+  /// The arguments go to `out` at exactly their number: the items are gathered on a stack
+  /// first, so that no list keeps spare room (a program has a list for every call).
   void argList(std::vector<Expr*>& out) {
+    size_t base = items_.size();
     do {
-      out.push_back(expression());
+      Expr* e = expression();
+      items_.push_back(e);
     } while (accept(Tok::Comma));
+    out.reserve(out.size() + (items_.size() - base));
+    out.insert(out.end(), items_.begin() + static_cast<long>(base), items_.end());
+    items_.resize(base);
   }
 
   Expr* varExpr(const Token& t) {
@@ -719,7 +772,9 @@ class Parser {
   }
 
 
-  const std::vector<Token>& toks_;
+  TokenLines& lines_;
+  std::vector<Token> toks_;  ///< the line being parsed
+  std::vector<Expr*> items_;  ///< argument lists being gathered (see argList)
   ast::Arena& arena_;
   const BuiltinTable& builtins_;
   DiagnosticList& diags_;
@@ -732,7 +787,14 @@ class Parser {
 
 std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena& arena,
                                     const BuiltinTable& builtins, DiagnosticList& diags) {
-  return Parser(tokens, arena, builtins, diags).run();
+  TokenVectorLines lines(tokens);
+  return Parser(lines, arena, builtins, diags).run();
+}
+
+std::vector<ast::Stmt*> parseFile(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,
+                                  const BuiltinTable& builtins, DiagnosticList& diags) {
+  LexedLines lines(sources, fileIndex, diags);
+  return Parser(lines, arena, builtins, diags).run();
 }
 
 }  // namespace rb

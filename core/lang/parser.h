@@ -17,6 +17,11 @@ class BuiltinTable;
 std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena& arena,
                                     const BuiltinTable& builtins, DiagnosticList& diags);
 
+/// Lexes and parses `sources.file(fileIndex)` line by line: the same statements and
+/// diagnostics as parseTokens(lex(...)), without ever holding the whole file's tokens.
+std::vector<ast::Stmt*> parseFile(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,
+                                  const BuiltinTable& builtins, DiagnosticList& diags);
+
 /// The binary operator table: precedence (higher binds tighter, 0 = not a binary operator) and
 /// associativity. Unary operators bind tighter than every binary one.
 struct BinaryOpInfo {

@@ -193,7 +193,23 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
   if (y < 0 || y >= kHeight) return;
   x1 = std::max(x1, 0);
   x2 = std::min(x2, kWidth - 1);
-  for (int x = x1; x <= x2; ++x) plot(x, y, c);
+  if (x1 > x2) return;
+  // plot() for each pixel, with what is the same for the whole row worked out once: pixels
+  // that already have the colour cost one comparison.
+  Colour* row = &pixels_[static_cast<size_t>(y) * kWidth];
+  const bool obstacle = isObstacleColour(c);
+  bool changed = false;
+  for (int x = x1; x <= x2; ++x) {
+    Colour& p = row[x];
+    if (p == c) continue;
+    if (isObstacleColour(p) != obstacle) {
+      ++obstacleVersion_;
+      obstacleChanges_.add(x, y);
+    }
+    p = c;
+    changed = true;
+  }
+  if (changed) ++version_;
 }
 
 void Canvas::rectangle(Point a, Point b, int width, std::optional<Colour> outline,
@@ -224,6 +240,38 @@ void Canvas::rectangle(Point a, Point b, int width, std::optional<Colour> outlin
   record([&] { return DrawOp{DrawOp::Rect, {{x1, y1}, {x2, y2}}, outline.value_or(0), fill, outline ? width : 0}; });
 }
 
+namespace {
+
+/// The pixels of one row of an ellipse (see Canvas::ellipse): those whose centre lies in the
+/// ellipse with half-axes ax + 0.5 and ay + 0.5 around (cx, cy), for the row dy below the
+/// centre. The rule is the same test per pixel as ever; only the row's two ends are searched:
+/// the test is symmetric about cx and grows with |dx|, so the row is one run of pixels.
+struct EllipseRows {
+  double cx, ax, ay;
+  bool inside(double dx, double dy) const {
+    double u = dx / (ax + 0.5), v = dy / (ay + 0.5);
+    return u * u + v * v <= 1.0;
+  }
+  /// The row's last pixel right of the centre line, as a distance from the centre (>= 0, a
+  /// whole or half number like cx's fraction); negative when the row is empty.
+  double halfWidth(double dy) const {
+    // The first pixel at or right of the centre.
+    double first = std::ceil(cx) - cx;
+    if (!inside(first, dy)) return -1;
+    double v = dy / (ay + 0.5);
+    double t = 1.0 - v * v;
+    double guess = (ax + 0.5) * std::sqrt(t > 0 ? t : 0.0);
+    double d = first + std::floor(guess - first);
+    if (d < first) d = first;
+    // The square root is within a pixel of the answer; the per-pixel test settles it.
+    while (d > first && !inside(d, dy)) d -= 1;
+    while (inside(d + 1, dy)) d += 1;
+    return d;
+  }
+};
+
+}  // namespace
+
 void Canvas::ellipse(Point a, Point b, int width, std::optional<Colour> outline,
                      std::optional<Colour> fill) {
   int x1 = std::min(a.x, b.x), x2 = std::max(a.x, b.x);
@@ -232,23 +280,35 @@ void Canvas::ellipse(Point a, Point b, int width, std::optional<Colour> outline,
   double rx = (x2 - x1) / 2.0, ry = (y2 - y1) / 2.0;
   int w = std::max(width, 1);
   // A pixel is inside when its centre lies in the ellipse grown by half a pixel, so that a
-  // box of zero width or height still draws a line. The outline is the ring of width w.
-  auto inside = [](double dx, double dy, double ax, double ay) {
-    double u = dx / (ax + 0.5), v = dy / (ay + 0.5);
-    return u * u + v * v <= 1.0;
-  };
+  // box of zero width or height still draws a line. The outline is the ring of width w: the
+  // pixels inside the ellipse and not inside the one w pixels smaller.
   double irx = rx - w, iry = ry - w;
   bool hasInner = irx + 0.5 > 0 && iry + 0.5 > 0;
+  const EllipseRows outer{cx, rx, ry}, inner{cx, irx, iry};
   int ylo = std::max(y1, 0), yhi = std::min(y2, kHeight - 1);
-  int xlo = std::max(x1, 0), xhi = std::min(x2, kWidth - 1);
+  // Row ends in doubles: the box may be far larger than the screen.
+  auto draw = [&](int y, double from, double to, Colour c) {
+    from = std::max(from, static_cast<double>(std::max(x1, 0)));
+    to = std::min(to, static_cast<double>(std::min(x2, kWidth - 1)));
+    if (from <= to) span(y, static_cast<int>(from), static_cast<int>(to), c);
+  };
   for (int y = ylo; y <= yhi; ++y) {
-    for (int x = xlo; x <= xhi; ++x) {
-      double dx = x - cx, dy = y - cy;
-      if (!inside(dx, dy, rx, ry)) continue;
-      bool inner = hasInner && inside(dx, dy, irx, iry);
-      if (outline && !inner) plot(x, y, *outline);
-      else if (fill) plot(x, y, *fill);
+    double dy = y - cy;
+    double h = outer.halfWidth(dy);
+    if (h < 0) continue;
+    double left = cx - h, right = cx + h;
+    double ih = hasInner ? inner.halfWidth(dy) : -1;
+    if (!outline) {
+      if (fill) draw(y, left, right, *fill);
+      continue;
     }
+    if (ih < 0) {
+      draw(y, left, right, *outline);
+      continue;
+    }
+    draw(y, left, cx - ih - 1, *outline);
+    draw(y, cx + ih + 1, right, *outline);
+    if (fill) draw(y, cx - ih, cx + ih, *fill);
   }
   record([&] { return DrawOp{DrawOp::Ellipse, {{x1, y1}, {x2, y2}}, outline.value_or(0), fill, outline ? width : 0}; });
 }
@@ -330,8 +390,7 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
     if (penX >= kWidth) break;  // the rest of the text is off the screen
     const Glyph& g = f.glyph(style.font, chr);
     const int left = penX + g.left, top = baseline - g.top;
-    for (const Glyph::Run& r : g.runs)
-      for (int k = 0; k < r.length; ++k) plot(left + r.x + k, top + r.y, c);
+    for (const Glyph::Run& r : g.runs) span(top + r.y, left + r.x, left + r.x + r.length - 1, c);
     penX += g.advance;
   }
   if (style.underline)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 #include <string>
 
@@ -150,4 +151,74 @@ TEST_CASE("canvas: a line from far outside draws only what crosses the screen", 
   int differ = 0;
   for (size_t i = 0; i < a.pixels().size(); ++i) differ += a.pixels()[i] != b.pixels()[i];
   CHECK(differ == 0);  // the same pixels however far the ends lie
+}
+
+namespace {
+
+/// The colour the ellipse as it was drawn before spans gives pixel (x, y) of a white screen:
+/// every pixel of the bounding box tested on its own. The span drawing must agree everywhere.
+Colour ellipsePerPixel(int x, int y, Point a, Point b, int width, std::optional<Colour> outline,
+                       std::optional<Colour> fill) {
+  int x1 = std::min(a.x, b.x), x2 = std::max(a.x, b.x);
+  int y1 = std::min(a.y, b.y), y2 = std::max(a.y, b.y);
+  if (x < x1 || x > x2 || y < y1 || y > y2) return colours::kWhite;
+  double cx = (x1 + x2) / 2.0, cy = (y1 + y2) / 2.0;
+  double rx = (x2 - x1) / 2.0, ry = (y2 - y1) / 2.0;
+  int w = std::max(width, 1);
+  auto inside = [](double dx, double dy, double ax, double ay) {
+    double u = dx / (ax + 0.5), v = dy / (ay + 0.5);
+    return u * u + v * v <= 1.0;
+  };
+  double irx = rx - w, iry = ry - w;
+  bool hasInner = irx + 0.5 > 0 && iry + 0.5 > 0;
+  double dx = x - cx, dy = y - cy;
+  if (!inside(dx, dy, rx, ry)) return colours::kWhite;
+  bool inner = hasInner && inside(dx, dy, irx, iry);
+  if (outline && !inner) return *outline;
+  if (fill) return *fill;
+  return colours::kWhite;
+}
+
+}  // namespace
+
+TEST_CASE("canvas: ellipses drawn by rows are the pixels of the per-pixel rule", "[canvas]") {
+  // Every small size (even and odd, zero width or height), larger and off-screen boxes, each
+  // filled, outlined and both, with several outline widths. Each is drawn on a white screen
+  // and compared over its box and a margin of 2 pixels (on the screen).
+  std::vector<std::pair<Point, Point>> boxes;
+  for (int w = 0; w <= 12; ++w)
+    for (int h = 0; h <= 12; ++h) boxes.push_back({{300, 200}, {300 + w, 200 + h}});
+  for (int k = 0; k < 40; ++k) {
+    int w = 25 + (k * 37) % 400, h = 25 + (k * 53) % 300;
+    boxes.push_back({{400 - w / 2 + k, 300 - h / 2 - k}, {400 + (w + 1) / 2 + k, 300 + h / 2 - k}});
+  }
+  boxes.push_back({{-50, -40}, {90, 70}});       // crosses the top-left corner
+  boxes.push_back({{700, 520}, {900, 650}});     // crosses the bottom-right corner
+  boxes.push_back({{-300, -200}, {1100, 800}});  // larger than the screen
+  boxes.push_back({{-5000, 100}, {5000, 500}});  // far wider than the screen
+  boxes.push_back({{390, -4000}, {410, 4000}});  // far taller
+  boxes.push_back({{900, 100}, {1000, 200}});    // wholly off the screen
+  boxes.push_back({{500, 300}, {100, 100}});     // corners given the other way round
+  const std::vector<std::pair<std::optional<Colour>, std::optional<Colour>>> paints = {
+      {colours::kRed, std::nullopt}, {std::nullopt, colours::kBlue}, {colours::kRed, colours::kGreen}};
+  int checked = 0;
+  Canvas c;
+  for (const auto& [a, b] : boxes)
+    for (const auto& [outline, fill] : paints)
+      for (int width : {1, 2, 3, 7}) {
+        if (!outline && width > 1) continue;  // the width only shapes the outline
+        int x0 = std::max(std::min(a.x, b.x) - 2, 0), x1 = std::min(std::max(a.x, b.x) + 2, Canvas::kWidth - 1);
+        int y0 = std::max(std::min(a.y, b.y) - 2, 0), y1 = std::min(std::max(a.y, b.y) + 2, Canvas::kHeight - 1);
+        c.clear(colours::kWhite);
+        c.ellipse(a, b, width, outline, fill);
+        bool same = true;
+        for (int y = y0; y <= y1 && same; ++y)
+          for (int x = x0; x <= x1 && same; ++x)
+            same = c.at(x, y) == ellipsePerPixel(x, y, a, b, width, outline, fill);
+        if (!same)
+          FAIL_CHECK("ellipse (" << a.x << "," << a.y << ")-(" << b.x << "," << b.y << ") width " << width
+                                 << (outline ? " outlined" : "") << (fill ? " filled" : ""));
+        ++checked;
+      }
+  CHECK(checked > 1500);
 }

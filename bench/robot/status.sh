@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Roaming with a status line (issue 9's first cliff): roam_status.bas, 100,000 sensed steps
+# among obstacles, writes xyText + xyString every N steps, N = 1, 10, 100 and never. Checks the
+# answer of every run, prints medians (wall and processor time), the ratio to the run without
+# a status line (target: within 2x at N = 1) and the peak resident memory.
+# Usage: bench/robot/status.sh [path/to/rb] [-n RUNS]   (default 5 runs each)
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+rb="$here/../../build/cmd/rb"
+runs=5
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -n) runs="$2"; shift 2 ;;
+    *) rb="$1"; shift ;;
+  esac
+done
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+for n in 1 10 100 0; do
+  sed "s/^every = 100\$/every = $n/" "$here/roam_status.bas" > "$dir/every$n.bas"
+done
+python3 - "$rb" "$dir" "$runs" "$here/.." <<'PY'
+import sys
+rb, d, runs = sys.argv[1], sys.argv[2], int(sys.argv[3])
+sys.path.insert(0, sys.argv[4])
+from measure import alternate, machine, ms, mib
+# turns, x, y after 100,000 steps; the status text lies where this robot never drives.
+expect = "864 37 242"
+names = {"every step": 1, "every 10 steps": 10, "every 100 steps": 100, "no status line": 0}
+jobs = {name: ([rb, "run", f"{d}/every{n}.bas"], expect) for name, n in names.items()}
+print(f"machine: {machine()}")
+got = alternate(jobs, runs)
+base = got["no status line"]
+print(f"{'100k roaming steps, status line':32} {'wall':>9} {'cpu':>9} {'vs none':>8} {'peak RSS':>10}")
+for name in names:
+    g = got[name]
+    print(f"{name:32} {ms(g['wall']):>9} {ms(g['cpu']):>9} {g['cpu'] / base['cpu']:7.2f}x {mib(g['rss']):>10}")
+PY
