@@ -41,41 +41,12 @@ HeadlessHost::~HeadlessHost() {
 }
 
 void HeadlessHost::armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) {
-  disarmWatchdog();
   alarms_ = &alarms;
-  watchdogStop_ = false;
-  using Clock = std::chrono::steady_clock;
-  auto deadline = limits.seconds > 0
-                      ? start_ + std::chrono::duration_cast<Clock::duration>(
-                                     std::chrono::duration<double>(limits.seconds))
-                      : Clock::time_point::max();
-  uint64_t memory = limits.memoryBytes;
-  watchdog_ = std::thread([this, deadline, memory, &alarms] {
-    constexpr auto kSample = std::chrono::milliseconds(10);
-    std::unique_lock<std::mutex> lock(watchdogMutex_);
-    for (;;) {
-      auto wake = memory > 0 ? std::min(deadline, Clock::now() + kSample) : deadline;
-      if (watchdogWake_.wait_until(lock, wake, [this] { return watchdogStop_; })) return;
-      if (Clock::now() >= deadline) {
-        alarms.raise(RunAlarms::kDeadline);
-        return;
-      }
-      if (memory > 0 && residentBytes() > memory) {
-        alarms.raise(RunAlarms::kMemory);
-        return;
-      }
-    }
-  });
+  watchdog_.arm(start_, limits, alarms, residentBytes);
 }
 
 void HeadlessHost::disarmWatchdog() {
-  if (!watchdog_.joinable()) return;
-  {
-    std::lock_guard<std::mutex> lock(watchdogMutex_);
-    watchdogStop_ = true;
-  }
-  watchdogWake_.notify_all();
-  watchdog_.join();
+  watchdog_.disarm();
   alarms_ = nullptr;
 }
 

@@ -6,15 +6,13 @@
 
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <functional>
 #include <istream>
-#include <mutex>
-#include <thread>
 
 #include "machine/host.h"
 #include "machine/machine.h"
+#include "machine/watchdog.h"
 #include "input/input_script.h"
 
 namespace rb::cli {
@@ -81,10 +79,7 @@ class HeadlessHost : public Host {
   std::string fdBuffer_;    ///< bytes read from inputFd past the last line returned
   bool fdEnded_ = false;
   RunAlarms* alarms_ = nullptr;
-  std::thread watchdog_;
-  std::mutex watchdogMutex_;
-  std::condition_variable watchdogWake_;
-  bool watchdogStop_ = false;
+  Watchdog watchdog_;
 };
 
 }  // namespace rb::cli

@@ -17,6 +17,7 @@
 #include "machine/builtins.h"
 #include "machine/interpreter.h"
 #include "machine/machine.h"
+#include "machine/watchdog.h"
 #include "png_writer.h"
 #include "robot_view.h"
 #include "svg_writer.h"
@@ -53,6 +54,11 @@ class AnsweringHost : public rb::Host {
   double wallSeconds() override {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
+  /// The run's time limit holds inside long statements too, as in `rb run`.
+  void armWatchdog(const rb::WatchdogLimits& limits, rb::RunAlarms& alarms) override {
+    watchdog.arm(start, limits, alarms, nullptr);
+  }
+  void disarmWatchdog() override { watchdog.disarm(); }
   int64_t heldKey(std::string_view) override { return (++keys % 3) ? 0 : 'a'; }
   int64_t waitKey(std::string_view) override { return 13; }
   rb::MouseState mouse(std::string_view) override { return {400, 300, 1}; }
@@ -64,6 +70,7 @@ class AnsweringHost : public rb::Host {
   double ms = 0;
   int inputs = 0;
   int keys = 0;
+  rb::Watchdog watchdog;
 };
 
 size_t sink = 0;

@@ -119,16 +119,17 @@ Value strContains(Machine&, Args& a) {
   return Value::boolean(findText(a.str(0), a.str(1), 0) != std::string::npos);
 }
 
-Value strReplace(Machine&, Args& a) {
+Value strReplace(Machine& m, Args& a) {
   const std::string& s = a.str(0);
   const std::string& f = a.str(1);
   const std::string& w = a.str(2);
   if (f.empty()) return a[0];
   std::string out;
   size_t pos = 0;
-  for (;;) {
+  for (uint32_t found = 1;; ++found) {
     size_t at = findText(s, f, pos);
     if (at == std::string::npos) break;
+    if (found % 65536 == 0) m.checkAlarms();  // millions of matches: the time limit still holds
     out.append(s, pos, at - pos);
     out += w;
     if (static_cast<int64_t>(out.size()) > kMaxString) throw RuntimeError("replace(): string too long");
