@@ -4,7 +4,12 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <cstdint>
 #include <cstdlib>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace rb {
 
@@ -64,7 +69,27 @@ void ObstacleChanges::addFar(int x, int y) {
   boxes.assign(1, merged);
 }
 
-Canvas::Canvas() : pixels_(static_cast<size_t>(kWidth) * kHeight, colours::kWhite) {}
+namespace {
+/// Asks the kernel to map the pages of [p, p + bytes) at once, before they are written: one
+/// system call instead of a page fault for every 4 KiB (about 470 for the screen), which costs
+/// more than the rest of an empty program's start-up on some virtual machines. Nothing happens
+/// where the kernel cannot (before Linux 5.14, other systems): the pages then fault as usual.
+void prefault([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  const auto page = static_cast<uintptr_t>(4096);
+  const uintptr_t from = (reinterpret_cast<uintptr_t>(p) + page - 1) & ~(page - 1);
+  const uintptr_t to = (reinterpret_cast<uintptr_t>(p) + bytes) & ~(page - 1);
+  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+#endif
+}
+}  // namespace
+
+Canvas::Canvas() {
+  const size_t n = static_cast<size_t>(kWidth) * kHeight;
+  pixels_.reserve(n);
+  prefault(pixels_.data(), n * sizeof(Colour));
+  pixels_.assign(n, colours::kWhite);
+}
 
 void Canvas::push(DrawOp op) {
   ++opsGeneration_;
