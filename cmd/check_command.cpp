@@ -106,10 +106,11 @@ int executeCheck(const CheckOptions& opts) {
 
 }  // namespace
 
-void addCheckCommand(CLI::App& app, int& exitCode) {
+void addCheckCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto opts = std::make_shared<CheckOptions>();
   CLI::App* check = app.add_subcommand(
       "check", "Find errors in programs without running them (compiler-style diagnostics)");
+  if (!withOptions) return;
   check->add_option("files", opts->files, "Program files, or folders whose *.bas files (and below) are checked");
   check->add_option("--format", opts->format,
                     "Output format: text (gcc-style, for people), json (gcc's JSON shape), sarif "

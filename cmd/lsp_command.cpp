@@ -10,11 +10,12 @@
 
 namespace rb::cli {
 
-void addLspCommand(CLI::App& app, int& exitCode) {
+void addLspCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto stdio = std::make_shared<bool>(false);
   CLI::App* lsp = app.add_subcommand(
       "lsp", "Language server for editors: diagnostics, hover, completion, go to definition "
              "(Language Server Protocol on standard input and output)");
+  if (!withOptions) return;
   // Editors' LSP clients (VS Code's among them) add --stdio when they talk over pipes, which is
   // the only transport rb has.
   lsp->add_flag("--stdio", *stdio, "Talk over standard input and output (the default and only transport)");

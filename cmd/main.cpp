@@ -1,9 +1,12 @@
 // rb: a RobotBASIC toolchain. This file only wires the subcommands together and maps outcomes
 // to exit codes; each subcommand lives in its own *_command.cpp.
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <iterator>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "check_command.h"
 #include "cli_errors.h"
@@ -22,15 +25,33 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "rb " RB_VERSION);
   int exitCode = rb::exitcode::kOk;
-  rb::cli::addRunCommand(app, exitCode);
-  rb::cli::addCheckCommand(app, exitCode);
-  rb::cli::addTraceCommand(app, exitCode);
-  rb::cli::addRenderCommand(app, exitCode);
-  rb::cli::addRobotCommand(app, exitCode);
-  rb::cli::addPortsCommand(app, exitCode);
-  rb::cli::addTestCommand(app, exitCode);
-  rb::cli::addTestJobCommand(app, exitCode);
-  rb::cli::addLspCommand(app, exitCode);
+  // The command that runs gets its options; the others only their names and descriptions,
+  // which is all that rb --help and an unknown command's message show (building every
+  // command's options was a fifth of the start-up of an empty program). When the first word
+  // is no command (help, --help, a mistake), every command gets its options.
+  struct Command {
+    const char* name;
+    void (*add)(CLI::App&, int&, bool);
+  };
+  static constexpr Command kCommands[] = {
+      {"run", rb::cli::addRunCommand},       {"check", rb::cli::addCheckCommand},
+      {"trace", rb::cli::addTraceCommand},   {"render", rb::cli::addRenderCommand},
+      {"robot", rb::cli::addRobotCommand},   {"ports", rb::cli::addPortsCommand},
+      {"test", rb::cli::addTestCommand},     {rb::cli::kTestJobCommand, rb::cli::addTestJobCommand},
+      {"lsp", rb::cli::addLspCommand},
+  };
+  std::string_view wanted = argc > 1 ? argv[1] : "";
+  if (wanted == "help" && argc > 2) wanted = argv[2];
+  const bool known = std::any_of(std::begin(kCommands), std::end(kCommands),
+                                 [&](const Command& c) { return wanted == c.name; });
+  for (const Command& c : kCommands) {
+    c.add(app, exitCode, !known || wanted == c.name);
+    auto added = app.get_subcommands([](const CLI::App*) { return true; });
+    if (added.empty() || added.back()->get_name() != c.name) {  // the table names each command
+      std::fprintf(stderr, "rb: internal error: command '%s' is misnamed\n", c.name);
+      return rb::exitcode::kRuntime;
+    }
+  }
   app.footer("Run 'rb COMMAND --help' (or 'rb help COMMAND') for the options of a command. "
              "Manual: man rb.");
   rb::cli::useRbFailureMessages(app);

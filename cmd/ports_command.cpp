@@ -33,10 +33,11 @@ int executePorts(const std::vector<std::string>& devices) {
 
 }  // namespace
 
-void addPortsCommand(CLI::App& app, int& exitCode) {
+void addPortsCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto devices = std::make_shared<std::vector<std::string>>();
   CLI::App* ports = app.add_subcommand(
       "ports", "List the serial ports (USB, Bluetooth) and the --port number of each");
+  if (!withOptions) return;
   ports->add_option("device", *devices,
                     "Describe these devices instead of listing the system's ports");
   ports->footer(

@@ -5,6 +5,7 @@
 
 namespace rb::cli {
 
-void addPortsCommand(CLI::App& app, int& exitCode);
+/// Without options: only the command's name and description (see main.cpp).
+void addPortsCommand(CLI::App& app, int& exitCode, bool withOptions = true);
 
 }  // namespace rb::cli

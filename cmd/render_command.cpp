@@ -122,10 +122,11 @@ int executeRender(const RenderOptions& opts) {
 
 }  // namespace
 
-void addRenderCommand(CLI::App& app, int& exitCode) {
+void addRenderCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto opts = std::make_shared<RenderOptions>();
   CLI::App* render = app.add_subcommand(
       "render", "Run a program headless and write its final screen as PNG, SVG or text");
+  if (!withOptions) return;
   render->add_option("file", opts->run.file, "Program file (- reads the program from standard input)")
       ->required();
   CLI::Option* output = render->add_option(

@@ -6,6 +6,7 @@
 
 namespace rb::cli {
 
-void addRenderCommand(CLI::App& app, int& exitCode);
+/// Without options: only the command's name and description (see main.cpp).
+void addRenderCommand(CLI::App& app, int& exitCode, bool withOptions = true);
 
 }  // namespace rb::cli

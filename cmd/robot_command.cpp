@@ -56,10 +56,11 @@ int executeRobot(const RobotOptions& opts) {
 
 }  // namespace
 
-void addRobotCommand(CLI::App& app, int& exitCode) {
+void addRobotCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto opts = std::make_shared<RobotOptions>();
   CLI::App* robot = app.add_subcommand(
       "robot", "Emulate a real robot on a pseudo-terminal (for rb run --real --port without a robot)");
+  if (!withOptions) return;
   robot->add_flag("--pty", opts->pty,
                   "Open a pseudo-terminal, print its path on the first line and answer the robot "
                   "protocol on it until killed");

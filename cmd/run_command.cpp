@@ -110,9 +110,10 @@ int executeRun(const RunOptions& opts) {
 
 }  // namespace
 
-void addRunCommand(CLI::App& app, int& exitCode) {
+void addRunCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto opts = std::make_shared<RunOptions>();
   CLI::App* run = app.add_subcommand("run", "Run a RobotBASIC program (headless on the simulator)");
+  if (!withOptions) return;
   run->add_option("file", opts->file, "Program file (- reads the program from standard input)")
       ->required();
   addRunLimitOptions(*run, *opts);

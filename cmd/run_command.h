@@ -46,6 +46,7 @@ struct RunOptions {
 /// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.
 void addRunLimitOptions(CLI::App& app, RunOptions& opts);
 
-void addRunCommand(CLI::App& app, int& exitCode);
+/// Without options: only the command's name and description (see main.cpp).
+void addRunCommand(CLI::App& app, int& exitCode, bool withOptions = true);
 
 }  // namespace rb::cli

@@ -98,10 +98,11 @@ int executeTest(const TestOptions& opts) {
 
 }  // namespace
 
-void addTestCommand(CLI::App& app, int& exitCode) {
+void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto opts = std::make_shared<TestOptions>();
   CLI::App* test = app.add_subcommand(
       "test", "Grade programs against the expectations in their comments or an assignment file");
+  if (!withOptions) return;
   test->add_option("paths", opts->paths, "Programs and folders (searched for *.bas); default: .");
   test->add_option("-a,--assignment", opts->assignment,
                    "Grade against this assignment file (TOML; see man rb-test) instead of the "

@@ -104,10 +104,11 @@ int executeJob(JobOptions opts) {
 
 }  // namespace
 
-void addTestJobCommand(CLI::App& app, int& exitCode) {
+void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto opts = std::make_shared<JobOptions>();
   CLI::App* job = app.add_subcommand(kTestJobCommand, "Run one program for rb test (internal)");
   job->group("");  // hidden from rb --help
+  if (!withOptions) return;
   job->add_option("file", opts->run.file, "Program file")->required();
   addRunLimitOptions(*job, opts->run);
   job->add_flag("--tui", opts->run.tui, "As rb run --tui");

@@ -11,6 +11,7 @@ namespace rb::cli {
 /// The name of the hidden subcommand.
 constexpr const char* kTestJobCommand = "test-job";
 
-void addTestJobCommand(CLI::App& app, int& exitCode);
+/// Without options: only the command's name and description (see main.cpp).
+void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions = true);
 
 }  // namespace rb::cli

@@ -400,10 +400,11 @@ int executeTrace(const TraceOptions& opts) {
 
 }  // namespace
 
-void addTraceCommand(CLI::App& app, int& exitCode) {
+void addTraceCommand(CLI::App& app, int& exitCode, bool withOptions) {
   auto opts = std::make_shared<TraceOptions>();
   CLI::App* trace = app.add_subcommand(
       "trace", "Run programs headless and print what the robot did, one line per event");
+  if (!withOptions) return;
   trace->add_option("files", opts->files, "Program files (- reads standard input)")->required();
   addRunLimitOptions(*trace, opts->run);
   trace->add_option("--format", opts->format, "text, jsonl (one JSON object per line) or csv")

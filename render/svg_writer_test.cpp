@@ -3,7 +3,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <iterator>
 #include <regex>
+#include <set>
+#include <sstream>
 
 #include "png_writer.h"
 #include "render_test_support.h"
@@ -110,6 +113,35 @@ TEST_CASE("svg: a trail broken by other drawing is polylines that join end to en
     CHECK(attribute(lines[i], "stroke") == attribute(lines[0], "stroke"));
     CHECK(attribute(lines[i], "stroke-width") == "4");
   }
+}
+
+TEST_CASE("svg: a square driven 1000 times round is about the size of one lap", "[render][svg]") {
+  auto program = [](int laps) {
+    return "rLocate 400, 300\nrInvisible GREEN\nLineWidth 3\nrPen DOWN\nfor i = 1 to " +
+           std::to_string(laps) + "\n  for s = 1 to 4\n    rForward 150\n    rTurn 90\n  next\nnext\n";
+  };
+  auto one = test::runForPicture(program(1));
+  auto many = test::runForPicture(program(1000));
+  REQUIRE(one->result.status == RunStatus::Finished);
+  REQUIRE(many->result.status == RunStatus::Finished);
+  const std::string svgOne = renderSvg(one->canvas(), one->robot(), 1);
+  const std::string svgMany = renderSvg(many->canvas(), many->robot(), 1);
+  CHECK(svgMany.size() < svgOne.size() + 200);
+  // The polylines stroke the same segments (round caps and joins: the same picture), and the
+  // pixels are the same.
+  auto segments = [](const std::string& svg) {
+    std::set<std::string> out;
+    for (const std::string& line : elements(svg, "polyline")) {
+      CHECK(attribute(line, "stroke-width") == "3");
+      std::istringstream in(attribute(line, "points"));
+      std::vector<std::string> pts{std::istream_iterator<std::string>(in), {}};
+      for (size_t i = 0; i + 1 < pts.size(); ++i) out.insert(std::min(pts[i], pts[i + 1]) + " " + std::max(pts[i], pts[i + 1]));
+    }
+    return out;
+  };
+  CHECK(segments(svgMany) == segments(svgOne));
+  CHECK(segments(svgOne).size() == 4);
+  CHECK(many->canvas().pixels() == one->canvas().pixels());
 }
 
 TEST_CASE("svg: the same program and seed give byte-identical SVG", "[render][svg]") {

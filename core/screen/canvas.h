@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "screen/font.h"
@@ -165,7 +166,10 @@ class Canvas {
 
   // ---- the robot's pen trail: a polyline that grows while the pen is down. It is one
   // continuous line: when something else was drawn since the last trailTo, the trail goes on
-  // in a new display-list entry that starts where the last one ended.
+  // in a new display-list entry that starts where the last one ended. A straight segment of
+  // the trail that repeats one already in the display list, in the same colour and width with
+  // nothing else drawn since, is left out (the SVG's picture is the same: a trail is stroked with
+  // round caps and joins, so it covers the union of its segments' strokes; see trailTo).
   void trailStart(double x, double y, int width, Colour c);
   void trailTo(double x, double y);
   void trailEnd() { trailOpen_ = false; }
@@ -198,7 +202,8 @@ class Canvas {
   /// The display list: what was drawn since the last clearScr, for the SVG writer. Kept only
   /// when asked for (rb render -o x.svg); a run that never writes an SVG keeps none, so its
   /// memory does not grow with what it draws. Straight stretches of the pen trail are kept as
-  /// one segment, and a clearScr or a fill of the whole screen drops what it hides.
+  /// one segment, a trail segment retraced with nothing drawn in between is kept once, and a
+  /// clearScr or a fill of the whole screen drops what it hides.
   void keepDisplayList(bool keep);
   const std::vector<DrawOp>& displayList() const { return ops_; }
   /// How far a point of the pen trail may lie from the straight segment that replaces it.
@@ -226,6 +231,15 @@ class Canvas {
     if (keepOps_) push(make());
   }
   void push(DrawOp op);
+  /// The open trail's last segment is final (a corner follows it, or the trail ends): drops it
+  /// when it repeats a segment of trailSeen_. Returns whether it was dropped.
+  bool settleTrailSegment();
+  /// Whether trailSeen_ still describes the display list's end (nothing else pushed since).
+  bool trailSeenCurrent() const {
+    return opsGeneration_ == trailSeenGeneration_ && !ops_.empty() && trailOp_ == ops_.size() - 1 &&
+           ops_.back().kind == DrawOp::Trail;
+  }
+  void pushTrail(std::vector<Point> pts, bool keepSeen);
 
   std::vector<Colour> pixels_;
   std::vector<Colour> saved_;
@@ -251,6 +265,28 @@ class Canvas {
   int trailWidth_ = 1;
   Colour trailColour_ = 0;
   size_t trailOp_ = 0;        ///< the display-list entry the open trail last grew
+  /// One straight segment of the trail, its ends in a fixed order (a segment is the same both
+  /// ways).
+  struct Segment {
+    Point a, b;
+    Segment(Point p, Point q) : a(p), b(q) {
+      if (q.x < p.x || (q.x == p.x && q.y < p.y)) a = q, b = p;
+    }
+    friend bool operator==(const Segment&, const Segment&) = default;
+  };
+  struct SegmentHash {
+    size_t operator()(const Segment& s) const {
+      auto u = [](int v) { return static_cast<uint64_t>(static_cast<uint32_t>(v)); };
+      uint64_t h = (u(s.a.x) << 32 | u(s.a.y)) * 0x9E3779B97F4A7C15ull;
+      h ^= (u(s.b.x) << 32 | u(s.b.y)) + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2);
+      return static_cast<size_t>(h ^ (h >> 29));
+    }
+  };
+  /// The settled segments of the trail entries at the end of the display list, all in the
+  /// trail's colour and width, with nothing else drawn since the first of them.
+  std::unordered_set<Segment, SegmentHash> trailSeen_;
+  uint64_t opsGeneration_ = 0;        ///< counts push(): anything added to the display list
+  uint64_t trailSeenGeneration_ = ~uint64_t{0};  ///< opsGeneration_ when trailSeen_ was current
   std::unique_ptr<FontRenderer> fonts_;
 };
 

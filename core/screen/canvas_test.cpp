@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <set>
+#include <tuple>
 #include <vector>
 #include <string>
 
@@ -123,6 +125,97 @@ TEST_CASE("canvas: the pen trail's straight stretches are single segments", "[ca
     INFO("point " << px << "," << py);
     CHECK(best <= 1.5);
   }
+}
+
+namespace {
+/// The straight segments the trail entries of a display list stroke, each one way round, with
+/// the colour and width: what the SVG's polylines cover (round caps and joins make a polyline
+/// exactly the union of its segments' strokes).
+std::set<std::tuple<int, int, int, int, Colour, int>> trailSegments(const std::vector<DrawOp>& ops) {
+  std::set<std::tuple<int, int, int, int, Colour, int>> out;
+  for (const DrawOp& op : ops) {
+    if (op.kind != DrawOp::Trail) continue;
+    for (size_t i = 0; i + 1 < op.points.size(); ++i) {
+      Point a = op.points[i], b = op.points[i + 1];
+      if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
+      out.emplace(a.x, a.y, b.x, b.y, op.colour, op.width);
+    }
+  }
+  return out;
+}
+
+size_t pointCount(const std::vector<DrawOp>& ops) {
+  size_t n = 0;
+  for (const DrawOp& op : ops) n += op.points.size();
+  return n;
+}
+
+/// Drives `laps` laps of a square of side 120 one pixel at a time, as the robot's pen does.
+void squareLaps(Canvas& c, int laps, double& x, double& y) {
+  const double step[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+  for (int lap = 0; lap < laps; ++lap)
+    for (const auto& s : step)
+      for (int i = 0; i < 120; ++i) c.trailTo(x += s[0], y += s[1]);
+}
+}  // namespace
+
+TEST_CASE("canvas: a retraced trail keeps one lap in the display list", "[canvas]") {
+  Canvas one, many;
+  one.keepDisplayList(true);
+  many.keepDisplayList(true);
+  double x = 400, y = 300;
+  one.trailStart(x, y, 3, colours::kGreen);
+  squareLaps(one, 1, x, y);
+  x = 400, y = 300;
+  many.trailStart(x, y, 3, colours::kGreen);
+  squareLaps(many, 1000, x, y);
+  // The same segments in the same colour and width: the same picture, and about one lap's size.
+  CHECK(trailSegments(many.displayList()) == trailSegments(one.displayList()));
+  CHECK(pointCount(many.displayList()) <= pointCount(one.displayList()) + 4);
+  CHECK(many.pixels() == one.pixels());
+
+  // Lifting the pen and putting it down again with nothing drawn in between: still one lap.
+  many.trailEnd();
+  many.trailStart(x, y, 3, colours::kGreen);
+  squareLaps(many, 10, x, y);
+  CHECK(trailSegments(many.displayList()) == trailSegments(one.displayList()));
+  CHECK(pointCount(many.displayList()) <= pointCount(one.displayList()) + 8);
+}
+
+TEST_CASE("canvas: a retraced trail is kept again after something drawn over it", "[canvas]") {
+  // A red line across the square, then another lap: the lap paints over the line, so it must
+  // stay in the display list after the line.
+  Canvas c;
+  c.keepDisplayList(true);
+  double x = 400, y = 300;
+  c.trailStart(x, y, 1, colours::kGreen);
+  squareLaps(c, 2, x, y);
+  const size_t lapPoints = pointCount(c.displayList());
+  c.line({380, 240}, {540, 240}, 5, colours::kRed);
+  squareLaps(c, 1, x, y);
+  auto line = std::find_if(c.displayList().begin(), c.displayList().end(),
+                           [](const DrawOp& op) { return op.kind == DrawOp::Line; });
+  REQUIRE(line != c.displayList().end());
+  std::vector<DrawOp> after(line + 1, c.displayList().end());
+  CHECK(trailSegments(after).size() == 4);  // the square's four sides, after the line
+  CHECK(pointCount(c.displayList()) <= 2 * lapPoints + 4);
+  // A lap in another colour is kept, and so is the next lap in the first colour over it.
+  Canvas d;
+  d.keepDisplayList(true);
+  x = 400, y = 300;
+  d.trailStart(x, y, 1, colours::kGreen);
+  squareLaps(d, 1, x, y);
+  d.trailStart(x, y, 1, colours::kBlue);
+  squareLaps(d, 1, x, y);
+  d.trailStart(x, y, 1, colours::kGreen);
+  squareLaps(d, 1, x, y);
+  CHECK(trailSegments(d.displayList()).size() == 8);
+  size_t lastBlue = 0;
+  for (size_t i = 0; i < d.displayList().size(); ++i)
+    if (d.displayList()[i].colour == colours::kBlue) lastBlue = i;
+  std::vector<DrawOp> overBlue(d.displayList().begin() + static_cast<long>(lastBlue) + 1, d.displayList().end());
+  CHECK(trailSegments(overBlue).size() == 4);
+  CHECK(d.at(400, 250) == colours::kGreen);
 }
 
 TEST_CASE("canvas: a fill of the whole screen drops what it hides from the display list", "[canvas]") {
