@@ -1,0 +1,5 @@
+# appends1m: s = s + "x", 1,000,000 times; prints the length, 1000000.
+s = ""
+for i in range(1000000):
+    s = s + "x"
+print(len(s))
