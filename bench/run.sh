@@ -91,7 +91,7 @@ IMPLS = [
     ("lua", shutil.which("lua5.4"), "lua", lambda exe, f: [exe, f], None),
     ("yabasic", shutil.which("yabasic"), "yab", lambda exe, f: [exe, f], None),
     ("brandy", shutil.which("brandy"), "bbc", lambda exe, f: [exe, "-quit", f], BRANDY_ENV),
-    ("python", shutil.which("python3"), "py", lambda exe, f: [exe, f], None),
+    ("python", sys.executable, "py", lambda exe, f: [exe, f], None),
 ]
 
 
