@@ -13,6 +13,7 @@
 
 namespace rb {
 
+/// The heap types come last: isHeap() is one comparison.
 enum class VType : uint8_t { Undef, Int, Num, Str, Arr };
 
 class Value;
@@ -39,7 +40,14 @@ class Value {
 
   Value(const Value& o) : type_(o.type_), i_(o.i_) { retain(); }
   Value(Value&& o) noexcept : type_(o.type_), i_(o.i_) { o.type_ = VType::Undef; }
+  // Copies between numbers (the interpreter's common case) are a plain copy of the two words;
+  // only a string or an array on either side takes the reference-counting path.
   Value& operator=(const Value& o) {
+    if (!isHeap() && !o.isHeap()) {
+      type_ = o.type_;
+      i_ = o.i_;
+      return *this;
+    }
     if (this != &o) {
       o.retainConst();
       release();
@@ -66,7 +74,7 @@ class Value {
   bool isNumeric() const { return type_ == VType::Int || type_ == VType::Num; }
   bool isStr() const { return type_ == VType::Str; }
   bool isArr() const { return type_ == VType::Arr; }
-  bool isHeap() const { return type_ == VType::Str || type_ == VType::Arr; }
+  bool isHeap() const { return type_ >= VType::Str; }  // Str or Arr
 
   int64_t i() const { return i_; }
   double d() const { return d_; }
@@ -88,13 +96,17 @@ class Value {
     else if (type_ == VType::Arr) ++a_->refs;
   }
   void retainConst() const { const_cast<Value*>(this)->retain(); }
+  // The last reference frees the object out of line, so that releasing stays a few
+  // instructions wherever it is inlined.
   void release() {
     if (type_ == VType::Str) {
-      if (--s_->refs == 0) delete s_;
+      if (--s_->refs == 0) freeStr(s_);
     } else if (type_ == VType::Arr) {
-      if (--a_->refs == 0) delete a_;
+      if (--a_->refs == 0) freeArr(a_);
     }
   }
+  static void freeStr(StrObj* s);
+  static void freeArr(ArrObj* a);
 
   VType type_;
   union {

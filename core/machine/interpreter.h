@@ -54,7 +54,7 @@ class Interpreter {
   /// sub's parameters and locals. Nothing is copied or changed.
   std::vector<VariableView> variables() const;
   /// Nested gosub and sub-call frames now (0: the main code).
-  size_t callDepth() const { return frames_.size(); }
+  size_t callDepth() const { return depth_; }
   /// The name of the sub running now ("" in the main code and its gosubs).
   std::string_view runningSub() const {
     return sub_ >= 0 ? std::string_view(prog_.subs[static_cast<size_t>(sub_)].name) : std::string_view();
@@ -77,7 +77,7 @@ class Interpreter {
   };
 
   void execute(uint32_t& pc);
-  uint32_t doReturn(const Instr& in);
+  [[noreturn]] void badReturn();
   void doCallBuiltin(const Instr& in, uint32_t pc);
   void doDim(const Instr& in);
   void doPrint(const Instr& in);
@@ -86,6 +86,8 @@ class Interpreter {
   void doDataAppend(const Instr& in);
   bool checkpoint();
   void pushFrame(const Frame& f);
+  void growFrames();
+  bool forLoopStep(const Instr& in);
   /// Makes the stack hold at least `size` values (growing it moves the frame base).
   void ensureStack(size_t size) {
     if (size > stack_.size()) growStack(size);
@@ -96,6 +98,8 @@ class Interpreter {
   bool compare(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
   bool compareOthers(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
   Value& element(const OperandBases& B, uint32_t arrOp, uint32_t idxOp, uint16_t count);
+  Value& element2(const OperandBases& B, const Instr& in);
+  Value& element2Slow(const Instr& in);
   [[noreturn]] void operandError(const Instr& in) const;
   [[noreturn]] void undefined(uint32_t op) const;
   [[noreturn]] void tooDeep() const;
@@ -109,7 +113,9 @@ class Interpreter {
   Machine& m_;
   std::vector<Value> globals_;
   std::vector<Value> stack_;
-  std::vector<Frame> frames_;
+  std::vector<Frame> frames_;  ///< storage of the call frames; the first depth_ are active
+  uint32_t depth_ = 0;
+  uint32_t depthCap_ = 0;      ///< frames that fit before growFrames(): at most maxCallDepth
   uint32_t base_ = 0;
   int32_t sub_ = -1;
   OperandBases bases_;
