@@ -145,6 +145,9 @@ constexpr bool isConditionalTransfer(Op op) {
 
 constexpr uint32_t kBaseShift = 30;
 constexpr uint32_t kIndexMask = (1u << kBaseShift) - 1;
+/// Slots of each base a program may use: the interpreter finds slot i at byte offset i * 16
+/// computed in 32 bits, which drops the base bits only while i stays below 2^26.
+constexpr uint32_t kMaxSlots = 1u << 26;
 enum class Base : uint32_t { Global = 0, Frame = 1, Const = 2 };
 constexpr uint32_t operand(Base base, uint32_t index) {
   return (static_cast<uint32_t>(base) << kBaseShift) | index;

@@ -183,7 +183,7 @@ RB_COLD std::vector<Diagnostic> Interpreter::callChain() const {
       notes.push_back({Severity::Note, SourceLoc{}, "... and " + std::to_string(k + 1) + " calls before"});
       break;
     }
-    uint32_t callPc = f.returnPc - 1;
+    auto callPc = static_cast<uint32_t>(f.ret - prog_.code.data()) - 1;
     if (callPc >= prog_.locs.size()) continue;
     std::string what = f.sub >= 0 ? "sub '" + prog_.subs[static_cast<size_t>(f.sub)].name + "'" : "the gosub";
     notes.push_back({Severity::Note, prog_.locs[callPc],
@@ -387,6 +387,10 @@ RunResult Interpreter::run(const RunLimits& limits) {
   stack_.assign(std::max<size_t>(1024, prog_.mainFrameSize + 16), Value());
   frames_.clear();
   depth_ = depthCap_ = 0;
+  subEntries_.clear();
+  for (const SubInfo& s : prog_.subs)
+    subEntries_.push_back({prog_.code.data() + s.entry, s.paramCount, s.localCount,
+                           s.frameSize + prog_.mainFrameSize + 64});
   base_ = 0;
   sub_ = -1;
   bases_[Base::Global] = globals_.data();
@@ -510,7 +514,7 @@ RB_COLD void Interpreter::badReturn() {
   base_ = f.base;
   sub_ = f.callerSub;
   syncFrame();
-  errorPc_ = f.returnPc - 1;
+  errorPc_ = static_cast<uint32_t>(f.ret - prog_.code.data()) - 1;
   throw RuntimeError("sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
                      "' returned no value (use return with a value)");
 }
@@ -633,6 +637,12 @@ void Interpreter::doInput(const Instr& in) {
 #define NEXT goto *kDispatch[static_cast<uint8_t>(ip->op)]
 #define PC() static_cast<uint32_t>(ip - code)
 
+// GCC merges the handlers' identical tails (the fetch and jump of NEXT) into one shared
+// copy, which puts an extra jump in every handler and makes all of them share one
+// indirect-branch prediction; keeping the copies apart is the point of threaded dispatch.
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((optimize("no-crossjumping")))
+#endif
 void Interpreter::execute(uint32_t& pcOut) {
   const Instr* code = prog_.code.data();
   const Instr* ip = code + pcOut;  // the instruction running
@@ -648,8 +658,13 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(Move) {
       const Instr& in = *ip;
       const Value& s = B(in.b);
-      if (s.isUndef() && !in.flags) operandError(in);
-      B(in.a) = s;
+      Value& d = B(in.a);
+      if (s.isNumeric() && !d.isHeap()) [[likely]] {
+        d.setNumeric(s);
+      } else {
+        if (s.isUndef() && !in.flags) operandError(in);
+        d = s;
+      }
       ++ip;
       NEXT;
     }
@@ -673,27 +688,27 @@ void Interpreter::execute(uint32_t& pcOut) {
       ++ip;
       NEXT;
     }
-    CASE(Sub)
-    CASE(Mul) {
-      const Instr& in = *ip;
-      const Value& a = B(in.b);
-      const Value& b = B(in.c);
-      Value& d = B(in.a);
-      if (a.isInt() && b.isInt()) {
-        int64_t r;
-        bool overflow = in.op == Op::Sub ? __builtin_sub_overflow(a.i(), b.i(), &r)
-                                         : __builtin_mul_overflow(a.i(), b.i(), &r);
-        if (!overflow) d.setInt(r);
-        else if (in.op == Op::Sub) d.setNum(static_cast<double>(a.i()) - static_cast<double>(b.i()));
-        else d.setNum(static_cast<double>(a.i()) * static_cast<double>(b.i()));
-      } else if (a.isNumeric() && b.isNumeric()) {
-        d.setNum(finite(in.op == Op::Sub ? a.asDouble() - b.asDouble() : a.asDouble() * b.asDouble()));
-      } else {
-        operandError(in);
-      }
-      ++ip;
-      NEXT;
-    }
+// - and *: integers while the result fits, else doubles. One handler each (no test of the
+// opcode inside).
+#define ARITHMETIC(overflows, op)                                                   \
+  const Instr& in = *ip;                                                            \
+  const Value& a = B(in.b);                                                         \
+  const Value& b = B(in.c);                                                         \
+  Value& d = B(in.a);                                                               \
+  if (a.isInt() && b.isInt()) {                                                     \
+    int64_t r;                                                                      \
+    if (!overflows(a.i(), b.i(), &r)) d.setInt(r);                                  \
+    else d.setNum(static_cast<double>(a.i()) op static_cast<double>(b.i()));        \
+  } else if (a.isNumeric() && b.isNumeric()) {                                      \
+    d.setNum(finite(a.asDouble() op b.asDouble()));                                 \
+  } else {                                                                          \
+    operandError(in);                                                               \
+  }                                                                                 \
+  ++ip;                                                                             \
+  NEXT
+    CASE(Sub) { ARITHMETIC(__builtin_sub_overflow, -); }
+    CASE(Mul) { ARITHMETIC(__builtin_mul_overflow, *); }
+#undef ARITHMETIC
     CASE(Div) {
       const Instr& in = *ip;
       const Value& a = B(in.b);
@@ -778,43 +793,43 @@ void Interpreter::execute(uint32_t& pcOut) {
       NEXT;
     }
     // The comparisons: one compare() for the value forms and the compare-and-jump forms.
-    CASE(Eq)
-    CASE(Ne)
-    CASE(Lt)
-    CASE(Le)
-    CASE(Gt)
-    CASE(Ge) {
-      const Instr& in = *ip;
-      auto cmp = static_cast<Cmp>(static_cast<uint8_t>(in.op) - static_cast<uint8_t>(Op::Eq));
-      bool r = compare(cmp, B(in.b), B(in.c), in);
-      B(in.a).setInt(r);
-      ++ip;
-      NEXT;
-    }
-    CASE(JumpIfNotEq)
-    CASE(JumpIfNotNe)
-    CASE(JumpIfNotLt)
-    CASE(JumpIfNotLe)
-    CASE(JumpIfNotGt)
-    CASE(JumpIfNotGe)
-    CASE(JumpIfEq)
-    CASE(JumpIfNe)
-    CASE(JumpIfLt)
-    CASE(JumpIfLe)
-    CASE(JumpIfGt)
-    CASE(JumpIfGe) {
-      const Instr& in = *ip;
-      COUNT_STEPS(in);
-      bool jumpWhen = in.op >= Op::JumpIfEq;  // the JumpIf family jumps when the test holds
-      auto cmp = static_cast<Cmp>(static_cast<uint8_t>(in.op) -
-                                  static_cast<uint8_t>(jumpWhen ? Op::JumpIfEq : Op::JumpIfNotEq));
-      if (compare(cmp, B(in.b), B(in.c), in) == jumpWhen) {
-        JUMP_TAKEN(in, in.a);
-      } else {
-        ++ip;
-      }
-      NEXT;
-    }
+#define COMPARE_VALUE(cmp)                          \
+  const Instr& in = *ip;                            \
+  bool r = compare(cmp, B(in.b), B(in.c), in);      \
+  B(in.a).setInt(r);                                \
+  ++ip;                                             \
+  NEXT
+    CASE(Eq) { COMPARE_VALUE(Cmp::Eq); }
+    CASE(Ne) { COMPARE_VALUE(Cmp::Ne); }
+    CASE(Lt) { COMPARE_VALUE(Cmp::Lt); }
+    CASE(Le) { COMPARE_VALUE(Cmp::Le); }
+    CASE(Gt) { COMPARE_VALUE(Cmp::Gt); }
+    CASE(Ge) { COMPARE_VALUE(Cmp::Ge); }
+#undef COMPARE_VALUE
+// One handler per compare-and-jump opcode, each with its comparison known when compiled:
+// the JumpIf family jumps when the test holds, the JumpIfNot family when it does not.
+#define COMPARE_JUMP(cmp, jumpWhen)                          \
+  const Instr& in = *ip;                                     \
+  COUNT_STEPS(in);                                           \
+  if (compare(cmp, B(in.b), B(in.c), in) == (jumpWhen)) {    \
+    JUMP_TAKEN(in, in.a);                                    \
+  } else {                                                   \
+    ++ip;                                                    \
+  }                                                          \
+  NEXT
+    CASE(JumpIfNotEq) { COMPARE_JUMP(Cmp::Eq, false); }
+    CASE(JumpIfNotNe) { COMPARE_JUMP(Cmp::Ne, false); }
+    CASE(JumpIfNotLt) { COMPARE_JUMP(Cmp::Lt, false); }
+    CASE(JumpIfNotLe) { COMPARE_JUMP(Cmp::Le, false); }
+    CASE(JumpIfNotGt) { COMPARE_JUMP(Cmp::Gt, false); }
+    CASE(JumpIfNotGe) { COMPARE_JUMP(Cmp::Ge, false); }
+    CASE(JumpIfEq) { COMPARE_JUMP(Cmp::Eq, true); }
+    CASE(JumpIfNe) { COMPARE_JUMP(Cmp::Ne, true); }
+    CASE(JumpIfLt) { COMPARE_JUMP(Cmp::Lt, true); }
+    CASE(JumpIfLe) { COMPARE_JUMP(Cmp::Le, true); }
+    CASE(JumpIfGt) { COMPARE_JUMP(Cmp::Gt, true); }
+    CASE(JumpIfGe) { COMPARE_JUMP(Cmp::Ge, true); }
+#undef COMPARE_JUMP
     CASE(Neg) {
       const Instr& in = *ip;
       const Value& a = B(in.b);
@@ -941,7 +956,7 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(Gosub) {
       const Instr& in = *ip;
       COUNT_STEPS(in);
-      pushFrame({PC() + 1, base_, kNoOperand, -1, sub_});
+      pushFrame({ip + 1, base_, kNoOperand, -1, sub_});
       base_ += in.b;
       ensureStack(size_t(base_) + prog_.mainFrameSize + 64);
       syncFrame();
@@ -964,23 +979,23 @@ void Interpreter::execute(uint32_t& pcOut) {
       if (fromSub) sub_ = f.callerSub;
       syncFrame();
       SYNC_FRAME();
-      ip = code + f.returnPc;
+      ip = f.ret;
       if (fromSub && f.dest != kNoOperand) B(f.dest) = *result;
       NEXT;
     }
     CASE(CallSub) {
       const Instr& in = *ip;
       COUNT_STEPS(in);
-      pushFrame({PC() + 1, base_, in.c, static_cast<int32_t>(in.a), sub_});
-      const SubInfo& s = prog_.subs[in.a];
+      pushFrame({ip + 1, base_, in.c, static_cast<int32_t>(in.a), sub_});
+      const SubEntry& s = subEntries_[in.a];
       uint32_t newBase = base_ + in.b;
-      ensureStack(size_t(newBase) + s.frameSize + prog_.mainFrameSize + 64);
+      ensureStack(size_t(newBase) + s.stackNeed);
       Value* frame = stack_.data() + newBase;
       for (uint32_t i = s.paramCount; i < s.localCount; ++i) frame[i].clear();
       base_ = newBase;
       sub_ = static_cast<int32_t>(in.a);
       B[Base::Frame] = bases_[Base::Frame] = frame;
-      ip = code + s.entry;
+      ip = s.entry;
       NEXT;
     }
     CASE(CallBuiltin) {

@@ -62,7 +62,7 @@ class Interpreter {
 
  private:
   struct Frame {
-    uint32_t returnPc;
+    const Instr* ret;    ///< the instruction after the call
     uint32_t base;       ///< the caller's frame base
     uint32_t dest;       ///< sub calls: where the result goes (kNoOperand: nowhere)
     int32_t sub;         ///< the sub this frame runs (-1: a gosub)
@@ -73,7 +73,12 @@ class Interpreter {
   struct OperandBases {
     Value* at[3] = {nullptr, nullptr, nullptr};
     Value*& operator[](Base b) { return at[static_cast<uint32_t>(b)]; }
-    Value& operator()(uint32_t x) const { return at[x >> kBaseShift][x & kIndexMask]; }
+    /// Slot i of a base is i * 16 bytes in: shifting in 32 bits drops the base bits (indices
+    /// stay below kMaxSlots), one instruction fewer than masking them.
+    Value& operator()(uint32_t x) const {
+      static_assert(sizeof(Value) == 16, "a slot is 16 bytes");
+      return *reinterpret_cast<Value*>(reinterpret_cast<char*>(at[x >> kBaseShift]) + static_cast<uint32_t>(x << 4));
+    }
   };
 
   void execute(uint32_t& pc);
@@ -113,6 +118,14 @@ class Interpreter {
   Machine& m_;
   std::vector<Value> globals_;
   std::vector<Value> stack_;
+  /// What a call of each sub needs, gathered from Program::subs when a run starts.
+  struct SubEntry {
+    const Instr* entry;
+    uint32_t paramCount;
+    uint32_t localCount;
+    uint32_t stackNeed;  ///< stack slots the call makes sure of past the new frame base
+  };
+  std::vector<SubEntry> subEntries_;
   std::vector<Frame> frames_;  ///< storage of the call frames; the first depth_ are active
   uint32_t depth_ = 0;
   uint32_t depthCap_ = 0;      ///< frames that fit before growFrames(): at most maxCallDepth
