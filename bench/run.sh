@@ -8,7 +8,8 @@
 # against the expected answer (the script fails loudly on a wrong answer or a crash); then each
 # program is run N times per implementation (default 7, in rounds that alternate between the
 # implementations so that background load hits them alike) and the median wall time is
-# reported with its ratio to Lua 5.4, then the median peak memory (maximum resident set size).
+# reported with its ratio to Lua 5.4, then the peak memory (maximum resident set size, measured
+# once per program and implementation with GNU time).
 # A peer that is not installed, or a benchmark without a version for it, is shown as n/a.
 # Results are also written to bench/results/ (git-ignored) as text and JSON.
 set -euo pipefail
@@ -58,6 +59,7 @@ import os
 import platform
 import shutil
 import statistics
+import tempfile
 import subprocess
 import sys
 import threading
@@ -152,12 +154,30 @@ def version(label, exe):
 
 
 class Ran:
-    """What one run left: exit status, output, wall and CPU seconds, peak memory in bytes."""
+    """What one run left: exit status, output, wall and CPU seconds."""
+
+
+# Peak memory comes from GNU time (%M, the maximum resident set size), run as the program's
+# parent: Linux counts in a process's maximum RSS the memory of the process that called exec,
+# so a child that Python forks and execs never reports less than Python's own 15 MiB.
+TIME = "/usr/bin/time" if os.access("/usr/bin/time", os.X_OK) else None
+
+
+def peak_memory(argv, env):
+    """The program's peak memory in bytes (one run), or None without GNU time."""
+    if TIME is None:
+        return None
+    with tempfile.NamedTemporaryFile("r") as out:
+        subprocess.run([TIME, "-f", "%M", "-o", out.name] + argv, stdin=subprocess.DEVNULL,
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+        try:
+            return int(out.read().split()[-1]) * 1024
+        except (ValueError, IndexError):
+            return None
 
 
 def run_once(argv, env):
-    """Runs argv to its end and returns a Ran. os.wait4 gives the child's own resource use,
-    so its peak memory (ru_maxrss) is its alone, not the largest of all children so far."""
+    """Runs argv to its end and returns a Ran (CPU time from os.wait4: this child's own)."""
     start = time.perf_counter()
     p = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, env=env)
@@ -174,7 +194,6 @@ def run_once(argv, env):
     p.stderr.close()
     r.stdout, r.stderr = out, err[0]
     r.cpu = usage.ru_utime + usage.ru_stime
-    r.maxrss = usage.ru_maxrss * 1024  # kilobytes on Linux
     return r
 
 
@@ -186,13 +205,14 @@ header = [
 for label, exe, *_ in IMPLS:
     header.append(f"{label + ':':9} {version(label, exe)}")
 header.append(f"runs:     {runs} per program and implementation; median wall time, "
-              f"ratio to Lua 5.4 in parentheses; then median peak memory (max RSS)")
+              f"ratio to Lua 5.4 in parentheses; then peak memory (max RSS, one run)")
 for line in header:
     print(line)
 print(flush=True)
 
-# 1. Check every answer (this is also the warm-up run).
+# 1. Check every answer (this is also the warm-up run), and measure peak memory once.
 failures = []
+peak = {name: {label: None for label, *_ in IMPLS} for name, _ in BENCHMARKS}
 for name, expected in BENCHMARKS:
     for label, exe, ext, argv_of, env in IMPLS:
         path = program(name, ext)
@@ -204,6 +224,8 @@ for name, expected in BENCHMARKS:
             err = p.stderr.decode(errors="replace").strip()
             failures.append(f"{name}.{ext} ({label}): exit {p.returncode}, printed {got!r}, "
                             f"expected {expected!r}" + (f"\n    stderr: {err[-500:]}" if err else ""))
+        else:
+            peak[name][label] = peak_memory(argv_of(exe, path), env)
 if failures:
     print("FAILED: wrong answers, nothing was timed:", file=sys.stderr)
     for f in failures:
@@ -216,7 +238,6 @@ results = {}
 for name, expected in BENCHMARKS:
     times = {label: [] for label, *_ in IMPLS}
     cpus = {label: [] for label, *_ in IMPLS}
-    rss = {label: [] for label, *_ in IMPLS}
     for _ in range(runs):
         for label, exe, ext, argv_of, env in IMPLS:
             path = program(name, ext)
@@ -230,12 +251,10 @@ for name, expected in BENCHMARKS:
                 sys.exit(1)
             times[label].append(p.elapsed * 1000.0)
             cpus[label].append(p.cpu * 1000.0)
-            rss[label].append(p.maxrss)
     results[name] = {label: (statistics.median(t) if t else None) for label, t in times.items()}
     results[name + ":all"] = times
     results[name + ":cpu"] = cpus
-    results[name + ":rss"] = {label: (statistics.median(m) if m else None)
-                              for label, m in rss.items()}
+    results[name + ":rss"] = peak[name]
 
 # 3. Table.
 labels = [label for label, *_ in IMPLS]
@@ -286,7 +305,7 @@ with open(base + ".json", "w") as f:
         "median_ms": {name: results[name] for name, _ in BENCHMARKS},
         "all_ms": {name: results[name + ":all"] for name, _ in BENCHMARKS},
         "all_cpu_ms": {name: results[name + ":cpu"] for name, _ in BENCHMARKS},
-        "median_max_rss_bytes": {name: results[name + ":rss"] for name, _ in BENCHMARKS},
+        "peak_memory_bytes": {name: results[name + ":rss"] for name, _ in BENCHMARKS},
     }, f, indent=2)
 shown = os.path.relpath(base)
 print(f"\nsaved {shown if not shown.startswith('..') else base}.txt and .json")
