@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Benchmarks rb against Lua 5.4, yabasic and brandy (Matrix Brandy BBC BASIC).
+# Benchmarks rb against Lua 5.4, yabasic, brandy (Matrix Brandy BBC BASIC) and, where a
+# benchmark has a .py version, Python 3.
 #
 #   bench/run.sh [-n N] [path/to/rb]
 #
@@ -7,8 +8,10 @@
 # against the expected answer (the script fails loudly on a wrong answer or a crash); then each
 # program is run N times per implementation (default 7, in rounds that alternate between the
 # implementations so that background load hits them alike) and the median wall time is
-# reported with its ratio to Lua 5.4. A missing peer is shown as n/a. Results are also written
-# to bench/results/ (git-ignored) as text and JSON.
+# reported with its ratio to Lua 5.4, then the peak memory (maximum resident set size, measured
+# once per program and implementation with GNU time).
+# A peer that is not installed, or a benchmark without a version for it, is shown as n/a.
+# Results are also written to bench/results/ (git-ignored) as text and JSON.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -54,11 +57,12 @@ import datetime
 import json
 import os
 import platform
-import resource
 import shutil
 import statistics
+import tempfile
 import subprocess
 import sys
+import threading
 import time
 
 here, rb, runs = sys.argv[1], sys.argv[2], int(sys.argv[3])
@@ -70,6 +74,12 @@ BENCHMARKS = [
     ("calls", "1000000"),
     ("strings", "6377790"),
     ("arrays", "148933"),
+    ("matmul", "546750000"),
+    ("fib", "196418"),
+    ("fib_sub", "196418"),
+    ("callparams", "1500007500000"),
+    ("appends", "100000"),
+    ("appends1m", "1000000"),
 ]
 
 # Brandy on Debian is an SDL build: the dummy video driver keeps it off any display, and the
@@ -83,7 +93,14 @@ IMPLS = [
     ("lua", shutil.which("lua5.4"), "lua", lambda exe, f: [exe, f], None),
     ("yabasic", shutil.which("yabasic"), "yab", lambda exe, f: [exe, f], None),
     ("brandy", shutil.which("brandy"), "bbc", lambda exe, f: [exe, "-quit", f], BRANDY_ENV),
+    ("python", sys.executable, "py", lambda exe, f: [exe, f], None),
 ]
+
+
+def program(name, ext):
+    """The benchmark's version for an implementation, or None when it has none."""
+    path = os.path.join(programs, f"{name}.{ext}")
+    return path if os.path.exists(path) else None
 
 
 def first_line(cmd, env=None):
@@ -131,21 +148,53 @@ def version(label, exe):
         return f"{v}, binary {exe} built {built:%Y-%m-%d %H:%M}"
     if label == "lua":
         return first_line([exe, "-v"])
-    if label == "yabasic":
+    if label in ("yabasic", "python"):
         return first_line([exe, "--version"])
     return first_line([exe, "-version"], BRANDY_ENV)
 
 
+class Ran:
+    """What one run left: exit status, output, wall and CPU seconds."""
+
+
+# Peak memory comes from GNU time (%M, the maximum resident set size), run as the program's
+# parent: Linux counts in a process's maximum RSS the memory of the process that called exec,
+# so a child that Python forks and execs never reports less than Python's own 15 MiB.
+TIME = "/usr/bin/time" if os.access("/usr/bin/time", os.X_OK) else None
+
+
+def peak_memory(argv, env):
+    """The program's peak memory in bytes (one run), or None without GNU time."""
+    if TIME is None:
+        return None
+    with tempfile.NamedTemporaryFile("r") as out:
+        subprocess.run([TIME, "-f", "%M", "-o", out.name] + argv, stdin=subprocess.DEVNULL,
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+        try:
+            return int(out.read().split()[-1]) * 1024
+        except (ValueError, IndexError):
+            return None
+
+
 def run_once(argv, env):
-    """Runs argv; returns (wall seconds, CPU seconds user+system, completed process)."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    """Runs argv to its end and returns a Ran (CPU time from os.wait4: this child's own)."""
     start = time.perf_counter()
-    p = subprocess.run(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                       stderr=subprocess.PIPE, env=env)
-    elapsed = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return elapsed, cpu, p
+    p = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, env=env)
+    err = []
+    reader = threading.Thread(target=lambda: err.append(p.stderr.read()))
+    reader.start()
+    out = p.stdout.read()
+    reader.join()
+    _, status, usage = os.wait4(p.pid, 0)
+    r = Ran()
+    r.elapsed = time.perf_counter() - start
+    p.returncode = r.returncode = os.waitstatus_to_exitcode(status)
+    p.stdout.close()
+    p.stderr.close()
+    r.stdout, r.stderr = out, err[0]
+    r.cpu = usage.ru_utime + usage.ru_stime
+    return r
 
 
 stamp = datetime.datetime.now().astimezone()
@@ -156,24 +205,27 @@ header = [
 for label, exe, *_ in IMPLS:
     header.append(f"{label + ':':9} {version(label, exe)}")
 header.append(f"runs:     {runs} per program and implementation; median wall time, "
-              f"ratio to Lua 5.4 in parentheses")
+              f"ratio to Lua 5.4 in parentheses; then peak memory (max RSS, one run)")
 for line in header:
     print(line)
 print(flush=True)
 
-# 1. Check every answer (this is also the warm-up run).
+# 1. Check every answer (this is also the warm-up run), and measure peak memory once.
 failures = []
+peak = {name: {label: None for label, *_ in IMPLS} for name, _ in BENCHMARKS}
 for name, expected in BENCHMARKS:
     for label, exe, ext, argv_of, env in IMPLS:
-        if exe is None:
+        path = program(name, ext)
+        if exe is None or path is None:
             continue
-        path = os.path.join(programs, f"{name}.{ext}")
-        _, _, p = run_once(argv_of(exe, path), env)
+        p = run_once(argv_of(exe, path), env)
         got = p.stdout.decode(errors="replace").rstrip("\n")
         if p.returncode != 0 or got != expected:
             err = p.stderr.decode(errors="replace").strip()
             failures.append(f"{name}.{ext} ({label}): exit {p.returncode}, printed {got!r}, "
                             f"expected {expected!r}" + (f"\n    stderr: {err[-500:]}" if err else ""))
+        else:
+            peak[name][label] = peak_memory(argv_of(exe, path), env)
 if failures:
     print("FAILED: wrong answers, nothing was timed:", file=sys.stderr)
     for f in failures:
@@ -188,19 +240,21 @@ for name, expected in BENCHMARKS:
     cpus = {label: [] for label, *_ in IMPLS}
     for _ in range(runs):
         for label, exe, ext, argv_of, env in IMPLS:
-            if exe is None:
+            path = program(name, ext)
+            if exe is None or path is None:
                 continue
-            elapsed, cpu, p = run_once(argv_of(exe, os.path.join(programs, f"{name}.{ext}")), env)
+            p = run_once(argv_of(exe, path), env)
             got = p.stdout.decode(errors="replace").rstrip("\n")
             if p.returncode != 0 or got != expected:
                 print(f"FAILED: {name}.{ext} ({label}) printed {got!r} (exit {p.returncode}) "
                       f"while timing, expected {expected!r}", file=sys.stderr)
                 sys.exit(1)
-            times[label].append(elapsed * 1000.0)
-            cpus[label].append(cpu * 1000.0)
+            times[label].append(p.elapsed * 1000.0)
+            cpus[label].append(p.cpu * 1000.0)
     results[name] = {label: (statistics.median(t) if t else None) for label, t in times.items()}
     results[name + ":all"] = times
     results[name + ":cpu"] = cpus
+    results[name + ":rss"] = peak[name]
 
 # 3. Table.
 labels = [label for label, *_ in IMPLS]
@@ -216,11 +270,23 @@ def cell(name, label):
     return f"{ms:.0f} ms ({ms / lua:.2f}x)"
 
 
+def memory(name, label):
+    b = results[name + ":rss"][label]
+    return "n/a" if b is None else f"{b / 1048576:.1f} MiB"
+
+
+def layout(rows):
+    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+    return ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
+
+
 rows = [["benchmark"] + labels]
 for name, _ in BENCHMARKS:
     rows.append([name] + [cell(name, label) for label in labels])
-widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-table = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
+rows_mem = [["peak memory"] + labels]
+for name, _ in BENCHMARKS:
+    rows_mem.append([name] + [memory(name, label) for label in labels])
+table = layout(rows) + [""] + layout(rows_mem)
 for line in table:
     print(line)
 
@@ -239,6 +305,7 @@ with open(base + ".json", "w") as f:
         "median_ms": {name: results[name] for name, _ in BENCHMARKS},
         "all_ms": {name: results[name + ":all"] for name, _ in BENCHMARKS},
         "all_cpu_ms": {name: results[name + ":cpu"] for name, _ in BENCHMARKS},
+        "peak_memory_bytes": {name: results[name + ":rss"] for name, _ in BENCHMARKS},
     }, f, indent=2)
 shown = os.path.relpath(base)
 print(f"\nsaved {shown if not shown.startswith('..') else base}.txt and .json")

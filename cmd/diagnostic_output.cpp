@@ -42,6 +42,7 @@ constexpr Rule kRules[] = {
     {"rb-undefined-label", "goto or gosub to a label that does not exist."},
     {"rb-too-many-arguments", "More than 65535 items in one statement."},
     {"rb-too-many-indices", "An array index with more than 64 dimensions."},
+    {"rb-program-too-large", "More than 67,108,864 variables, constants or temporaries in one place."},
     {"rb-argument-count", "A built-in or sub called with the wrong number of arguments."},
     {"rb-output-argument", "A built-in's output argument that is not a variable."},
     {"rb-reference-argument", "A by-reference (&) sub argument that is not a variable."},

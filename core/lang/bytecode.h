@@ -45,6 +45,8 @@ class BuiltinTable;
   X(JumpIfEq) X(JumpIfNe) X(JumpIfLt) X(JumpIfLe) X(JumpIfGt) X(JumpIfGe)                    \
   /* for: a = control variable, b = limit (step at b+1), c = exit / body target */           \
   X(ForPrep) X(ForLoop)                                                                      \
+  /* ForLoop of a loop whose step is the constant 1 */                                       \
+  X(ForLoop1)                                                                                \
   /* push a return address, frame base += b; pc = a */                                      \
   X(Gosub)                                                                                   \
   /* pop the innermost gosub or sub call; b = result operand when c = 1 */                   \
@@ -57,6 +59,9 @@ class BuiltinTable;
   X(IndexGet)                                                                                \
   /* R[a][R[c]..R[c+count-1]] = R[b] */                                                      \
   X(IndexSet)                                                                                \
+  /* two indices into the global array G[count], each index any operand:                */  \
+  /* R[a] = G[count][R[b], R[c]] / G[count][R[b], R[c]] = R[a]                          */  \
+  X(IndexGet2) X(IndexSet2)                                                                  \
   /* R[a] = new array with the `count` extents R[c].. */                                     \
   X(Dim)                                                                                     \
   /* append R[b] to the 1-D array R[a] (creating it) */                                      \
@@ -110,7 +115,8 @@ struct Instr {
   Op op;
   uint8_t flags = 0;  ///< Move: kMoveMayBeUnassigned; conditional transfers: steps given back when taken
   union {
-    uint16_t count = 0;  ///< consecutive operands read (arguments, indices, items, extents)
+    uint16_t count = 0;  ///< consecutive operands read (arguments, indices, items, extents);
+                       ///< IndexGet2/IndexSet2: the array's global slot
     int16_t steps;       ///< control transfers: statements counted since the previous one
   };
   uint32_t a = 0, b = 0, c = 0;
@@ -121,7 +127,7 @@ static_assert(sizeof(Instr) == 16, "an instruction stays 16 bytes");
 constexpr bool isTransfer(Op op) {
   switch (op) {
     case Op::Jump: case Op::JumpIfFalse: case Op::JumpIfTrue: case Op::ForPrep:
-    case Op::ForLoop: case Op::Gosub: case Op::Return: case Op::CallSub: case Op::Steps:
+    case Op::ForLoop: case Op::ForLoop1: case Op::Gosub: case Op::Return: case Op::CallSub: case Op::Steps:
     case Op::End:
       return true;
     default:
@@ -134,11 +140,14 @@ constexpr bool isTransfer(Op op) {
 /// (which the target's next transfer reports again).
 constexpr bool isConditionalTransfer(Op op) {
   return op == Op::JumpIfFalse || op == Op::JumpIfTrue || op == Op::ForPrep || op == Op::ForLoop ||
-         isCompareJump(op);
+         op == Op::ForLoop1 || isCompareJump(op);
 }
 
 constexpr uint32_t kBaseShift = 30;
 constexpr uint32_t kIndexMask = (1u << kBaseShift) - 1;
+/// Slots of each base a program may use: the interpreter finds slot i at byte offset i * 16
+/// computed in 32 bits, which drops the base bits only while i stays below 2^26.
+constexpr uint32_t kMaxSlots = 1u << 26;
 enum class Base : uint32_t { Global = 0, Frame = 1, Const = 2 };
 constexpr uint32_t operand(Base base, uint32_t index) {
   return (static_cast<uint32_t>(base) << kBaseShift) | index;

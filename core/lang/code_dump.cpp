@@ -94,6 +94,7 @@ class Dumper {
         break;
       case Op::ForPrep:
       case Op::ForLoop:
+      case Op::ForLoop1:
         targets_.insert(in.c);
         break;
       default:
@@ -140,6 +141,7 @@ class Dumper {
         return r(in.a) + " from, " + r(in.b) + " to, " + r(in.b + 1) + " step, exit -> " +
                std::to_string(in.c);
       case Op::ForLoop:
+      case Op::ForLoop1:
         return r(in.a) + ", " + r(in.b) + ", " + r(in.b + 1) + ", body -> " + std::to_string(in.c);
       case Op::Gosub:
         return "-> " + std::to_string(in.a) + ", frame +" + std::to_string(in.b);
@@ -160,6 +162,10 @@ class Dumper {
         return r(in.a) + ", " + r(in.b) + "[" + range(in.c, in.count) + "]";
       case Op::IndexSet:
         return r(in.a) + "[" + range(in.c, in.count) + "], " + r(in.b);
+      case Op::IndexGet2:
+        return r(in.a) + ", " + r(operand(Base::Global, in.count)) + "[" + r(in.b) + ", " + r(in.c) + "]";
+      case Op::IndexSet2:
+        return r(operand(Base::Global, in.count)) + "[" + r(in.b) + ", " + r(in.c) + "], " + r(in.a);
       case Op::Dim:
         return r(in.a) + "[" + range(in.c, in.count) + "]";
       case Op::DataAppend:

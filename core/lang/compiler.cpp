@@ -1,6 +1,7 @@
 // The compiler's driver: declarations, the walk over the statement list, emitting and patching
 // instructions, and the constant pool. The chapters are listed in compiler_internal.h.
 
+#include <algorithm>
 #include <cstring>
 #include <optional>
 
@@ -46,6 +47,12 @@ void Compiler::run() {
   p_.mainFrameSize = global_.maxTemp;
   resolveLabels();
   p_.globalCount = static_cast<uint32_t>(p_.globalNames.size());
+  size_t slots = std::max({p_.globalNames.size(), p_.constants.size(), size_t(p_.mainFrameSize)});
+  for (const SubInfo& s : p_.subs) slots = std::max<size_t>(slots, s.frameSize);
+  if (slots >= kMaxSlots)
+    diags_.error(lastLoc(), "the program is too large (more than " + std::to_string(kMaxSlots) +
+                                " variables, constants or temporaries in one place)",
+                 "rb-program-too-large");
 }
 
 /// Pass 1: finds labels and subs before compiling, so that forward references resolve.
@@ -206,7 +213,7 @@ void Compiler::flushSteps() {
 
 void Compiler::patch(uint32_t pc, Target t) {
   Instr& in = p_.code[pc];
-  if (in.op == Op::ForPrep || in.op == Op::ForLoop) in.c = t.pc;
+  if (in.op == Op::ForPrep || in.op == Op::ForLoop || in.op == Op::ForLoop1) in.c = t.pc;
   else in.a = t.pc;
   if (isConditionalTransfer(in.op)) {
     // Both paths count `steps`; only the taken one skips the statements the fall-through path

@@ -128,7 +128,10 @@ void Compiler::nextStmt(const Stmt& s) {
          "rb-unmatched-block");
   }
   patchAll(b.continuePatches, placeTarget());
-  patch(emitTransfer(Op::ForLoop, b.forVar, b.forLimit, 0, s.loc), b.bodyStart);
+  // A loop without a step, or with the step 1, counts up by one: ForLoop1 need not read the step.
+  const Expr* step = b.stmt->exprs.size() > 2 ? b.stmt->exprs[2] : nullptr;
+  Op op = !step || (step->kind == ExprKind::Int && step->ival == 1) ? Op::ForLoop1 : Op::ForLoop;
+  patch(emitTransfer(op, b.forVar, b.forLimit, 0, s.loc), b.bodyStart);
   patchAll(b.breakPatches, placeTarget());
 }
 

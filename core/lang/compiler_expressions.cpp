@@ -82,10 +82,9 @@ uint32_t Compiler::expr(const Expr* e, uint32_t dest) {
     }
     case ExprKind::Index: {
       checkName(e->text, e->loc, NamePlace::Array);
-      uint32_t arr = variable(e->text);
-      auto [idx, n] = indices(*e);
+      Element el = element(*e);
       uint32_t d = dest != kNoOperand ? dest : temp();
-      emit(Op::IndexGet, d, arr, idx, e->loc, n);
+      emitIndexGet(d, el, e->loc);
       return d;
     }
     case ExprKind::Call: {

@@ -138,6 +138,18 @@ class Compiler {
   void callBuiltin(const Builtin& b, const std::vector<Expr*>& args, const std::vector<Tok>* seps,
                    uint32_t dest, SourceLoc loc);
   void store(const Expr& target, uint32_t v);
+  /// The operands of an element `arr[i, ...]`: the array, and its indices either in
+  /// consecutive slots (idx, n of them) or, for two indices into a global array, as two
+  /// operands anywhere (idx and idx2, for IndexGet2/IndexSet2).
+  struct Element {
+    uint32_t arr = 0;
+    uint32_t idx = 0;
+    uint16_t n = 0;
+    uint32_t idx2 = kNoOperand;
+  };
+  Element element(const Expr& e);
+  void emitIndexGet(uint32_t dest, const Element& el, SourceLoc loc);
+  void emitIndexSet(const Element& el, uint32_t v, SourceLoc loc);
   std::pair<uint32_t, uint16_t> indices(const Expr& e);
   uint32_t separators(const std::vector<Tok>& seps);
   uint32_t items(const std::vector<Expr*>& exprs, size_t from);

@@ -1,6 +1,8 @@
 // The compiler, chapter "statements": assignment, print, input, dim, data and built-in commands
 // (and the argument passing of built-in calls, which expressions share).
 
+#include <tuple>
+
 #include "lang/compiler_internal.h"
 
 namespace rb::compiler {
@@ -35,22 +37,21 @@ void Compiler::assign(const Stmt& s) {
     }
   }
   // Array element.
-  uint32_t arr = variable(t->text);
-  auto [idx, n] = indices(*t);
+  Element el = element(*t);
   if (s.op == Tok::Assign) {
     uint32_t v = expr(s.value);
-    emit(Op::IndexSet, arr, v, idx, s.loc, n);
+    emitIndexSet(el, v, s.loc);
     return;
   }
   uint32_t cur = temp();
-  emit(Op::IndexGet, cur, arr, idx, t->loc, n);
+  emitIndexGet(cur, el, t->loc);
   if (s.op == Tok::PlusPlus || s.op == Tok::MinusMinus) {
     emit(s.op == Tok::PlusPlus ? Op::Add : Op::Sub, cur, cur, intConst(1), s.loc);
   } else {
     uint32_t r = expr(s.value);
     emit(compoundOp(s.op), cur, cur, r, s.loc);
   }
-  emit(Op::IndexSet, arr, cur, idx, s.loc, n);
+  emitIndexSet(el, cur, s.loc);
 }
 
 void Compiler::print(const Stmt& s) {
@@ -73,9 +74,7 @@ void Compiler::input(const Stmt& s) {
   }
   uint32_t t = temp();
   emit(Op::Input, t, prompt, hasPrompt, s.loc);
-  uint32_t arr = variable(s.target->text);
-  auto [idx, n] = indices(*s.target);
-  emit(Op::IndexSet, arr, t, idx, s.loc, n);
+  emitIndexSet(element(*s.target), t, s.loc);
 }
 
 void Compiler::dim(const Stmt& s) {
@@ -179,13 +178,40 @@ void Compiler::callBuiltin(const Builtin& b, const std::vector<Expr*>& args,
 
 /// Stores operand `v` into the variable or array element `target`.
 void Compiler::store(const Expr& target, uint32_t v) {
-  uint32_t var = variable(target.text);
   if (target.kind == ExprKind::Var) {
-    emit(Op::Move, var, v, 0, target.loc);
+    emit(Op::Move, variable(target.text), v, 0, target.loc);
     return;
   }
-  auto [idx, n] = indices(target);
-  emit(Op::IndexSet, var, v, idx, target.loc, n);
+  emitIndexSet(element(target), v, target.loc);
+}
+
+/// The array and index operands of the element `e` names.
+Compiler::Element Compiler::element(const Expr& e) {
+  Element el;
+  el.arr = variable(e.text);
+  if (e.args.size() == 2 && operandBase(el.arr) == Base::Global && operandIndex(el.arr) <= 0xffff) {
+    // Two indices, each used where it is (no copies into consecutive slots).
+    el.idx = expr(e.args[0]);
+    el.idx2 = expr(e.args[1]);
+    el.n = 2;
+    return el;
+  }
+  std::tie(el.idx, el.n) = indices(e);
+  return el;
+}
+
+void Compiler::emitIndexGet(uint32_t dest, const Element& el, SourceLoc loc) {
+  if (el.idx2 != kNoOperand)
+    emit(Op::IndexGet2, dest, el.idx, el.idx2, loc, static_cast<uint16_t>(operandIndex(el.arr)));
+  else
+    emit(Op::IndexGet, dest, el.arr, el.idx, loc, el.n);
+}
+
+void Compiler::emitIndexSet(const Element& el, uint32_t v, SourceLoc loc) {
+  if (el.idx2 != kNoOperand)
+    emit(Op::IndexSet2, v, el.idx, el.idx2, loc, static_cast<uint16_t>(operandIndex(el.arr)));
+  else
+    emit(Op::IndexSet, el.arr, v, el.idx, loc, el.n);
 }
 
 /// Index operands of an Index expression: a single index is used in place; several go to

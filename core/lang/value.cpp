@@ -7,6 +7,9 @@
 
 namespace rb {
 
+void Value::freeStr(StrObj* s) { delete s; }
+void Value::freeArr(ArrObj* a) { delete a; }
+
 Value Value::string(std::string s) {
   Value r;
   r.type_ = VType::Str;

@@ -13,6 +13,7 @@
 
 namespace rb {
 
+/// The heap types come last: isHeap() is one comparison.
 enum class VType : uint8_t { Undef, Int, Num, Str, Arr };
 
 class Value;
@@ -39,7 +40,14 @@ class Value {
 
   Value(const Value& o) : type_(o.type_), i_(o.i_) { retain(); }
   Value(Value&& o) noexcept : type_(o.type_), i_(o.i_) { o.type_ = VType::Undef; }
+  // Copies between numbers (the interpreter's common case) are a plain copy of the two words;
+  // only a string or an array on either side takes the reference-counting path.
   Value& operator=(const Value& o) {
+    if (!isHeap() && !o.isHeap()) {
+      type_ = o.type_;
+      i_ = o.i_;
+      return *this;
+    }
     if (this != &o) {
       o.retainConst();
       release();
@@ -63,10 +71,10 @@ class Value {
   bool isUndef() const { return type_ == VType::Undef; }
   bool isInt() const { return type_ == VType::Int; }
   bool isNum() const { return type_ == VType::Num; }
-  bool isNumeric() const { return type_ == VType::Int || type_ == VType::Num; }
+  bool isNumeric() const { return static_cast<uint8_t>(static_cast<uint8_t>(type_) - 1) < 2; }  // Int or Num
   bool isStr() const { return type_ == VType::Str; }
   bool isArr() const { return type_ == VType::Arr; }
-  bool isHeap() const { return type_ == VType::Str || type_ == VType::Arr; }
+  bool isHeap() const { return type_ >= VType::Str; }  // Str or Arr
 
   int64_t i() const { return i_; }
   double d() const { return d_; }
@@ -81,20 +89,31 @@ class Value {
   void setInt(int64_t v) { if (isHeap()) release(); type_ = VType::Int; i_ = v; }
   void setNum(double v) { if (isHeap()) release(); type_ = VType::Num; d_ = v; }
   void clear() { release(); type_ = VType::Undef; i_ = 0; }
+  /// Copies a number into a value that holds no string or array (nothing to release).
+  void setNumeric(const Value& o) { type_ = o.type_; i_ = o.i_; }
 
  private:
+  // Numbers pass both with one comparison (isHeap).
   void retain() {
-    if (type_ == VType::Str) ++s_->refs;
-    else if (type_ == VType::Arr) ++a_->refs;
-  }
-  void retainConst() const { const_cast<Value*>(this)->retain(); }
-  void release() {
-    if (type_ == VType::Str) {
-      if (--s_->refs == 0) delete s_;
-    } else if (type_ == VType::Arr) {
-      if (--a_->refs == 0) delete a_;
+    if (isHeap()) {
+      if (type_ == VType::Str) ++s_->refs;
+      else ++a_->refs;
     }
   }
+  void retainConst() const { const_cast<Value*>(this)->retain(); }
+  // The last reference frees the object out of line, so that releasing stays a few
+  // instructions wherever it is inlined.
+  void release() {
+    if (isHeap()) {
+      if (type_ == VType::Str) {
+        if (--s_->refs == 0) freeStr(s_);
+      } else if (--a_->refs == 0) {
+        freeArr(a_);
+      }
+    }
+  }
+  static void freeStr(StrObj* s);
+  static void freeArr(ArrObj* a);
 
   VType type_;
   union {

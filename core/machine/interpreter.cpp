@@ -100,6 +100,14 @@ double checked(double r) {
   return r;
 }
 
+/// The result of +, -, * or / on two numbers: never one that is not a number, since every value
+/// is finite and division by zero is refused first; only an overflow to infinity is an error.
+/// (One comparison where checked() needs two.)
+RB_ALWAYS_INLINE double finite(double r) {
+  if (std::fabs(r) > std::numeric_limits<double>::max()) [[unlikely]] raise("the result is too large");
+  return r;
+}
+
 /// x `cmp` y.
 template <typename T>
 RB_ALWAYS_INLINE bool holds(Cmp cmp, T x, T y) {
@@ -169,13 +177,13 @@ RB_COLD void Interpreter::undefined(uint32_t op) const {
 RB_COLD std::vector<Diagnostic> Interpreter::callChain() const {
   std::vector<Diagnostic> notes;
   constexpr size_t kShown = 10;
-  for (size_t k = frames_.size(); k-- > 0;) {
+  for (size_t k = depth_; k-- > 0;) {
     const Frame& f = frames_[k];
     if (notes.size() == kShown) {
       notes.push_back({Severity::Note, SourceLoc{}, "... and " + std::to_string(k + 1) + " calls before"});
       break;
     }
-    uint32_t callPc = f.returnPc - 1;
+    auto callPc = static_cast<uint32_t>(f.ret - prog_.code.data()) - 1;
     if (callPc >= prog_.locs.size()) continue;
     std::string what = f.sub >= 0 ? "sub '" + prog_.subs[static_cast<size_t>(f.sub)].name + "'" : "the gosub";
     notes.push_back({Severity::Note, prog_.locs[callPc],
@@ -192,11 +200,12 @@ RB_COLD void Interpreter::operandError(const Instr& in) const {
     case Op::Inc:
     case Op::Dec:
     case Op::ForPrep:
-    case Op::ForLoop: {
+    case Op::ForLoop:
+    case Op::ForLoop1: {
       const Value& v = bases_(in.a);
       if (v.isUndef()) undefined(in.a);
       if (in.op == Op::ForPrep) raise("for loop bounds must be numbers");
-      if (in.op == Op::ForLoop)
+      if (in.op == Op::ForLoop || in.op == Op::ForLoop1)
         throw RuntimeError("the for loop variable '" + slotName(in.a) + "' no longer holds a number");
       throw RuntimeError(std::string("'") + opSymbol(in.op) + "' needs a number, not " + typeName(v));
     }
@@ -207,12 +216,13 @@ RB_COLD void Interpreter::operandError(const Instr& in) const {
     case Op::JumpIfFalse:
     case Op::JumpIfTrue:
     case Op::IndexSet:
+    case Op::IndexSet2:
     case Op::DataAppend: {
-      const Value& v = bases_(in.b);
-      if (v.isUndef()) undefined(in.b);
+      const Value& v = bases_(in.op == Op::IndexSet2 ? in.a : in.b);
+      if (v.isUndef()) undefined(in.op == Op::IndexSet2 ? in.a : in.b);
       if (in.op == Op::JumpIfFalse || in.op == Op::JumpIfTrue)
         throw RuntimeError("a condition must be a number, not " + typeName(v));
-      if (in.op == Op::IndexSet || in.op == Op::DataAppend)
+      if (in.op == Op::IndexSet || in.op == Op::IndexSet2 || in.op == Op::DataAppend)
         raise("an array cannot be stored in an array element");
       throw RuntimeError(std::string("'") + opSymbol(in.op) + "' needs a number, not " + typeName(v));
     }
@@ -271,10 +281,64 @@ RB_ALWAYS_INLINE Value& Interpreter::element(const OperandBases& B, uint32_t arr
   return a.items[elementOffset(a, arrOp, &i0, count)];
 }
 
+/// The element G[in.count][R[in.b], R[in.c]] of IndexGet2 and IndexSet2: two in-range integer
+/// indices into a two-dimensional array here, everything else in element2Slow.
+RB_ALWAYS_INLINE Value& Interpreter::element2(const OperandBases& B, const Instr& in) {
+  Value& arr = B.at[static_cast<uint32_t>(Base::Global)][in.count];
+  const Value& x = B(in.b);
+  const Value& y = B(in.c);
+  if (arr.isArr() && x.isInt() && y.isInt()) [[likely]] {
+    ArrObj& a = arr.arr();
+    if (a.dims.size() == 2) [[likely]] {
+      // Unsigned comparisons also refuse negative indices.
+      auto i = static_cast<uint64_t>(x.i()), j = static_cast<uint64_t>(y.i());
+      auto rows = static_cast<uint64_t>(a.dims[0]), cols = static_cast<uint64_t>(a.dims[1]);
+      if (i < rows && j < cols) [[likely]] return a.items[i * cols + j];
+    }
+  }
+  return element2Slow(in);
+}
+
+/// element2's other cases: the same conversions and errors as IndexGet/IndexSet with two indices.
+RB_COLD Value& Interpreter::element2Slow(const Instr& in) {
+  uint32_t arrOp = operand(Base::Global, in.count);
+  ArrObj& a = arrayOperand(arrOp).arr();
+  if (bases_(in.b).isUndef()) undefined(in.b);
+  if (bases_(in.c).isUndef()) undefined(in.c);
+  const Value idx[2] = {bases_(in.b), bases_(in.c)};
+  return a.items[elementOffset(a, arrOp, idx, 2)];
+}
+
+/// Copies an array element out where the destination or the element is a string or an
+/// array: through a copy, since the destination may be the array's own variable.
+static RB_COLD void copyElement(Value& d, const Value& e) {
+  Value v(e);
+  d = std::move(v);
+}
+
+/// A for loop's step that is not all integers (or overflows): adds the step to the loop
+/// variable as doubles; returns whether the loop goes on.
+__attribute__((noinline)) bool Interpreter::forLoopStep(const Instr& in) {
+  Value& v = bases_(in.a);
+  const Value& limit = bases_(in.b);
+  const Value& step = bases_(in.b + 1);
+  if (!v.isNumeric()) operandError(in);
+  double x = v.asDouble() + step.asDouble();
+  v.setNum(x);
+  return step.asDouble() > 0 ? x <= limit.asDouble() : x >= limit.asDouble();
+}
+
 /// Enters a gosub or a sub call; the one place that limits how deep calls nest.
 RB_ALWAYS_INLINE void Interpreter::pushFrame(const Frame& f) {
-  if (frames_.size() >= limits_.maxCallDepth) tooDeep();
-  frames_.push_back(f);
+  if (depth_ >= depthCap_) [[unlikely]] growFrames();
+  frames_[depth_++] = f;
+}
+
+RB_COLD void Interpreter::growFrames() {
+  if (depth_ >= limits_.maxCallDepth) tooDeep();
+  size_t grown = std::max<size_t>(64, frames_.size() * 2);
+  frames_.resize(std::min<size_t>(grown, limits_.maxCallDepth));
+  depthCap_ = static_cast<uint32_t>(frames_.size());
 }
 
 RB_COLD void Interpreter::growStack(size_t size) {
@@ -322,6 +386,11 @@ RunResult Interpreter::run(const RunLimits& limits) {
   globals_.assign(prog_.globalCount + 1, Value());
   stack_.assign(std::max<size_t>(1024, prog_.mainFrameSize + 16), Value());
   frames_.clear();
+  depth_ = depthCap_ = 0;
+  subEntries_.clear();
+  for (const SubInfo& s : prog_.subs)
+    subEntries_.push_back({prog_.code.data() + s.entry, s.paramCount, s.localCount,
+                           s.frameSize + prog_.mainFrameSize + 64});
   base_ = 0;
   sub_ = -1;
   bases_[Base::Global] = globals_.data();
@@ -435,34 +504,19 @@ bool Interpreter::checkpoint() {
 // loop jumps from handler to handler with computed gotos, which skip destructors (GCC) or are
 // refused (Clang) when such a local is alive. The loop itself keeps only trivial locals.
 
-uint32_t Interpreter::doReturn(const Instr& in) {
-  if (frames_.empty()) raise("return without gosub or call");
-  Frame f = frames_.back();
-  if (f.sub < 0) {
-    if (in.c) raise("return with a value from a gosub (only subs return values)");
-    frames_.pop_back();
-    base_ = f.base;
-    syncFrame();
-    return f.returnPc;
-  }
-  Value result;
-  if (in.c) result = bases_(in.b);
-  if (f.dest != kNoOperand && !in.c) {
-    // A sub used as a function returned no value: the error belongs to the call.
-    frames_.pop_back();
-    base_ = f.base;
-    sub_ = f.callerSub;
-    syncFrame();
-    errorPc_ = f.returnPc - 1;
-    throw RuntimeError("sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
-                       "' returned no value (use return with a value)");
-  }
-  frames_.pop_back();
+/// The returns the dispatch loop leaves to this function: the errors.
+RB_COLD void Interpreter::badReturn() {
+  if (depth_ == 0) raise("return without gosub or call");
+  const Frame& f = frames_[depth_ - 1];
+  if (f.sub < 0) raise("return with a value from a gosub (only subs return values)");
+  // A sub used as a function returned no value: the error belongs to the call.
+  --depth_;
   base_ = f.base;
   sub_ = f.callerSub;
   syncFrame();
-  if (f.dest != kNoOperand) bases_(f.dest) = std::move(result);
-  return f.returnPc;
+  errorPc_ = static_cast<uint32_t>(f.ret - prog_.code.data()) - 1;
+  throw RuntimeError("sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
+                     "' returned no value (use return with a value)");
 }
 
 void Interpreter::doCallBuiltin(const Instr& in, uint32_t pc) {
@@ -551,7 +605,7 @@ void Interpreter::doInput(const Instr& in) {
     if (stepsLeft <= 0) {             \
       stepsLeft_ = stepsLeft;         \
       if (!checkpoint()) {            \
-        pcOut = pc;                   \
+        pcOut = PC();                 \
         return;                       \
       }                               \
       stepsLeft = stepsLeft_;         \
@@ -562,7 +616,7 @@ void Interpreter::doInput(const Instr& in) {
 #define JUMP_TAKEN(in, target) \
   do {                         \
     stepsLeft += (in).flags;   \
-    pc = (target);             \
+    ip = code + (target);      \
   } while (0)
 #define SYNC_FRAME() B[Base::Frame] = bases_[Base::Frame]
 // After a call into the host that may block (a built-in, input, a traced line): a host that
@@ -572,7 +626,7 @@ void Interpreter::doInput(const Instr& in) {
     if (m_.host().stopRequested()) {             \
       stopStatus_ = RunStatus::Stopped;          \
       stepsLeft_ = stepsLeft;                    \
-      pcOut = pc;                                \
+      pcOut = PC();                              \
       return;                                    \
     }                                            \
   } while (0)
@@ -580,11 +634,18 @@ void Interpreter::doInput(const Instr& in) {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"
 #define CASE(name) op_##name:
-#define NEXT goto *kDispatch[static_cast<uint8_t>(code[pc].op)]
+#define NEXT goto *kDispatch[static_cast<uint8_t>(ip->op)]
+#define PC() static_cast<uint32_t>(ip - code)
 
+// GCC merges the handlers' identical tails (the fetch and jump of NEXT) into one shared
+// copy, which puts an extra jump in every handler and makes all of them share one
+// indirect-branch prediction; keeping the copies apart is the point of threaded dispatch.
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((optimize("no-crossjumping")))
+#endif
 void Interpreter::execute(uint32_t& pcOut) {
   const Instr* code = prog_.code.data();
-  uint32_t pc = pcOut;
+  const Instr* ip = code + pcOut;  // the instruction running
   int64_t stepsLeft = stepsLeft_;
   OperandBases B = bases_;
   static const void* const kDispatch[] = {
@@ -595,15 +656,20 @@ void Interpreter::execute(uint32_t& pcOut) {
   try {
     NEXT;
     CASE(Move) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& s = B(in.b);
-      if (s.isUndef() && !in.flags) operandError(in);
-      B(in.a) = s;
-      ++pc;
+      Value& d = B(in.a);
+      if (s.isNumeric() && !d.isHeap()) [[likely]] {
+        d.setNumeric(s);
+      } else {
+        if (s.isUndef() && !in.flags) operandError(in);
+        d = s;
+      }
+      ++ip;
       NEXT;
     }
     CASE(Add) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       const Value& b = B(in.c);
       Value& d = B(in.a);
@@ -612,39 +678,39 @@ void Interpreter::execute(uint32_t& pcOut) {
         if (!__builtin_add_overflow(a.i(), b.i(), &r)) d.setInt(r);
         else d.setNum(static_cast<double>(a.i()) + static_cast<double>(b.i()));
       } else if (a.isNumeric() && b.isNumeric()) {
-        d.setNum(checked(a.asDouble() + b.asDouble()));
+        d.setNum(finite(a.asDouble() + b.asDouble()));
       } else if ((a.isStr() || a.isNumeric()) && (b.isStr() || b.isNumeric())) {
         concatenate(d, a, b);
         m_.checkAlarms();
       } else {
         operandError(in);
       }
-      ++pc;
+      ++ip;
       NEXT;
     }
-    CASE(Sub)
-    CASE(Mul) {
-      const Instr& in = code[pc];
-      const Value& a = B(in.b);
-      const Value& b = B(in.c);
-      Value& d = B(in.a);
-      if (a.isInt() && b.isInt()) {
-        int64_t r;
-        bool overflow = in.op == Op::Sub ? __builtin_sub_overflow(a.i(), b.i(), &r)
-                                         : __builtin_mul_overflow(a.i(), b.i(), &r);
-        if (!overflow) d.setInt(r);
-        else if (in.op == Op::Sub) d.setNum(static_cast<double>(a.i()) - static_cast<double>(b.i()));
-        else d.setNum(static_cast<double>(a.i()) * static_cast<double>(b.i()));
-      } else if (a.isNumeric() && b.isNumeric()) {
-        d.setNum(checked(in.op == Op::Sub ? a.asDouble() - b.asDouble() : a.asDouble() * b.asDouble()));
-      } else {
-        operandError(in);
-      }
-      ++pc;
-      NEXT;
-    }
+// - and *: integers while the result fits, else doubles. One handler each (no test of the
+// opcode inside).
+#define ARITHMETIC(overflows, op)                                                   \
+  const Instr& in = *ip;                                                            \
+  const Value& a = B(in.b);                                                         \
+  const Value& b = B(in.c);                                                         \
+  Value& d = B(in.a);                                                               \
+  if (a.isInt() && b.isInt()) {                                                     \
+    int64_t r;                                                                      \
+    if (!overflows(a.i(), b.i(), &r)) d.setInt(r);                                  \
+    else d.setNum(static_cast<double>(a.i()) op static_cast<double>(b.i()));        \
+  } else if (a.isNumeric() && b.isNumeric()) {                                      \
+    d.setNum(finite(a.asDouble() op b.asDouble()));                                 \
+  } else {                                                                          \
+    operandError(in);                                                               \
+  }                                                                                 \
+  ++ip;                                                                             \
+  NEXT
+    CASE(Sub) { ARITHMETIC(__builtin_sub_overflow, -); }
+    CASE(Mul) { ARITHMETIC(__builtin_mul_overflow, *); }
+#undef ARITHMETIC
     CASE(Div) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       const Value& b = B(in.c);
       Value& d = B(in.a);
@@ -661,13 +727,13 @@ void Interpreter::execute(uint32_t& pcOut) {
       } else {
         double y = b.asDouble();
         if (y == 0) raise("division by zero");
-        d.setNum(checked(a.asDouble() / y));
+        d.setNum(finite(a.asDouble() / y));
       }
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(Mod) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       const Value& b = B(in.c);
       Value& d = B(in.a);
@@ -680,11 +746,11 @@ void Interpreter::execute(uint32_t& pcOut) {
         if (y == 0) raise("division by zero (in %)");
         d.setNum(std::fmod(a.asDouble(), y));
       }
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(Pow) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       const Value& b = B(in.c);
       Value& d = B(in.a);
@@ -699,19 +765,19 @@ void Interpreter::execute(uint32_t& pcOut) {
         }
         if (!overflow) {
           d.setInt(r);
-          ++pc;
+          ++ip;
           NEXT;
         }
       }
       d.setNum(checked(std::pow(a.asDouble(), b.asDouble())));
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(BitAnd)
     CASE(BitOr)
     CASE(Shl)
     CASE(Shr) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       const Value& b = B(in.c);
       if (!a.isNumeric() || !b.isNumeric()) operandError(in);
@@ -723,96 +789,96 @@ void Interpreter::execute(uint32_t& pcOut) {
         default: r = y < 0 ? x : y > 63 ? (x < 0 ? -1 : 0) : x >> y; break;
       }
       B(in.a).setInt(r);
-      ++pc;
+      ++ip;
       NEXT;
     }
     // The comparisons: one compare() for the value forms and the compare-and-jump forms.
-    CASE(Eq)
-    CASE(Ne)
-    CASE(Lt)
-    CASE(Le)
-    CASE(Gt)
-    CASE(Ge) {
-      const Instr& in = code[pc];
-      auto cmp = static_cast<Cmp>(static_cast<uint8_t>(in.op) - static_cast<uint8_t>(Op::Eq));
-      bool r = compare(cmp, B(in.b), B(in.c), in);
-      B(in.a).setInt(r);
-      ++pc;
-      NEXT;
-    }
-    CASE(JumpIfNotEq)
-    CASE(JumpIfNotNe)
-    CASE(JumpIfNotLt)
-    CASE(JumpIfNotLe)
-    CASE(JumpIfNotGt)
-    CASE(JumpIfNotGe)
-    CASE(JumpIfEq)
-    CASE(JumpIfNe)
-    CASE(JumpIfLt)
-    CASE(JumpIfLe)
-    CASE(JumpIfGt)
-    CASE(JumpIfGe) {
-      const Instr& in = code[pc];
-      COUNT_STEPS(in);
-      bool jumpWhen = in.op >= Op::JumpIfEq;  // the JumpIf family jumps when the test holds
-      auto cmp = static_cast<Cmp>(static_cast<uint8_t>(in.op) -
-                                  static_cast<uint8_t>(jumpWhen ? Op::JumpIfEq : Op::JumpIfNotEq));
-      if (compare(cmp, B(in.b), B(in.c), in) == jumpWhen) {
-        JUMP_TAKEN(in, in.a);
-      } else {
-        ++pc;
-      }
-      NEXT;
-    }
+#define COMPARE_VALUE(cmp)                          \
+  const Instr& in = *ip;                            \
+  bool r = compare(cmp, B(in.b), B(in.c), in);      \
+  B(in.a).setInt(r);                                \
+  ++ip;                                             \
+  NEXT
+    CASE(Eq) { COMPARE_VALUE(Cmp::Eq); }
+    CASE(Ne) { COMPARE_VALUE(Cmp::Ne); }
+    CASE(Lt) { COMPARE_VALUE(Cmp::Lt); }
+    CASE(Le) { COMPARE_VALUE(Cmp::Le); }
+    CASE(Gt) { COMPARE_VALUE(Cmp::Gt); }
+    CASE(Ge) { COMPARE_VALUE(Cmp::Ge); }
+#undef COMPARE_VALUE
+// One handler per compare-and-jump opcode, each with its comparison known when compiled:
+// the JumpIf family jumps when the test holds, the JumpIfNot family when it does not.
+#define COMPARE_JUMP(cmp, jumpWhen)                          \
+  const Instr& in = *ip;                                     \
+  COUNT_STEPS(in);                                           \
+  if (compare(cmp, B(in.b), B(in.c), in) == (jumpWhen)) {    \
+    JUMP_TAKEN(in, in.a);                                    \
+  } else {                                                   \
+    ++ip;                                                    \
+  }                                                          \
+  NEXT
+    CASE(JumpIfNotEq) { COMPARE_JUMP(Cmp::Eq, false); }
+    CASE(JumpIfNotNe) { COMPARE_JUMP(Cmp::Ne, false); }
+    CASE(JumpIfNotLt) { COMPARE_JUMP(Cmp::Lt, false); }
+    CASE(JumpIfNotLe) { COMPARE_JUMP(Cmp::Le, false); }
+    CASE(JumpIfNotGt) { COMPARE_JUMP(Cmp::Gt, false); }
+    CASE(JumpIfNotGe) { COMPARE_JUMP(Cmp::Ge, false); }
+    CASE(JumpIfEq) { COMPARE_JUMP(Cmp::Eq, true); }
+    CASE(JumpIfNe) { COMPARE_JUMP(Cmp::Ne, true); }
+    CASE(JumpIfLt) { COMPARE_JUMP(Cmp::Lt, true); }
+    CASE(JumpIfLe) { COMPARE_JUMP(Cmp::Le, true); }
+    CASE(JumpIfGt) { COMPARE_JUMP(Cmp::Gt, true); }
+    CASE(JumpIfGe) { COMPARE_JUMP(Cmp::Ge, true); }
+#undef COMPARE_JUMP
     CASE(Neg) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       if (a.isInt() && a.i() != INT64_MIN) B(in.a).setInt(-a.i());
       else if (a.isNumeric()) B(in.a).setNum(-a.asDouble());
       else operandError(in);
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(Not) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       bool t = false;
       if (a.isInt()) t = a.i() != 0;
       else if (a.isNum()) t = a.d() != 0;
       else operandError(in);
       B(in.a).setInt(!t);
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(BitNot) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& a = B(in.b);
       if (!a.isNumeric()) operandError(in);
       B(in.a).setInt(~toInteger(a));
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(Inc)
     CASE(Dec) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       Value& a = B(in.a);
       int64_t delta = in.op == Op::Inc ? 1 : -1;
       int64_t r;
       if (a.isInt() && !__builtin_add_overflow(a.i(), delta, &r)) a.setInt(r);
       else if (a.isNumeric()) a.setNum(a.asDouble() + static_cast<double>(delta));
       else operandError(in);
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(Jump) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       COUNT_STEPS(in);
-      pc = in.a;
+      ip = code + in.a;
       NEXT;
     }
     CASE(JumpIfFalse)
     CASE(JumpIfTrue) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       COUNT_STEPS(in);
       const Value& v = B(in.b);
       bool t = false;
@@ -822,12 +888,12 @@ void Interpreter::execute(uint32_t& pcOut) {
       if (t == (in.op == Op::JumpIfTrue)) {
         JUMP_TAKEN(in, in.a);
       } else {
-        ++pc;
+        ++ip;
       }
       NEXT;
     }
     CASE(ForPrep) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       COUNT_STEPS(in);
       Value& v = B(in.a);
       const Value& limit = B(in.b);
@@ -840,14 +906,14 @@ void Interpreter::execute(uint32_t& pcOut) {
       else
         enter = step.asDouble() > 0 ? v.asDouble() <= limit.asDouble() : v.asDouble() >= limit.asDouble();
       if (enter) {
-        ++pc;
+        ++ip;
       } else {
         JUMP_TAKEN(in, in.c);
       }
       NEXT;
     }
     CASE(ForLoop) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       COUNT_STEPS(in);
       Value& v = B(in.a);
       const Value& limit = B(in.b);
@@ -858,56 +924,82 @@ void Interpreter::execute(uint32_t& pcOut) {
         if (step.i() > 0 ? r <= limit.i() : r >= limit.i()) {
           JUMP_TAKEN(in, in.c);
         } else {
-          ++pc;
+          ++ip;
         }
         NEXT;
       }
-      if (!v.isNumeric()) operandError(in);
-      double x = v.asDouble() + step.asDouble();
-      v.setNum(x);
-      if (step.asDouble() > 0 ? x <= limit.asDouble() : x >= limit.asDouble()) {
-        JUMP_TAKEN(in, in.c);
-      } else {
-        ++pc;
+      if (forLoopStep(in)) JUMP_TAKEN(in, in.c);
+      else ++ip;
+      NEXT;
+    }
+    CASE(ForLoop1) {
+      const Instr& in = *ip;
+      COUNT_STEPS(in);
+      Value& v = B(in.a);
+      const Value& limit = B(in.b);
+      if (v.isInt() && limit.isInt()) [[likely]] {
+        if (v.i() < limit.i()) {  // so v + 1 <= limit, and no overflow
+          v.setInt(v.i() + 1);
+          JUMP_TAKEN(in, in.c);
+          NEXT;
+        }
+        if (v.i() < INT64_MAX) {
+          v.setInt(v.i() + 1);
+          ++ip;
+          NEXT;
+        }
       }
+      if (forLoopStep(in)) JUMP_TAKEN(in, in.c);
+      else ++ip;
       NEXT;
     }
     CASE(Gosub) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       COUNT_STEPS(in);
-      pushFrame({pc + 1, base_, kNoOperand, -1, sub_});
+      pushFrame({ip + 1, base_, kNoOperand, -1, sub_});
       base_ += in.b;
       ensureStack(size_t(base_) + prog_.mainFrameSize + 64);
       syncFrame();
       SYNC_FRAME();
-      pc = in.a;
+      ip = code + in.a;
       NEXT;
     }
     CASE(Return) {
-      const Instr& in = code[pc];
+      // From a sub: its value (when it returns one) goes to the caller's destination; from a
+      // gosub: no value. Anything else is an error (badReturn).
+      const Instr& in = *ip;
       COUNT_STEPS(in);
-      pc = doReturn(in);
+      if (depth_ == 0) [[unlikely]] badReturn();
+      const Frame& f = frames_[depth_ - 1];
+      const Value* result = &B(in.b);  // read before the frame changes
+      bool fromSub = f.sub >= 0;
+      if (fromSub ? (!in.c && f.dest != kNoOperand) : in.c != 0) [[unlikely]] badReturn();
+      --depth_;
+      base_ = f.base;
+      if (fromSub) sub_ = f.callerSub;
+      syncFrame();
       SYNC_FRAME();
+      ip = f.ret;
+      if (fromSub && f.dest != kNoOperand) B(f.dest) = *result;
       NEXT;
     }
     CASE(CallSub) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       COUNT_STEPS(in);
-      pushFrame({pc + 1, base_, in.c, static_cast<int32_t>(in.a), sub_});
-      const SubInfo& s = prog_.subs[in.a];
+      pushFrame({ip + 1, base_, in.c, static_cast<int32_t>(in.a), sub_});
+      const SubEntry& s = subEntries_[in.a];
       uint32_t newBase = base_ + in.b;
-      ensureStack(size_t(newBase) + s.frameSize + prog_.mainFrameSize + 64);
+      ensureStack(size_t(newBase) + s.stackNeed);
       Value* frame = stack_.data() + newBase;
       for (uint32_t i = s.paramCount; i < s.localCount; ++i) frame[i].clear();
       base_ = newBase;
       sub_ = static_cast<int32_t>(in.a);
-      syncFrame();
-      SYNC_FRAME();
-      pc = s.entry;
+      B[Base::Frame] = bases_[Base::Frame] = frame;
+      ip = s.entry;
       NEXT;
     }
     CASE(CallBuiltin) {
-      doCallBuiltin(code[pc], pc);
+      doCallBuiltin(*ip, PC());
       STOP_IF_ASKED();
       if (m_.alarmed()) [[unlikely]] {
         // A slow built-in (drawing, a sensor, a real robot's answer) ran past the --timeout, or
@@ -915,70 +1007,87 @@ void Interpreter::execute(uint32_t& pcOut) {
         stepsLeft_ = stepsLeft;
         m_.raiseAlarm();
       }
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(IndexGet) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       Value& e = element(B, in.b, in.c, in.count);
       if (in.a != in.b) B(in.a) = e;
       else B(in.a) = Value(e);  // the array's own variable: copy the element before the array goes
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(IndexSet) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       const Value& v = B(in.b);
       if (v.isUndef() || v.isArr()) operandError(in);
       element(B, in.a, in.c, in.count) = v;
-      ++pc;
+      ++ip;
+      NEXT;
+    }
+    CASE(IndexGet2) {
+      const Instr& in = *ip;
+      const Value& e = element2(B, in);
+      Value& d = B(in.a);
+      if (!d.isHeap() && !e.isHeap()) d = e;
+      else copyElement(d, e);
+      ++ip;
+      NEXT;
+    }
+    CASE(IndexSet2) {
+      const Instr& in = *ip;
+      const Value& v = B(in.a);
+      if (v.isUndef() || v.isArr()) operandError(in);
+      element2(B, in) = v;
+      ++ip;
       NEXT;
     }
     CASE(Dim) {
-      doDim(code[pc]);
-      ++pc;
+      doDim(*ip);
+      ++ip;
       NEXT;
     }
     CASE(DataAppend) {
-      doDataAppend(code[pc]);
-      ++pc;
+      doDataAppend(*ip);
+      ++ip;
       NEXT;
     }
     CASE(Print) {
-      doPrint(code[pc]);
-      ++pc;
+      doPrint(*ip);
+      ++ip;
       NEXT;
     }
     CASE(Format) {
-      doFormat(code[pc]);
-      ++pc;
+      doFormat(*ip);
+      ++ip;
       NEXT;
     }
     CASE(Input) {
-      doInput(code[pc]);
+      doInput(*ip);
       STOP_IF_ASKED();
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(Steps) {
-      const Instr& in = code[pc];
+      const Instr& in = *ip;
       COUNT_STEPS(in);
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(Line) {
-      m_.host().onLine(prog_.locs[pc]);
+      m_.host().onLine(prog_.locs[PC()]);
       STOP_IF_ASKED();
-      ++pc;
+      ++ip;
       NEXT;
     }
     CASE(End) {
-      stepsLeft_ = stepsLeft - code[pc].steps;
-      pcOut = pc;
+      stepsLeft_ = stepsLeft - ip->steps;
+      pcOut = PC();
       return;
     }
   } catch (...) {
-    pcOut = errorPc_ != kNoPc ? errorPc_ : pc;
+    pcOut = errorPc_ != kNoPc ? errorPc_ : PC();
     errorPc_ = kNoPc;
     stepsLeft_ = stepsLeft;
     throw;
@@ -993,5 +1102,6 @@ void Interpreter::execute(uint32_t& pcOut) {
 #undef STOP_IF_ASKED
 #undef CASE
 #undef NEXT
+#undef PC
 
 }  // namespace rb

@@ -54,7 +54,7 @@ class Interpreter {
   /// sub's parameters and locals. Nothing is copied or changed.
   std::vector<VariableView> variables() const;
   /// Nested gosub and sub-call frames now (0: the main code).
-  size_t callDepth() const { return frames_.size(); }
+  size_t callDepth() const { return depth_; }
   /// The name of the sub running now ("" in the main code and its gosubs).
   std::string_view runningSub() const {
     return sub_ >= 0 ? std::string_view(prog_.subs[static_cast<size_t>(sub_)].name) : std::string_view();
@@ -62,7 +62,7 @@ class Interpreter {
 
  private:
   struct Frame {
-    uint32_t returnPc;
+    const Instr* ret;    ///< the instruction after the call
     uint32_t base;       ///< the caller's frame base
     uint32_t dest;       ///< sub calls: where the result goes (kNoOperand: nowhere)
     int32_t sub;         ///< the sub this frame runs (-1: a gosub)
@@ -73,11 +73,16 @@ class Interpreter {
   struct OperandBases {
     Value* at[3] = {nullptr, nullptr, nullptr};
     Value*& operator[](Base b) { return at[static_cast<uint32_t>(b)]; }
-    Value& operator()(uint32_t x) const { return at[x >> kBaseShift][x & kIndexMask]; }
+    /// Slot i of a base is i * 16 bytes in: shifting in 32 bits drops the base bits (indices
+    /// stay below kMaxSlots), one instruction fewer than masking them.
+    Value& operator()(uint32_t x) const {
+      static_assert(sizeof(Value) == 16, "a slot is 16 bytes");
+      return *reinterpret_cast<Value*>(reinterpret_cast<char*>(at[x >> kBaseShift]) + static_cast<uint32_t>(x << 4));
+    }
   };
 
   void execute(uint32_t& pc);
-  uint32_t doReturn(const Instr& in);
+  [[noreturn]] void badReturn();
   void doCallBuiltin(const Instr& in, uint32_t pc);
   void doDim(const Instr& in);
   void doPrint(const Instr& in);
@@ -86,6 +91,8 @@ class Interpreter {
   void doDataAppend(const Instr& in);
   bool checkpoint();
   void pushFrame(const Frame& f);
+  void growFrames();
+  bool forLoopStep(const Instr& in);
   /// Makes the stack hold at least `size` values (growing it moves the frame base).
   void ensureStack(size_t size) {
     if (size > stack_.size()) growStack(size);
@@ -96,6 +103,8 @@ class Interpreter {
   bool compare(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
   bool compareOthers(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
   Value& element(const OperandBases& B, uint32_t arrOp, uint32_t idxOp, uint16_t count);
+  Value& element2(const OperandBases& B, const Instr& in);
+  Value& element2Slow(const Instr& in);
   [[noreturn]] void operandError(const Instr& in) const;
   [[noreturn]] void undefined(uint32_t op) const;
   [[noreturn]] void tooDeep() const;
@@ -109,7 +118,17 @@ class Interpreter {
   Machine& m_;
   std::vector<Value> globals_;
   std::vector<Value> stack_;
-  std::vector<Frame> frames_;
+  /// What a call of each sub needs, gathered from Program::subs when a run starts.
+  struct SubEntry {
+    const Instr* entry;
+    uint32_t paramCount;
+    uint32_t localCount;
+    uint32_t stackNeed;  ///< stack slots the call makes sure of past the new frame base
+  };
+  std::vector<SubEntry> subEntries_;
+  std::vector<Frame> frames_;  ///< storage of the call frames; the first depth_ are active
+  uint32_t depth_ = 0;
+  uint32_t depthCap_ = 0;      ///< frames that fit before growFrames(): at most maxCallDepth
   uint32_t base_ = 0;
   int32_t sub_ = -1;
   OperandBases bases_;

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <cstdio>
+
 #include "base/diagnostic.h"
 #include "machine/test_support.h"
 
@@ -35,6 +37,46 @@ TEST_CASE("statements are counted exactly for --max-steps", "[interpreter]") {
   auto full = runProgram("x = 0\nfor i = 1 to 4\n  if i = 2 then x = 1\nnext\nprint x\n");
   // 1 (x = 0) + 1 (for) + 4 * (if + next) + 1 (print) = 11
   CHECK(full.result.steps == 11);
+}
+
+TEST_CASE("statements in subs, calls and returns are counted exactly", "[interpreter]") {
+  const char* prog =
+      "x = 0\nfor i = 1 to 3\n  call F(i, x)\nnext\nprint x + Twice(2)\nend\n"
+      "sub F(n, &r)\n  r = r + n\nreturn\nsub Twice(v)\n  return 2 * v\n";
+  // x = 0, for, 3 * (call, r = r + n, return, next), print, return 2 * v, end
+  auto full = runProgram(prog);
+  CHECK(full.out == "10\n");
+  CHECK(full.result.steps == 17);
+  for (uint64_t limit : {14u, 16u}) {
+    RunLimits limits;
+    limits.maxSteps = limit;
+    auto o = runProgram(prog, {}, {}, limits);
+    CHECK(o.result.status == RunStatus::StepLimit);
+    CHECK(o.result.steps == limit);
+  }
+  RunLimits limits;
+  limits.maxSteps = 14;
+  // The 14th statement is the third `next`.
+  CHECK(runProgram(prog, {}, {}, limits).diagnostics.find("test.bas:4:1: error: stopped after 14 steps") == 0);
+}
+
+TEST_CASE("nested calls are limited exactly, for subs and for gosubs", "[interpreter]") {
+  RunLimits limits;
+  limits.maxCallDepth = 300;  // past the first growth of the frame storage
+  const char* sub = "call R(%d)\nprint \"done\"\nend\nsub R(n)\n  if n > 1 then call R(n - 1)\nreturn\n";
+  const char* gosub = "n = %d\ngosub G\nprint \"done\"\nend\nG:\n  n = n - 1\n  if n > 0 then gosub G\nreturn\n";
+  for (const char* form : {sub, gosub}) {
+    char text[200];
+    std::snprintf(text, sizeof text, form, 300);  // 300 nested: allowed
+    auto ok = runProgram(text, {}, {}, limits);
+    CHECK(ok.diagnostics == "");
+    CHECK(ok.out == "done\n");
+    std::snprintf(text, sizeof text, form, 301);
+    auto deep = runProgram(text, {}, {}, limits);
+    CHECK(deep.result.status == RunStatus::RuntimeError);
+    CHECK(deep.diagnostics.find("error: too many nested gosub/call (300): runaway recursion?") != std::string::npos);
+    CHECK(deep.out.empty());
+  }
 }
 
 TEST_CASE("includes come from the reader and errors name their file", "[interpreter]") {

@@ -19,9 +19,24 @@ n = n + "x"
 print n // expect: 7x
 call grow(s) // expect: abcabc!5-sub
 print s // expect: abcabc!5
+u = s
+call growRef(s) // expect: abcabc!5
+print s // expect: abcabc!5+ref
+print u // expect: abcabc!5
+dim g[2, 2]
+g[1, 1] = s
+s = s + "?"
+print g[1, 1] // expect: abcabc!5+ref
 end
 
 sub grow(v)
   v = v + "-sub"
   print v
+return
+
+// A by-reference argument shares its text with the caller's variable until the sub returns:
+// the append copies, and only the final value comes back.
+sub growRef(&v)
+  v = v + "+ref"
+  print _u
 return

@@ -1,0 +1,15 @@
+// fib_sub: fib(27) by the doubly recursive definition, a sub run with `call` that passes its
+// result back through a by-reference (&) parameter (311,809 calls); prints 196418.
+call Fib(27, r)
+print r
+end
+
+sub Fib(n, &r)
+  if n < 2
+    r = n
+  else
+    call Fib(n - 1, a)
+    call Fib(n - 2, b)
+    r = a + b
+  endif
+return
