@@ -4,14 +4,8 @@
 # lua5.4 show n/a when missing. Usage: bench/startup.sh [path/to/rb] [-n RUNS]  (default 300)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rb="$here/../build/cmd/rb"
 runs=300
-while [ $# -gt 0 ]; do
-  case "$1" in
-    -n) runs="$2"; shift 2 ;;
-    *) rb="$1"; shift ;;
-  esac
-done
+source "$here/args.sh" "$@"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 : > "$dir/empty.bas"

@@ -8,14 +8,8 @@
 # Checks every answer. Usage: bench/memory/run.sh [path/to/rb] [-n RUNS]   (default 3)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rb="$here/../../build/cmd/rb"
 runs=3
-while [ $# -gt 0 ]; do
-  case "$1" in
-    -n) runs="$2"; shift 2 ;;
-    *) rb="$1"; shift ;;
-  esac
-done
+source "$here/../args.sh" "$@"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 sed 's/^n = 1000000$/n = 3000000/' "$here/set_pixel.bas" > "$dir/set_pixel3.bas"

@@ -6,14 +6,8 @@
 # Usage: bench/robot/status.sh [path/to/rb] [-n RUNS]   (default 5 runs each)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rb="$here/../../build/cmd/rb"
 runs=5
-while [ $# -gt 0 ]; do
-  case "$1" in
-    -n) runs="$2"; shift 2 ;;
-    *) rb="$1"; shift ;;
-  esac
-done
+source "$here/../args.sh" "$@"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 for n in 1 10 100 0; do

@@ -6,14 +6,8 @@
 # Usage: bench/shapes/run.sh [path/to/rb] [-n RUNS]   (default 5)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rb="$here/../../build/cmd/rb"
 runs=5
-while [ $# -gt 0 ]; do
-  case "$1" in
-    -n) runs="$2"; shift 2 ;;
-    *) rb="$1"; shift ;;
-  esac
-done
+source "$here/../args.sh" "$@"
 python3 - "$rb" "$here" "$runs" <<'PY'
 import subprocess, sys
 rb, here, runs = sys.argv[1], sys.argv[2], int(sys.argv[3])
