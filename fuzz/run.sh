@@ -3,8 +3,10 @@
 #   rb_fuzz      the front end (lexer, parser, checker, compiler, diagnostics), inputs <= 4 KiB
 #   rb_fuzz_run  whole runs (screen, robot, picture writers) under limits, inputs <= 64 KiB
 # Usage: fuzz/run.sh [seconds] [libFuzzer options...]   (seconds per target, default 60)
-# RB_FUZZ_TARGETS="rb_fuzz_run" picks targets. Exit status: 0 when nothing was found, else
-# libFuzzer's non-zero status (the input is saved under build-fuzz/fuzz/artifacts/).
+# RB_FUZZ_TARGETS="rb_fuzz_run" picks targets; RB_FUZZ_BUILD=fuzz-fast uses the UBSan-only build
+# (build-fuzz-fast/, for long offline runs) instead of ASan + UBSan (build-fuzz/).
+# Exit status: 0 when nothing was found, else libFuzzer's non-zero status (the input is saved
+# under build-fuzz*/fuzz/artifacts/).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 seconds=${1:-60}
@@ -14,8 +16,14 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]]; then
   exit 64
 fi
 targets=${RB_FUZZ_TARGETS:-"rb_fuzz rb_fuzz_run"}
+build=${RB_FUZZ_BUILD:-fuzz}
+case "$build" in
+  fuzz|fuzz-fast) ;;
+  *) echo "run.sh: RB_FUZZ_BUILD must be fuzz or fuzz-fast" >&2; exit 64 ;;
+esac
+bin="$root/build-$build/fuzz"
 
-"$root/scripts/build.sh" --fuzz
+"$root/scripts/build.sh" --"$build"
 
 # A fresh corpus from the test programs, the examples and the saved reproducers (outside the
 # source tree; the fuzzer adds the inputs it finds interesting to it, so it is thrown away
@@ -37,9 +45,9 @@ echo "run.sh: $n seed programs"
 # from rb's own table, so the fuzzer reaches every command and function.
 dict="$work/rb.dict"
 cp "$root/fuzz/bas.dict" "$dict"
-"$root/build-fuzz/fuzz/rb_fuzz_words" >> "$dict"
+"$bin/rb_fuzz_words" >> "$dict"
 
-artifacts="$root/build-fuzz/fuzz/artifacts"
+artifacts="$bin/artifacts"
 mkdir -p "$artifacts"
 for target in $targets; do
   case "$target" in
@@ -51,9 +59,9 @@ for target in $targets; do
   esac
   corpus="$work/corpus-$target"
   mkdir -p "$corpus"
-  log="$root/build-fuzz/fuzz/last-run-$target.log"
+  log="$bin/last-run-$target.log"
   status=0
-  "$root/build-fuzz/fuzz/$target" \
+  "$bin/$target" \
     -max_total_time="$seconds" \
     -max_len="$maxlen" \
     -timeout=10 \
@@ -67,7 +75,7 @@ for target in $targets; do
     echo >&2
     echo "run.sh: $target failed (exit status $status); log in $log" >&2
     grep -E "^(artifact_prefix|Test unit written to)" "$log" >&2 || true
-    echo "run.sh: reproduce with: $root/build-fuzz/fuzz/$target <crash file>" >&2
+    echo "run.sh: reproduce with: $bin/$target <crash file>" >&2
     exit "$status"
   fi
   echo "run.sh: $target: no crash in ${seconds}s ($(grep -Eo 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -Eo '[0-9]+$') executions)"

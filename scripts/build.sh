@@ -4,7 +4,8 @@
 #   --tests     also the unit and golden tests (CMake's BUILD_TESTING)
 #   --sanitize  Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, with the tests,
 #               in build-asan/
-#   --fuzz      clang build of the libFuzzer targets (only those) in build-fuzz/
+#   --fuzz      clang build of the libFuzzer targets (only those) in build-fuzz/, with ASan + UBSan
+#   --fuzz-fast the same with UBSan only, in build-fuzz-fast/: for long offline runs
 # Warnings are errors only when RB_WERROR=ON is in the environment (CI sets it): a user's build
 # never fails on a warning a newer compiler invents.
 set -euo pipefail
@@ -20,7 +21,10 @@ for arg in "$@"; do
     --fuzz) dir=build-fuzz; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON
                                    -DCMAKE_CXX_COMPILER=clang++)
             targets=(rb_fuzz rb_fuzz_run rb_fuzz_words) ;;
-    *) echo "usage: $0 [--tests] [--sanitize|--fuzz]" >&2; exit 64 ;;
+    --fuzz-fast) dir=build-fuzz-fast; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON
+                                   -DRB_FUZZ_SANITIZERS=undefined -DCMAKE_CXX_COMPILER=clang++)
+            targets=(rb_fuzz rb_fuzz_run rb_fuzz_words) ;;
+    *) echo "usage: $0 [--tests] [--sanitize|--fuzz|--fuzz-fast]" >&2; exit 64 ;;
   esac
 done
 flags+=(-DBUILD_TESTING="$tests" -DRB_BUILD_TESTS="$tests" -DRB_WERROR="${RB_WERROR:-OFF}")
