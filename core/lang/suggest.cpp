@@ -15,22 +15,47 @@ char fold(char c, bool ignoreCase) {
 }  // namespace
 
 int editDistance(std::string_view a, std::string_view b, bool ignoreCase) {
+  return editDistance(a, b, ignoreCase, std::max(a.size(), b.size()));
+}
+
+int editDistance(std::string_view a, std::string_view b, bool ignoreCase, size_t bound) {
   const size_t n = a.size(), m = b.size();
-  std::vector<int> prev2(m + 1), prev(m + 1), cur(m + 1);
+  // Three rows; on the stack for names of up to 47 characters (every candidate is a name), so
+  // that trying a word against hundreds of built-ins allocates nothing.
+  constexpr size_t kSmall = 48;
+  int small[3 * kSmall];
+  std::vector<int> large;
+  int* rows = small;
+  if (m + 1 > kSmall) {
+    large.resize(3 * (m + 1));
+    rows = large.data();
+  }
+  const size_t stride = m + 1 > kSmall ? m + 1 : kSmall;
+  int* prev2 = rows;
+  int* prev = rows + stride;
+  int* cur = rows + 2 * stride;
+  const int over = static_cast<int>(std::min<size_t>(bound, 1u << 30)) + 1;
   for (size_t j = 0; j <= m; ++j) prev[j] = static_cast<int>(j);
+  int prevMin = 0;  // the smallest value of prev
   for (size_t i = 1; i <= n; ++i) {
     cur[0] = static_cast<int>(i);
+    int curMin = cur[0];
     for (size_t j = 1; j <= m; ++j) {
       int cost = fold(a[i - 1], ignoreCase) == fold(b[j - 1], ignoreCase) ? 0 : 1;
       cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
       if (i > 1 && j > 1 && fold(a[i - 1], ignoreCase) == fold(b[j - 2], ignoreCase) &&
           fold(a[i - 2], ignoreCase) == fold(b[j - 1], ignoreCase))
         cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+      curMin = std::min(curMin, cur[j]);
     }
-    prev2.swap(prev);
-    prev.swap(cur);
+    // Every later cell grows from one of the last two rows: when both are past the bound, so
+    // is the answer.
+    if (curMin >= over && prevMin >= over) return over;
+    prevMin = curMin;
+    std::swap(prev2, prev);
+    std::swap(prev, cur);
   }
-  return prev[m];
+  return std::min(prev[m], over);
 }
 
 std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates,
@@ -46,7 +71,7 @@ std::string closestMatch(std::string_view word, const std::vector<std::string_vi
   std::string_view prefixWord;
   for (std::string_view c : candidates) {
     if (c == word) continue;
-    if (c.size() == word.size() && editDistance(c, word, true) == 0) return std::string(c);
+    if (c.size() == word.size() && editDistance(c, word, true, 0) == 0) return std::string(c);
     size_t common = 0;
     while (common < c.size() && common < word.size() &&
            fold(c[common], ignoreCase) == fold(word[common], ignoreCase))
@@ -57,7 +82,7 @@ std::string closestMatch(std::string_view word, const std::vector<std::string_vi
     }
     int lengthGap = static_cast<int>(c.size()) - static_cast<int>(word.size());
     if (std::abs(lengthGap) > limit) continue;
-    int d = editDistance(word, c, ignoreCase);
+    int d = editDistance(word, c, ignoreCase, static_cast<size_t>(best));
     if (d < best) {
       best = d;
       bestWord = c;

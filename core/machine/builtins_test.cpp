@@ -40,3 +40,25 @@ TEST_CASE("edit distance and suggestions", "[suggest]") {
   CHECK(closestMatch("InitializeRobot", {"InitializeSimulator", "DrawSquare", "Main"}, false) ==
         "InitializeSimulator");
 }
+
+TEST_CASE("a bounded edit distance is the distance, or bound + 1 beyond it", "[suggest]") {
+  // Words over a small alphabet, so that near and far pairs both occur; some longer than the
+  // 47 characters kept on the stack.
+  uint32_t state = 12345;
+  auto next = [&] { return state = state * 1103515245u + 12345u, (state >> 16) & 0x7fff; };
+  auto word = [&] {
+    std::string w(next() % 60, 'a');
+    for (char& c : w) c = "abAB"[next() % 4];
+    return w;
+  };
+  for (int i = 0; i < 2000; ++i) {
+    std::string a = word(), b = word();
+    bool ignoreCase = i % 2;
+    int full = editDistance(a, b, ignoreCase);
+    CHECK(full == editDistance(b, a, ignoreCase));
+    for (size_t bound : {0u, 1u, 3u, 10u, 100u}) {
+      INFO(a << " / " << b << " bound " << bound);
+      CHECK(editDistance(a, b, ignoreCase, bound) == std::min(full, static_cast<int>(bound) + 1));
+    }
+  }
+}
