@@ -7,10 +7,6 @@
 #include <cstdint>
 #include <cstdlib>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 namespace rb {
 
 namespace {
@@ -69,26 +65,10 @@ void ObstacleChanges::addFar(int x, int y) {
   boxes.assign(1, merged);
 }
 
-namespace {
-/// Asks the kernel to map the pages of [p, p + bytes) at once, before they are written: one
-/// system call instead of a page fault for every 4 KiB (about 470 for the screen), which costs
-/// more than the rest of an empty program's start-up on some virtual machines. Nothing happens
-/// where the kernel cannot (before Linux 5.14, other systems): the pages then fault as usual.
-void prefault([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-  const auto page = static_cast<uintptr_t>(4096);
-  const uintptr_t from = (reinterpret_cast<uintptr_t>(p) + page - 1) & ~(page - 1);
-  const uintptr_t to = (reinterpret_cast<uintptr_t>(p) + bytes) & ~(page - 1);
-  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
-#endif
-}
-}  // namespace
+Canvas::Canvas() = default;
 
-Canvas::Canvas() {
-  const size_t n = static_cast<size_t>(kWidth) * kHeight;
-  pixels_.reserve(n);
-  prefault(pixels_.data(), n * sizeof(Colour));
-  pixels_.assign(n, colours::kWhite);
+void Canvas::makePixels() const {
+  pixels_.assign(static_cast<size_t>(kWidth) * kHeight, background_);
 }
 
 void Canvas::push(DrawOp op) {
@@ -110,7 +90,7 @@ void Canvas::keepDisplayList(bool keep) {
 
 void Canvas::clear(Colour c) {
   background_ = c;
-  std::fill(pixels_.begin(), pixels_.end(), c);
+  std::fill(pixels_.begin(), pixels_.end(), c);  // nothing to fill while the screen is unmade
   obstaclesChangedEverywhere();
   ++version_;
   cursor_ = {};
@@ -222,7 +202,7 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
   if (x1 > x2) return;
   // plot() for each pixel, with what is the same for the whole row worked out once: pixels
   // that already have the colour cost one comparison.
-  Colour* row = &pixels_[static_cast<size_t>(y) * kWidth];
+  Colour* row = &materialize()[static_cast<size_t>(y) * kWidth];
   const bool obstacle = isObstacleColour(c);
   bool changed = false;
   for (int x = x1; x <= x2; ++x) {
@@ -433,6 +413,7 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
 
 void Canvas::scrollUp(int pixels) {
   size_t shift = static_cast<size_t>(pixels) * kWidth;
+  materialize();
   std::move(pixels_.begin() + static_cast<long>(shift), pixels_.end(), pixels_.begin());
   std::fill(pixels_.end() - static_cast<long>(shift), pixels_.end(), background_);
   obstaclesChangedEverywhere();
@@ -531,7 +512,7 @@ void Canvas::print(const std::string& s, bool newline) {
       });
 }
 
-void Canvas::save() { saved_ = pixels_; }
+void Canvas::save() { saved_ = materialize(); }
 
 void Canvas::restore() {
   if (saved_.empty()) return;

@@ -131,8 +131,11 @@ class Canvas {
 
   // ---- pixels
   static bool inside(int x, int y) { return x >= 0 && y >= 0 && x < kWidth && y < kHeight; }
-  Colour at(int x, int y) const { return pixels_[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)]; }
-  const std::vector<Colour>& pixels() const { return pixels_; }
+  Colour at(int x, int y) const {
+    return pixels_.empty() ? background_ : pixels_[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)];
+  }
+  /// Every pixel, row by row (the screen's memory is made on first use: see pixels_).
+  const std::vector<Colour>& pixels() const { return materialize(); }
 
   // ---- drawing state (setColor, lineWidth, gotoXY)
   Colour foreground = colours::kBlack;
@@ -212,7 +215,7 @@ class Canvas {
  private:
   void plot(int x, int y, Colour c) {
     if (!inside(x, y)) return;
-    Colour& p = pixels_[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)];
+    Colour& p = materialize()[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)];
     if (p == c) return;
     if (isObstacleColour(p) != isObstacleColour(c)) {
       ++obstacleVersion_;
@@ -241,7 +244,15 @@ class Canvas {
   }
   void pushTrail(std::vector<Point> pts, bool keepSeen);
 
-  std::vector<Colour> pixels_;
+  /// The screen, row by row; empty until something is drawn or the pixels are asked for, and
+  /// then every pixel is background_. A program that never draws never touches the 1.9 MB
+  /// (mapping those pages cost more than the rest of an empty program's start-up).
+  mutable std::vector<Colour> pixels_;
+  std::vector<Colour>& materialize() const {
+    if (pixels_.empty()) [[unlikely]] makePixels();
+    return pixels_;
+  }
+  void makePixels() const;
   std::vector<Colour> saved_;
   Colour background_ = colours::kWhite;
   std::vector<Colour> invisible_;

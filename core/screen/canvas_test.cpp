@@ -315,3 +315,28 @@ TEST_CASE("canvas: ellipses drawn by rows are the pixels of the per-pixel rule",
       }
   CHECK(checked > 1500);
 }
+
+TEST_CASE("canvas: the screen made on first use looks the same as one made at once", "[canvas]") {
+  const size_t n = static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight;
+  Canvas fresh;
+  CHECK(fresh.at(0, 0) == colours::kWhite);
+  CHECK(fresh.at(799, 599) == colours::kWhite);
+  CHECK(fresh.pixels() == std::vector<Colour>(n, colours::kWhite));
+
+  // clearScr before anything is drawn: every pixel takes the new colour, read either way.
+  Canvas cleared;
+  cleared.clear(colours::kRed);
+  CHECK(cleared.at(400, 300) == colours::kRed);
+  CHECK(cleared.pixels() == std::vector<Colour>(n, colours::kRed));
+  cleared.setPixel(1, 1, colours::kBlue);
+  CHECK(cleared.at(1, 1) == colours::kBlue);
+  CHECK(cleared.at(2, 1) == colours::kRed);
+
+  // saveScr of an untouched screen, then drawing, then restoreScr: the blank screen again.
+  Canvas saved;
+  saved.save();
+  saved.rectangle({10, 10}, {50, 50}, 1, colours::kBlack, colours::kBlack);
+  CHECK(saved.at(20, 20) == colours::kBlack);
+  saved.restore();
+  CHECK(saved.pixels() == std::vector<Colour>(n, colours::kWhite));
+}
