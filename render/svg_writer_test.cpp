@@ -3,8 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <iterator>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -23,18 +23,32 @@ std::string svgOf(const std::string& program, int scale = 1) {
   return renderSvg(run->canvas(), run->robot(), scale);
 }
 
-/// The elements named `tag` in the document, as their whole text.
+/// The elements named `tag` in the document, as their whole text. Scanned by hand: std::regex
+/// recurses once per character and overflows the stack on an embedded picture's base64.
 std::vector<std::string> elements(const std::string& svg, const std::string& tag) {
   std::vector<std::string> found;
-  std::regex re("<" + tag + "\\b[^>]*>");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
-    found.push_back(it->str());
+  const std::string open = "<" + tag;
+  for (size_t at = svg.find(open); at != std::string::npos; at = svg.find(open, at + 1)) {
+    const size_t after = at + open.size();
+    if (after < svg.size() && (std::isalnum(static_cast<unsigned char>(svg[after])) || svg[after] == '_'))
+      continue;  // a longer name that starts with tag
+    const size_t end = svg.find('>', after);
+    if (end == std::string::npos) break;
+    found.push_back(svg.substr(at, end - at + 1));
+  }
   return found;
 }
 
+/// The value of attribute `name` in an element's text, or "" without one.
 std::string attribute(const std::string& element, const std::string& name) {
-  std::smatch m;
-  if (std::regex_search(element, m, std::regex("\\s" + name + "=\"([^\"]*)\""))) return m[1];
+  const std::string key = name + "=\"";
+  for (size_t at = element.find(key); at != std::string::npos; at = element.find(key, at + 1)) {
+    if (at == 0 || !std::isspace(static_cast<unsigned char>(element[at - 1]))) continue;
+    const size_t from = at + key.size();
+    const size_t end = element.find('"', from);
+    if (end == std::string::npos) return {};
+    return element.substr(from, end - from);
+  }
   return {};
 }
 
