@@ -1,12 +1,21 @@
 #include "base/source.h"
 
+#include <cstring>
+
 namespace rb {
 
 SourceFile::SourceFile(std::string name, std::string text, SourceLoc includedFrom)
     : name_(std::move(name)), text_(std::move(text)), includedFrom_(includedFrom) {
+  // Counted first, so that the table has exactly its size (a big file has millions of lines).
+  const char* begin = text_.data();
+  const char* end = begin + text_.size();
+  size_t lines = 1;
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)))); ++p)
+    ++lines;
+  lineStarts_.reserve(lines);
   lineStarts_.push_back(0);
-  for (uint32_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\n' && i + 1 < text_.size()) lineStarts_.push_back(i + 1);
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)))); ++p) {
+    if (p + 1 < end) lineStarts_.push_back(static_cast<uint32_t>(p + 1 - begin));
   }
 }
 

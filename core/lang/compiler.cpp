@@ -182,6 +182,8 @@ void Compiler::checkTarget(const Expr& target) {
 // ---------------------------------------------------------------- emission
 
 uint32_t Compiler::emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc, uint16_t count) {
+  lastLoc_ = loc;
+  if (!options_.keepCode) return codeSize_++;
   Instr in;
   in.op = op;
   in.a = a;
@@ -190,13 +192,13 @@ uint32_t Compiler::emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc
   in.count = count;
   p_.code.push_back(in);
   p_.locs.push_back(loc);
-  return static_cast<uint32_t>(p_.code.size() - 1);
+  return codeSize_++;
 }
 
 /// Emits a control transfer carrying the statements counted since the previous one.
 uint32_t Compiler::emitTransfer(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc) {
   uint32_t pc = emit(op, a, b, c, loc);
-  p_.code[pc].steps = static_cast<int16_t>(pending_);
+  if (options_.keepCode) p_.code[pc].steps = static_cast<int16_t>(pending_);
   pending_ = 0;
   return pc;
 }
@@ -204,7 +206,7 @@ uint32_t Compiler::emitTransfer(Op op, uint32_t a, uint32_t b, uint32_t c, Sourc
 /// The address of the next instruction, as a jump target.
 Target Compiler::placeTarget() {
   if (pending_ > kMaxTargetPending) flushSteps();
-  return {static_cast<uint32_t>(p_.code.size()), static_cast<int32_t>(pending_)};
+  return {codeSize_, static_cast<int32_t>(pending_)};
 }
 
 void Compiler::flushSteps() {
@@ -212,6 +214,7 @@ void Compiler::flushSteps() {
 }
 
 void Compiler::patch(uint32_t pc, Target t) {
+  if (!options_.keepCode) return;
   Instr& in = p_.code[pc];
   if (in.op == Op::ForPrep || in.op == Op::ForLoop || in.op == Op::ForLoop1) in.c = t.pc;
   else in.a = t.pc;

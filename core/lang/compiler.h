@@ -15,6 +15,10 @@ namespace rb {
 struct CompileOptions {
   /// Emit a Line instruction at every statement (for `rb trace --lines` and single-stepping).
   bool lineTracing = false;
+  /// Keep the instructions. Off for `rb check` without --dump-code: every instruction is still
+  /// generated (so every error is found) but none is stored, and the program returned (when
+  /// there are no errors) has subs, labels and names but no code.
+  bool keepCode = true;
 };
 
 /// Compiles `program`. Errors and warnings go to `diags`; the result is null when `diags` holds

@@ -123,7 +123,9 @@ class Compiler {
   void flushSteps();
   void patch(uint32_t pc, Target t);
   void patchAll(const std::vector<uint32_t>& pcs, Target t);
-  SourceLoc lastLoc() const { return p_.locs.empty() ? SourceLoc{} : p_.locs.back(); }
+  SourceLoc lastLoc() const { return lastLoc_; }
+  /// The address of the next instruction (also when instructions are not kept).
+  uint32_t codeSize() const { return codeSize_; }
   uint32_t constant(const Value& v);
   uint32_t intConst(int64_t i) { return constant(Value::integer(i)); }
 
@@ -211,6 +213,8 @@ class Compiler {
   Scope* scope_ = nullptr;
   uint32_t subSkip_ = 0;   ///< the jump that lets code falling into a sub skip its body
   uint32_t pending_ = 0;   ///< statements counted since the last control transfer
+  uint32_t codeSize_ = 0;  ///< instructions emitted
+  SourceLoc lastLoc_;      ///< the source position of the last one
 
   std::vector<Block> blocks_;
   std::map<std::string_view, LabelInfo> labels_;

@@ -53,7 +53,7 @@ void Compiler::beginSub(const ast::SubSpan& span) {
   }
   if (sub >= 0) {
     SubInfo& info = p_.subs[static_cast<size_t>(sub)];
-    info.entry = static_cast<uint32_t>(p_.code.size());
+    info.entry = codeSize_;
     info.localCount = subScope_.localCount;
   }
 }
@@ -69,7 +69,7 @@ void Compiler::endSub(SourceLoc loc) {
   if (subScope_.sub >= 0) {
     SubInfo& info = p_.subs[static_cast<size_t>(subScope_.sub)];
     info.frameSize = subScope_.localCount + subScope_.maxTemp;
-    info.end = static_cast<uint32_t>(p_.code.size());
+    info.end = codeSize_;
   }
   scope_ = &global_;
   patch(subSkip_, placeTarget());
@@ -78,7 +78,8 @@ void Compiler::endSub(SourceLoc loc) {
 /// Patches the frame bump of every gosub in the scope now that its frame size is known.
 void Compiler::finishScope(Scope& sc) {
   uint32_t frame = sc.localCount + sc.maxTemp;
-  for (uint32_t pc : sc.gosubs) p_.code[pc].b = frame;
+  if (options_.keepCode)
+    for (uint32_t pc : sc.gosubs) p_.code[pc].b = frame;
 }
 
 // ---------------------------------------------------------------- slots
@@ -171,7 +172,7 @@ void Compiler::callSub(const SubInfo& sub, const std::vector<Expr*>& args, uint3
     if (sub.byRef[i]) {
       // A by-reference argument may be an output: it need not have a value yet.
       emit(Op::Move, first + i, variable(a->text), 0, a->loc);
-      p_.code.back().flags = kMoveMayBeUnassigned;
+      if (options_.keepCode) p_.code.back().flags = kMoveMayBeUnassigned;
     } else {
       exprInto(a, first + i);
     }
