@@ -83,7 +83,7 @@ int executeCheck(const CheckOptions& opts) {
   for (const std::string& file : files) {
     CompileOptions compile;
     compile.keepCode = opts.dumpCode;  // only the diagnostics are wanted otherwise
-    LoadedFile loaded = loadFile(file, compile, true);
+    LoadedFile loaded = loadFile(file, compile, true, true);
     if (opts.target == "rb9" && loaded.program) {
       checkRb9Target(*loaded.program, loaded.diags);
       loaded.diags.sort();

@@ -7,7 +7,7 @@
 
 namespace rb::cli {
 
-LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint) {
+LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint, bool compact) {
   LoadedFile out;
   std::string text;
   std::string name = file;
@@ -23,6 +23,7 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
   FileSourceReader reader;
   LoadOptions loadOptions;
   loadOptions.libraryDirs = libraryDirs();
+  loadOptions.compact = compact;
   out.program = loadProgram(name, std::move(text), reader, standardBuiltins(), loadOptions, out.diags);
   out.compiled = compileProgram(*out.program, options, out.diags);
   if (lint) lintProgram(*out.program, out.diags);

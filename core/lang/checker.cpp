@@ -47,13 +47,23 @@ std::unordered_set<std::string> namesOnErrorLines(const SourceSet& sources, cons
 }  // namespace
 
 void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
-  // Which sub parameters are by reference, for calls.
+  ast::Arena scratch;  // statements read back from the compact form, one at a time
+  // Which sub parameters are by reference, for calls; arrays are global: in a sub, an array name
+  // is the global array unless it is a parameter; and where each sub's body ends.
   std::unordered_map<std::string_view, std::vector<bool>> byRef;
-  for (const ast::Stmt* s : program.stmts) {
+  std::unordered_set<std::string_view> arrays;
+  ast::SubSpanFinder finder;
+  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
+    scratch.reset();
+    size_t i = c.index();
+    const ast::Stmt* s = c.next();
+    finder.add(*s, i);
+    ast::addArrayNames(*s, arrays);
     if (s->kind != ast::StmtKind::Sub || s->broken) continue;
     std::vector<bool>& flags = byRef[s->name];
     for (const ast::Param& p : s->params) flags.push_back(p.byRef);
   }
+  std::vector<ast::SubSpan> spans = finder.finish(program.stmtCount());
   auto isByRef = [&](std::string_view sub, size_t i) {
     auto it = byRef.find(sub);
     return it != byRef.end() && i < it->second.size() && it->second[i];
@@ -63,14 +73,13 @@ void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
   std::vector<ScopeUse> subs;
   ScopeUse* local = nullptr;      // the sub being read, if any
   bool skip = false;              // a sub whose line had a syntax error: its names are unknown
-  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
-  std::unordered_set<std::string_view> arrays = ast::arrayNames(program.stmts);
   std::unordered_set<std::string_view> params;
-  std::vector<ast::SubSpan> spans = ast::subSpans(program.stmts);
   auto nextSpan = spans.begin();
   size_t subEnd = 0;
-  for (size_t i = 0; i < program.stmts.size(); ++i) {
-    const ast::Stmt* s = program.stmts[i];
+  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
+    scratch.reset();
+    size_t i = c.index();
+    const ast::Stmt* s = c.next();
     if ((local || skip) && i == subEnd) {
       local = nullptr;
       skip = false;
@@ -182,7 +191,11 @@ void checkStmt(const ast::Stmt* s, const BuiltinTable& builtins, DiagnosticList&
 }  // namespace
 
 void checkRb9Target(const LoadedProgram& program, DiagnosticList& diags) {
-  for (const ast::Stmt* s : program.stmts) checkStmt(s, program.builtins, diags);
+  ast::Arena scratch;
+  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
+    scratch.reset();
+    checkStmt(c.next(), program.builtins, diags);
+  }
 }
 
 }  // namespace rb

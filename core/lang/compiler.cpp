@@ -14,14 +14,18 @@ namespace compiler {
 void Compiler::run() {
   p_.builtins = &builtins_;
   p_.lineTracing = options_.lineTracing;
-  declare();
+  std::vector<ast::SubSpan> spans = declare();
   scope_ = &global_;
-  const auto& stmts = lp_.stmts;
-  std::vector<ast::SubSpan> spans = ast::subSpans(stmts);
   auto nextSpan = spans.begin();
   const ast::SubSpan* open = nullptr;  // the sub being compiled
-  for (size_t i = 0; i < stmts.size(); ++i) {
-    const Stmt* s = stmts[i];
+  ast::StmtCursor cursor = lp_.cursor(scratch_);
+  while (!cursor.done()) {
+    // A statement read back from the compact form lives until the next reset: blocks still
+    // open refer to their opening statement.
+    if (blocks_.empty()) scratch_.reset();
+    size_t i = cursor.index();
+    const Stmt* s = cursor.next();
+    stmtIndex_ = i;
     if (open && i == open->end) {
       bool atEndSub = open->how == ast::SubEnd::EndSub;
       endSub(open->how == ast::SubEnd::EndOfFile ? SourceLoc{} : s->loc);
@@ -30,7 +34,7 @@ void Compiler::run() {
     }
     if (nextSpan != spans.end() && nextSpan->begin == i) {
       open = &*nextSpan++;
-      beginSub(*open);
+      beginSub(*s, cursor, *open);
       continue;
     }
     if (s->kind == StmtKind::EndSub) {
@@ -55,10 +59,17 @@ void Compiler::run() {
                  "rb-program-too-large");
 }
 
-/// Pass 1: finds labels and subs before compiling, so that forward references resolve.
-void Compiler::declare() {
-  arrays_ = ast::arrayNames(lp_.stmts);
-  for (const Stmt* s : lp_.stmts) {
+/// Pass 1: finds labels and subs before compiling, so that forward references resolve, and
+/// the arrays and the extent of every sub. Returns the subs' spans.
+std::vector<ast::SubSpan> Compiler::declare() {
+  ast::SubSpanFinder spans;
+  ast::StmtCursor cursor = lp_.cursor(scratch_);
+  while (!cursor.done()) {
+    scratch_.reset();
+    size_t i = cursor.index();
+    const Stmt* s = cursor.next();
+    spans.add(*s, i);
+    ast::addArrayNames(*s, arrays_);
     if (s->kind == StmtKind::Label) {
       auto [it, fresh] = labels_.try_emplace(s->name, LabelInfo{s->loc, Target{}, false});
       if (!fresh) {
@@ -92,6 +103,7 @@ void Compiler::declare() {
       diags_.error(info.loc, "label " + quoted(name) + " has the name of a sub", "rb-label-is-sub");
     }
   }
+  return spans.finish(cursor.size());
 }
 
 // ---------------------------------------------------------------- one statement

@@ -84,7 +84,7 @@ struct Scope {
   uint32_t nextTemp = 0;
   uint32_t maxTemp = 0;
   std::vector<uint32_t> gosubs;  ///< Gosub instructions whose frame bump is patched at the end
-  std::unordered_map<const Stmt*, uint32_t> forSlots;  ///< hidden limit/step slots of for loops
+  std::unordered_map<size_t, uint32_t> forSlots;  ///< hidden limit/step slots of for loops, by statement index
 };
 
 class Compiler {
@@ -109,7 +109,7 @@ class Compiler {
   };
 
   // ---- the driver (compiler.cpp)
-  void declare();
+  std::vector<ast::SubSpan> declare();
   void statement(const Stmt& s, bool topLevel);
   void statementBody(const Stmt& s);
   [[noreturn]] void fail(SourceLoc loc, std::string message, const char* code);
@@ -188,7 +188,7 @@ class Compiler {
   // ---- subs and scopes (compiler_subs.cpp)
   bool inSub() const { return scope_ != &global_; }
   bool isByRef(std::string_view sub, size_t i) const;
-  void beginSub(const ast::SubSpan& span);
+  void beginSub(const Stmt& sub, const ast::StmtCursor& body, const ast::SubSpan& span);
   void endSub(SourceLoc loc);
   void finishScope(Scope& sc);
   uint32_t variable(std::string_view name);
@@ -214,6 +214,9 @@ class Compiler {
   uint32_t subSkip_ = 0;   ///< the jump that lets code falling into a sub skip its body
   uint32_t pending_ = 0;   ///< statements counted since the last control transfer
   uint32_t codeSize_ = 0;  ///< instructions emitted
+  size_t stmtIndex_ = 0;   ///< the index of the statement being compiled
+  ast::Arena scratch_;     ///< statements read back from the compact form (LoadOptions::compact)
+  ast::Arena scanScratch_; ///< the same, for looking over a sub's body before compiling it
   SourceLoc lastLoc_;      ///< the source position of the last one
 
   std::vector<Block> blocks_;

@@ -17,8 +17,7 @@ bool Compiler::isByRef(std::string_view sub, size_t i) const {
 }
 
 /// Opens the scope of the sub `span` describes; its body follows, up to endSub().
-void Compiler::beginSub(const ast::SubSpan& span) {
-  const Stmt& s = *lp_.stmts[span.begin];
+void Compiler::beginSub(const Stmt& s, const ast::StmtCursor& body, const ast::SubSpan& span) {
   closeBlocksAtEnd(s.loc);  // blocks cannot continue into a sub
   auto it = subIndex_.find(s.name);
   int sub = it == subIndex_.end() ? -1 : static_cast<int>(it->second);
@@ -37,13 +36,15 @@ void Compiler::beginSub(const ast::SubSpan& span) {
   };
   for (const ast::Param& prm : s.params) addLocal(prm.name);
   auto byRef = [this](std::string_view n, size_t i) { return isByRef(n, i); };
-  for (size_t i = span.begin + 1; i < span.end; ++i) {
-    const Stmt* b = lp_.stmts[i];
+  for (ast::StmtCursor c(body, scanScratch_); c.index() < span.end;) {
+    scanScratch_.reset();
+    size_t i = c.index();
+    const Stmt* b = c.next();
     ast::forEachName(*b, builtins_, [&](std::string_view name, SourceLoc, ast::NameUse) {
       if (!ast::isGlobalRef(name) && !arrays_.count(name)) addLocal(name);  // arrays are global
     }, byRef);
     if (b->kind == StmtKind::For) {
-      subScope_.forSlots[b] = subScope_.localCount;
+      subScope_.forSlots[i] = subScope_.localCount;
       subScope_.localCount += 2;
       if (names) {
         names->emplace_back("(for limit)");

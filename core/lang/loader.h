@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lang/ast.h"
+#include "lang/compact_ast.h"
 #include "base/diagnostic.h"
 #include "base/source.h"
 
@@ -30,6 +31,11 @@ class SourceReader {
 struct LoadOptions {
   /// Folders searched for an #include that is not found beside the including file.
   std::vector<std::string> libraryDirs;
+  /// Keep the statements in their compact form (ast::CompactStmts) instead of as trees: each
+  /// statement's tree is freed once parsed, and read back one at a time by whoever walks the
+  /// program (`rb check`: a big program's trees take many times the memory of its text). The
+  /// compiler and the checks give the same results either way; `stmts` stays empty.
+  bool compact = false;
 };
 
 /// A parsed program with every include spliced in.
@@ -40,6 +46,13 @@ struct LoadedProgram {
   SourceSet sources;
   ast::Arena arena;
   std::vector<ast::Stmt*> stmts;
+  std::unique_ptr<ast::CompactStmts> compact;  ///< set when loaded with LoadOptions::compact
+
+  /// Reads the statements in order, whichever form they are kept in (see ast::StmtCursor).
+  ast::StmtCursor cursor(ast::Arena& scratch) const {
+    return compact ? ast::StmtCursor(*compact, scratch) : ast::StmtCursor(stmts);
+  }
+  size_t stmtCount() const { return compact ? compact->size() : stmts.size(); }
 };
 
 /// Loads `text` as the main file named `name` (already read by the caller), against the

@@ -1,0 +1,250 @@
+#include "lang/compact_ast.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+namespace rb::ast {
+
+// The encoding of one statement, field by field (every field, so that reading back gives the
+// same statement): numbers are LEB128 varints (signed ones zigzagged); a position is its file,
+// its line as a difference from the previous position of the statement, and its column; a
+// name or string is 0 (none), or the file whose text holds it, its offset as a difference from
+// the end of the previous text of the statement, and its length.
+
+namespace {
+
+constexpr size_t kChunk = 1 << 20;
+
+constexpr uint8_t kHasEnd = 0x80;      // Expr: `end` is set
+constexpr uint8_t kParen = 1;          // Stmt flags
+constexpr uint8_t kBroken = 2;
+constexpr uint8_t kHasTarget = 4;
+constexpr uint8_t kHasValue = 8;
+constexpr uint8_t kHasNameLoc = 16;
+
+class Encoder {
+ public:
+  Encoder(std::vector<uint8_t>& out, const SourceSet& sources) : out_(out), sources_(sources) {}
+
+  void stmt(const Stmt& s) {
+    uint8_t flags = static_cast<uint8_t>((s.paren ? kParen : 0) | (s.broken ? kBroken : 0) |
+                                         (s.target ? kHasTarget : 0) | (s.value ? kHasValue : 0) |
+                                         (s.nameLoc == SourceLoc{} ? 0 : kHasNameLoc));
+    byte(static_cast<uint8_t>(s.kind));
+    byte(static_cast<uint8_t>(s.op));
+    byte(flags);
+    loc(s.loc);
+    text(s.name, s.loc.file);
+    if (flags & kHasNameLoc) loc(s.nameLoc);
+    if (s.target) expr(*s.target);
+    if (s.value) expr(*s.value);
+    number(s.exprs.size());
+    for (const Expr* e : s.exprs) expr(*e);
+    number(s.seps.size());
+    for (Tok t : s.seps) byte(static_cast<uint8_t>(t));
+    number(s.params.size());
+    for (const Param& p : s.params) {
+      text(p.name, p.loc.file);
+      loc(p.loc);
+      byte(p.byRef ? 1 : 0);
+    }
+    number(s.body.size());
+    for (const Stmt* b : s.body) stmt(*b);
+  }
+
+ private:
+  void expr(const Expr& e) {
+    bool hasEnd = !(e.end == SourceLoc{});
+    byte(static_cast<uint8_t>(static_cast<uint8_t>(e.kind) | (hasEnd ? kHasEnd : 0)));
+    byte(static_cast<uint8_t>(e.op));
+    loc(e.loc);
+    if (hasEnd) loc(e.end);
+    text(e.text, e.loc.file);
+    if (e.kind == ExprKind::Float) {
+      uint8_t bits[sizeof(double)];
+      std::memcpy(bits, &e.dval, sizeof bits);
+      out_.insert(out_.end(), bits, bits + sizeof bits);
+    } else {
+      signedNumber(e.ival);
+    }
+    number(e.args.size());
+    for (const Expr* a : e.args) expr(*a);
+  }
+
+  void byte(uint8_t b) { out_.push_back(b); }
+  void number(uint64_t v) {
+    while (v >= 0x80) {
+      out_.push_back(static_cast<uint8_t>(v | 0x80));
+      v >>= 7;
+    }
+    out_.push_back(static_cast<uint8_t>(v));
+  }
+  void signedNumber(int64_t v) {
+    number((static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63));
+  }
+  void loc(SourceLoc l) {
+    number(l.file);
+    signedNumber(static_cast<int64_t>(l.line) - static_cast<int64_t>(prevLine_));
+    number(l.col);
+    prevLine_ = l.line;
+  }
+  void text(std::string_view t, uint32_t hint) {
+    if (t.data() == nullptr) {
+      number(0);
+      return;
+    }
+    uint32_t file = hint;
+    if (!holds(file, t)) {
+      for (file = 0; file < sources_.size() && !holds(file, t); ++file) {
+      }
+    }
+    // Every name and string the parser keeps is a piece of a file's text.
+    if (file == sources_.size()) throw std::logic_error("compact statements: a name outside the source text");
+    auto off = static_cast<int64_t>(t.data() - sources_.file(file).text().data());
+    number(file + 1);
+    signedNumber(off - prevEnd_);
+    number(t.size());
+    prevEnd_ = off + static_cast<int64_t>(t.size());
+  }
+  bool holds(uint32_t file, std::string_view t) const {
+    if (file >= sources_.size()) return false;
+    const std::string& all = sources_.file(file).text();
+    return t.data() >= all.data() && t.data() + t.size() <= all.data() + all.size();
+  }
+
+  std::vector<uint8_t>& out_;
+  const SourceSet& sources_;
+  uint32_t prevLine_ = 0;
+  int64_t prevEnd_ = 0;
+};
+
+class Decoder {
+ public:
+  Decoder(const uint8_t* in, const SourceSet& sources, Arena& arena)
+      : in_(in), sources_(sources), arena_(arena) {}
+
+  Stmt* stmt() {
+    Stmt* s = arena_.stmt();
+    s->kind = static_cast<StmtKind>(byte());
+    s->op = static_cast<Tok>(byte());
+    uint8_t flags = byte();
+    s->paren = flags & kParen;
+    s->broken = flags & kBroken;
+    s->loc = loc();
+    s->name = text();
+    s->nameLoc = flags & kHasNameLoc ? loc() : SourceLoc{};
+    s->target = flags & kHasTarget ? expr() : nullptr;
+    s->value = flags & kHasValue ? expr() : nullptr;
+    s->exprs.resize(number());
+    for (Expr*& e : s->exprs) e = expr();
+    s->seps.resize(number());
+    for (Tok& t : s->seps) t = static_cast<Tok>(byte());
+    s->params.resize(number());
+    for (Param& p : s->params) {
+      p.name = text();
+      p.loc = loc();
+      p.byRef = byte() != 0;
+    }
+    s->body.resize(number());
+    for (Stmt*& b : s->body) b = stmt();
+    return s;
+  }
+
+  const uint8_t* position() const { return in_; }
+
+ private:
+  Expr* expr() {
+    Expr* e = arena_.expr();
+    uint8_t kind = byte();
+    e->kind = static_cast<ExprKind>(kind & ~kHasEnd);
+    e->op = static_cast<Tok>(byte());
+    e->loc = loc();
+    e->end = kind & kHasEnd ? loc() : SourceLoc{};
+    e->text = text();
+    if (e->kind == ExprKind::Float) {
+      std::memcpy(&e->dval, in_, sizeof(double));
+      in_ += sizeof(double);
+    } else {
+      e->ival = signedNumber();
+    }
+    e->args.resize(number());
+    for (Expr*& a : e->args) a = expr();
+    return e;
+  }
+
+  uint8_t byte() { return *in_++; }
+  uint64_t number() {
+    uint64_t v = 0;
+    for (int shift = 0;; shift += 7) {
+      uint8_t b = *in_++;
+      v |= static_cast<uint64_t>(b & 0x7f) << shift;
+      if (!(b & 0x80)) return v;
+    }
+  }
+  int64_t signedNumber() {
+    uint64_t v = number();
+    return static_cast<int64_t>(v >> 1) ^ -static_cast<int64_t>(v & 1);
+  }
+  SourceLoc loc() {
+    SourceLoc l;
+    l.file = static_cast<uint32_t>(number());
+    l.line = static_cast<uint32_t>(static_cast<int64_t>(prevLine_) + signedNumber());
+    l.col = static_cast<uint32_t>(number());
+    prevLine_ = l.line;
+    return l;
+  }
+  std::string_view text() {
+    uint64_t file = number();
+    if (file == 0) return {};
+    int64_t off = prevEnd_ + signedNumber();
+    size_t len = number();
+    prevEnd_ = off + static_cast<int64_t>(len);
+    return std::string_view(sources_.file(static_cast<uint32_t>(file - 1)).text().data() + off, len);
+  }
+
+  const uint8_t* in_;
+  const SourceSet& sources_;
+  Arena& arena_;
+  uint32_t prevLine_ = 0;
+  int64_t prevEnd_ = 0;
+};
+
+}  // namespace
+
+void CompactStmts::add(const Stmt& s) {
+  buf_.clear();
+  Encoder(buf_, sources_).stmt(s);
+  if (chunks_.empty() || chunks_.back().cap - chunks_.back().size < buf_.size()) {
+    Chunk c;
+    c.cap = std::max(kChunk, buf_.size());
+    c.data = std::make_unique<uint8_t[]>(c.cap);
+    chunks_.push_back(std::move(c));
+  }
+  Chunk& c = chunks_.back();
+  std::memcpy(c.data.get() + c.size, buf_.data(), buf_.size());
+  c.size += buf_.size();
+  ++count_;
+}
+
+size_t CompactStmts::bytes() const {
+  size_t n = 0;
+  for (const Chunk& c : chunks_) n += c.cap;
+  return n;
+}
+
+const Stmt* StmtCursor::next() {
+  if (vec_) return (*vec_)[index_++];
+  while (offset_ == compact_->chunks_[chunk_].size) {
+    ++chunk_;
+    offset_ = 0;
+  }
+  const CompactStmts::Chunk& c = compact_->chunks_[chunk_];
+  Decoder d(c.data.get() + offset_, compact_->sources_, *scratch_);
+  const Stmt* s = d.stmt();
+  offset_ = static_cast<size_t>(d.position() - c.data.get());
+  ++index_;
+  return s;
+}
+
+}  // namespace rb::ast
