@@ -47,23 +47,17 @@ std::unordered_set<std::string> namesOnErrorLines(const SourceSet& sources, cons
 }  // namespace
 
 void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
-  ast::Arena scratch;  // statements read back from the compact form, one at a time
-  // Which sub parameters are by reference, for calls; arrays are global: in a sub, an array name
-  // is the global array unless it is a parameter; and where each sub's body ends.
+  // Which sub parameters are by reference, for calls.
   std::unordered_map<std::string_view, std::vector<bool>> byRef;
-  std::unordered_set<std::string_view> arrays;
-  ast::SubSpanFinder finder;
-  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
-    scratch.reset();
-    size_t i = c.index();
-    const ast::Stmt* s = c.next();
-    finder.add(*s, i);
-    ast::addArrayNames(*s, arrays);
-    if (s->kind != ast::StmtKind::Sub || s->broken) continue;
-    std::vector<bool>& flags = byRef[s->name];
-    for (const ast::Param& p : s->params) flags.push_back(p.byRef);
+  for (const Declaration& s : program.declarations) {
+    if (s.kind != ast::StmtKind::Sub || s.broken) continue;
+    std::vector<bool>& flags = byRef[s.name];
+    for (const ast::Param& p : s.params) flags.push_back(p.byRef);
   }
-  std::vector<ast::SubSpan> spans = finder.finish(program.stmtCount());
+  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
+  const std::unordered_set<std::string_view>& arrays = program.arrays;
+  const std::vector<ast::SubSpan>& spans = program.subSpans;
+  ast::Arena scratch;  // statements read back from the compact form, one at a time
   auto isByRef = [&](std::string_view sub, size_t i) {
     auto it = byRef.find(sub);
     return it != byRef.end() && i < it->second.size() && it->second[i];

@@ -14,7 +14,8 @@ namespace compiler {
 void Compiler::run() {
   p_.builtins = &builtins_;
   p_.lineTracing = options_.lineTracing;
-  std::vector<ast::SubSpan> spans = declare();
+  declare();
+  const std::vector<ast::SubSpan>& spans = lp_.subSpans;
   scope_ = &global_;
   auto nextSpan = spans.begin();
   const ast::SubSpan* open = nullptr;  // the sub being compiled
@@ -59,42 +60,35 @@ void Compiler::run() {
                  "rb-program-too-large");
 }
 
-/// Pass 1: finds labels and subs before compiling, so that forward references resolve, and
-/// the arrays and the extent of every sub. Returns the subs' spans.
-std::vector<ast::SubSpan> Compiler::declare() {
-  ast::SubSpanFinder spans;
-  ast::StmtCursor cursor = lp_.cursor(scratch_);
-  while (!cursor.done()) {
-    scratch_.reset();
-    size_t i = cursor.index();
-    const Stmt* s = cursor.next();
-    spans.add(*s, i);
-    ast::addArrayNames(*s, arrays_);
-    if (s->kind == StmtKind::Label) {
-      auto [it, fresh] = labels_.try_emplace(s->name, LabelInfo{s->loc, Target{}, false});
+/// Pass 1: declares labels and subs before compiling, so that forward references resolve.
+void Compiler::declare() {
+  arrays_ = lp_.arrays;
+  for (const Declaration& s : lp_.declarations) {
+    if (s.kind == StmtKind::Label) {
+      auto [it, fresh] = labels_.try_emplace(s.name, LabelInfo{s.loc, Target{}, false});
       if (!fresh) {
-        diags_.error(s->loc, "duplicate label " + quoted(s->name), "rb-duplicate-label");
-        diags_.note(it->second.loc, quoted(s->name) + " was first defined here");
+        diags_.error(s.loc, "duplicate label " + quoted(s.name), "rb-duplicate-label");
+        diags_.note(it->second.loc, quoted(s.name) + " was first defined here");
       }
-    } else if (s->kind == StmtKind::Sub && !s->broken) {
-      if (subIndex_.count(s->name)) {
-        diags_.error(s->nameLoc, "duplicate sub " + quoted(s->name), "rb-duplicate-sub");
-        diags_.note(p_.subs[subIndex_[s->name]].loc, quoted(s->name) + " was first defined here");
+    } else if (s.kind == StmtKind::Sub && !s.broken) {
+      if (subIndex_.count(s.name)) {
+        diags_.error(s.nameLoc, "duplicate sub " + quoted(s.name), "rb-duplicate-sub");
+        diags_.note(p_.subs[subIndex_[s.name]].loc, quoted(s.name) + " was first defined here");
         continue;
       }
-      if (std::optional<std::string> why = builtins_.misuse(s->name, NamePlace::Sub))
-        diags_.error(s->nameLoc, std::move(*why), "rb-misplaced-builtin");
+      if (std::optional<std::string> why = builtins_.misuse(s.name, NamePlace::Sub))
+        diags_.error(s.nameLoc, std::move(*why), "rb-misplaced-builtin");
       SubInfo info;
-      info.name = std::string(s->name);
-      info.loc = s->nameLoc;
-      info.paramCount = static_cast<uint32_t>(s->params.size());
+      info.name = std::string(s.name);
+      info.loc = s.nameLoc;
+      info.paramCount = static_cast<uint32_t>(s.params.size());
       std::unordered_set<std::string_view> seen;
-      for (const ast::Param& prm : s->params) {
+      for (const ast::Param& prm : s.params) {
         if (!seen.insert(prm.name).second)
           diags_.error(prm.loc, "parameter " + quoted(prm.name) + " appears twice", "rb-duplicate-parameter");
         info.byRef.push_back(prm.byRef);
       }
-      subIndex_[s->name] = static_cast<uint32_t>(p_.subs.size());
+      subIndex_[s.name] = static_cast<uint32_t>(p_.subs.size());
       p_.subs.push_back(std::move(info));
     }
   }
@@ -103,7 +97,6 @@ std::vector<ast::SubSpan> Compiler::declare() {
       diags_.error(info.loc, "label " + quoted(name) + " has the name of a sub", "rb-label-is-sub");
     }
   }
-  return spans.finish(cursor.size());
 }
 
 // ---------------------------------------------------------------- one statement

@@ -109,7 +109,7 @@ class Compiler {
   };
 
   // ---- the driver (compiler.cpp)
-  std::vector<ast::SubSpan> declare();
+  void declare();
   void statement(const Stmt& s, bool topLevel);
   void statementBody(const Stmt& s);
   [[noreturn]] void fail(SourceLoc loc, std::string message, const char* code);

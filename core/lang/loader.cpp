@@ -22,6 +22,7 @@ class Loader {
     if (auto canonical = reader_.find(name)) seen_.insert(*canonical);
     if (options_.compact) out_.compact = std::make_unique<ast::CompactStmts>(out_.sources);
     addAndParse(name, std::move(text), SourceLoc{}, 0);
+    out_.subSpans = spans_.finish(out_.stmtCount());
   }
 
  private:
@@ -34,11 +35,20 @@ class Loader {
                        [&](const std::vector<ast::Stmt*>& line) {
       for (ast::Stmt* s : line) {
         if (s->kind == ast::StmtKind::Include) include(*s, index, depth);
-        else if (out_.compact) out_.compact->add(*s);
-        else out_.stmts.push_back(s);
+        else keep(*s);
       }
       if (out_.compact) lineArena.reset();
     });
+  }
+
+  /// Adds a statement to the program, noting what is declared in it.
+  void keep(ast::Stmt& s) {
+    spans_.add(s, out_.stmtCount());
+    ast::addArrayNames(s, out_.arrays);
+    if (s.kind == ast::StmtKind::Label || s.kind == ast::StmtKind::Sub)
+      out_.declarations.push_back(Declaration{s.kind, s.broken, s.name, s.loc, s.nameLoc, s.params});
+    if (out_.compact) out_.compact->add(s);
+    else out_.stmts.push_back(&s);
   }
 
   void include(const ast::Stmt& s, uint32_t from, int depth) {
@@ -101,6 +111,7 @@ class Loader {
   const LoadOptions& options_;
   DiagnosticList& diags_;
   std::set<std::string> seen_;
+  ast::SubSpanFinder spans_;
 };
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lang/ast.h"
+#include "lang/ast_walk.h"
 #include "lang/compact_ast.h"
 #include "base/diagnostic.h"
 #include "base/source.h"
@@ -38,6 +39,17 @@ struct LoadOptions {
   bool compact = false;
 };
 
+/// A label or a sub statement: what the compiler declares before compiling, and the checks
+/// read before walking the program.
+struct Declaration {
+  ast::StmtKind kind = ast::StmtKind::Label;
+  bool broken = false;
+  std::string_view name;
+  SourceLoc loc;
+  SourceLoc nameLoc;
+  std::vector<ast::Param> params;
+};
+
 /// A parsed program with every include spliced in.
 struct LoadedProgram {
   explicit LoadedProgram(const BuiltinTable& table) : builtins(table) {}
@@ -47,6 +59,10 @@ struct LoadedProgram {
   ast::Arena arena;
   std::vector<ast::Stmt*> stmts;
   std::unique_ptr<ast::CompactStmts> compact;  ///< set when loaded with LoadOptions::compact
+  // Gathered while loading, so that nobody walks the whole program for them again:
+  std::vector<Declaration> declarations;  ///< every label and sub statement, in order
+  std::vector<ast::SubSpan> subSpans;     ///< ast::subSpans() of the statements
+  std::unordered_set<std::string_view> arrays;  ///< ast::arrayNames() of the statements
 
   /// Reads the statements in order, whichever form they are kept in (see ast::StmtCursor).
   ast::StmtCursor cursor(ast::Arena& scratch) const {
