@@ -46,63 +46,70 @@ std::unordered_set<std::string> namesOnErrorLines(const SourceSet& sources, cons
 
 }  // namespace
 
-void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
-  // Which sub parameters are by reference, for calls.
-  std::unordered_map<std::string_view, std::vector<bool>> byRef;
-  for (const Declaration& s : program.declarations) {
-    if (s.kind != ast::StmtKind::Sub || s.broken) continue;
-    std::vector<bool>& flags = byRef[s.name];
-    for (const ast::Param& p : s.params) flags.push_back(p.byRef);
-  }
-  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
-  const std::unordered_set<std::string_view>& arrays = program.arrays;
-  const std::vector<ast::SubSpan>& spans = program.subSpans;
-  ast::Arena scratch;  // statements read back from the compact form, one at a time
-  auto isByRef = [&](std::string_view sub, size_t i) {
-    auto it = byRef.find(sub);
-    return it != byRef.end() && i < it->second.size() && it->second[i];
-  };
-
+struct Linter::State {
+  explicit State(const LoadedProgram& p) : program(p), nextSpan(p.subSpans.begin()) {}
+  const LoadedProgram& program;
+  std::unordered_map<std::string_view, std::vector<bool>> byRef;  ///< sub parameters by reference
   ScopeUse global;
   std::vector<ScopeUse> subs;
   ScopeUse* local = nullptr;      // the sub being read, if any
   bool skip = false;              // a sub whose line had a syntax error: its names are unknown
   std::unordered_set<std::string_view> params;
-  auto nextSpan = spans.begin();
+  std::vector<ast::SubSpan>::const_iterator nextSpan;
   size_t subEnd = 0;
-  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
-    scratch.reset();
-    size_t i = c.index();
-    const ast::Stmt* s = c.next();
-    if ((local || skip) && i == subEnd) {
-      local = nullptr;
-      skip = false;
-    }
-    if (nextSpan != spans.end() && nextSpan->begin == i) {
-      subEnd = nextSpan->end;
-      ++nextSpan;
-      params.clear();
-      if (s->broken) {
-        skip = true;
-      } else {
-        subs.emplace_back();
-        local = &subs.back();
-        for (const ast::Param& p : s->params) params.insert(p.name);
-      }
-    }
-    if (skip || s->kind == ast::StmtKind::EndSub) continue;
-    ast::forEachName(*s, program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
-      bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !params.count(name));
-      ScopeUse* scope = local && !globalName ? local : &global;
-      name = ast::globalName(name);
-      if (use != ast::NameUse::Read) scope->written.insert(name);
-      if (use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) scope->firstRead.try_emplace(name, loc);
-    }, isByRef);
-  }
+};
 
+Linter::Linter(const LoadedProgram& program) : st_(std::make_unique<State>(program)) {
+  // Which sub parameters are by reference, for calls.
+  for (const Declaration& s : program.declarations) {
+    if (s.kind != ast::StmtKind::Sub || s.broken) continue;
+    std::vector<bool>& flags = st_->byRef[s.name];
+    for (const ast::Param& p : s.params) flags.push_back(p.byRef);
+  }
+}
+
+Linter::~Linter() = default;
+
+void Linter::statement(const ast::Stmt& s, size_t i) {
+  State& st = *st_;
+  const std::vector<ast::SubSpan>& spans = st.program.subSpans;
+  if ((st.local || st.skip) && i == st.subEnd) {
+    st.local = nullptr;
+    st.skip = false;
+  }
+  if (st.nextSpan != spans.end() && st.nextSpan->begin == i) {
+    st.subEnd = st.nextSpan->end;
+    ++st.nextSpan;
+    st.params.clear();
+    if (s.broken) {
+      st.skip = true;
+    } else {
+      st.subs.emplace_back();
+      st.local = &st.subs.back();
+      for (const ast::Param& p : s.params) st.params.insert(p.name);
+    }
+  }
+  if (st.skip || s.kind == ast::StmtKind::EndSub) return;
+  auto isByRef = [&](std::string_view sub, size_t k) {
+    auto it = st.byRef.find(sub);
+    return it != st.byRef.end() && k < it->second.size() && it->second[k];
+  };
+  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
+  const std::unordered_set<std::string_view>& arrays = st.program.arrays;
+  ast::forEachName(s, st.program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
+    bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !st.params.count(name));
+    ScopeUse* scope = st.local && !globalName ? st.local : &st.global;
+    name = ast::globalName(name);
+    if (use != ast::NameUse::Read) scope->written.insert(name);
+    if (use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) scope->firstRead.try_emplace(name, loc);
+  }, isByRef);
+}
+
+void Linter::finish(DiagnosticList& diags) {
+  State& st = *st_;
   // A line with an error was not (or not wholly) understood: any name on it may have been
   // assigned there, so a read of it elsewhere is no news (no cascade from a missing ')').
-  std::unordered_set<std::string> onBrokenLines = namesOnErrorLines(program.sources, diags);
+  std::unordered_set<std::string> onBrokenLines = namesOnErrorLines(st.program.sources, diags);
 
   auto report = [&](const ScopeUse& scope, const char* where) {
     std::vector<std::string_view> written(scope.written.begin(), scope.written.end());
@@ -119,8 +126,19 @@ void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
         d.fixits.push_back({loc, {loc.file, loc.line, loc.col + static_cast<uint32_t>(name.size())}, hint});
     }
   };
-  report(global, "");
-  for (const ScopeUse& s : subs) report(s, " in this sub");
+  report(st.global, "");
+  for (const ScopeUse& s : st.subs) report(s, " in this sub");
+}
+
+void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
+  Linter linter(program);
+  ast::Arena scratch;  // statements read back from the compact form, one at a time
+  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
+    scratch.reset();
+    size_t i = c.index();
+    linter.statement(*c.next(), i);
+  }
+  linter.finish(diags);
 }
 
 }  // namespace rb

@@ -27,6 +27,7 @@ void Compiler::run() {
     size_t i = cursor.index();
     const Stmt* s = cursor.next();
     stmtIndex_ = i;
+    if (options_.onStatement) options_.onStatement(*s, i);
     if (open && i == open->end) {
       bool atEndSub = open->how == ast::SubEnd::EndSub;
       endSub(open->how == ast::SubEnd::EndOfFile ? SourceLoc{} : s->loc);
