@@ -178,26 +178,50 @@ BuiltinTable::BuiltinTable(std::vector<Builtin> rows) : rows_(std::move(rows)) {
     Builtin& b = rows_[i];
     derive(b);
     auto k = static_cast<size_t>(b.kind);
-    if (!byKind_[k].emplace(b.name, i).second)
+    uint32_t& row = index_[b.name].row[k];
+    if (row == kNone) {
+      row = i;
+      size_t bit = shapeBit(b.name);
+      shapes_[bit / 64] |= uint64_t(1) << (bit % 64);
+    } else {
       throw std::logic_error("builtin table: " + std::string(b.name) + " appears twice as a " +
                              kindWord(b.kind));
+    }
     names_[k].push_back(b.name);
   }
 }
 
+size_t BuiltinTable::shapeBit(std::string_view name) {
+  if (name.empty()) return 0;
+  auto first = static_cast<size_t>(static_cast<unsigned char>(foldCase(name.front())) & 31);
+  auto last = static_cast<size_t>(static_cast<unsigned char>(foldCase(name.back())) & 31);
+  return (first << 10) | (last << 5) | (name.size() & 31);
+}
+
+const BuiltinTable::Entry* BuiltinTable::lookup(std::string_view name) const {
+  size_t bit = shapeBit(name);
+  if (!(shapes_[bit / 64] >> (bit % 64) & 1)) return nullptr;
+  auto it = index_.find(name);
+  return it == index_.end() ? nullptr : &it->second;
+}
+
 const Builtin* BuiltinTable::find(std::string_view name, BuiltinKind kind) const {
-  const Index& index = byKind_[static_cast<size_t>(kind)];
-  auto it = index.find(name);
-  return it == index.end() ? nullptr : &rows_[it->second];
+  const Entry* e = lookup(name);
+  if (!e) return nullptr;
+  uint32_t row = e->row[static_cast<size_t>(kind)];
+  return row == kNone ? nullptr : &rows_[row];
 }
 
 const Builtin* BuiltinTable::findAny(std::string_view name) const {
+  const Entry* e = lookup(name);
+  if (!e) return nullptr;
   for (BuiltinKind k : {BuiltinKind::Constant, BuiltinKind::Function, BuiltinKind::Command})
-    if (const Builtin* b = find(name, k)) return b;
+    if (uint32_t row = e->row[static_cast<size_t>(k)]; row != kNone) return &rows_[row];
   return nullptr;
 }
 
 std::optional<std::string> BuiltinTable::misuse(std::string_view name, NamePlace place) const {
+  if (!lookup(name)) return std::nullopt;  // no built-in's name: allowed anywhere
   const Builtin* b = nullptr;
   const char* use = "";
   std::string how;

@@ -116,10 +116,21 @@ class BuiltinTable {
   struct FoldedEqual {
     bool operator()(std::string_view a, std::string_view b) const;
   };
-  using Index = std::unordered_map<std::string_view, uint32_t, FoldedHash, FoldedEqual>;
+  /// The rows of each kind (by BuiltinKind) that bear one name; kNone where there is none.
+  static constexpr uint32_t kNone = 0xffffffffu;
+  struct Entry {
+    uint32_t row[3] = {kNone, kNone, kNone};
+  };
+  using Index = std::unordered_map<std::string_view, Entry, FoldedHash, FoldedEqual>;
+  /// The rows named `name`, or nullptr: one lookup for every kind.
+  const Entry* lookup(std::string_view name) const;
+  /// A bit for each (first letter, last letter, length) of a built-in's name, all folded: most
+  /// names a program uses are its own and are turned away here without hashing.
+  static size_t shapeBit(std::string_view name);
 
   std::vector<Builtin> rows_;
-  Index byKind_[3];
+  Index index_;
+  std::vector<uint64_t> shapes_ = std::vector<uint64_t>(1 << 9);
   std::vector<std::string_view> names_[3];
 };
 

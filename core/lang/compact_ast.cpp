@@ -136,18 +136,21 @@ class Decoder {
     s->nameLoc = flags & kHasNameLoc ? loc() : SourceLoc{};
     s->target = flags & kHasTarget ? expr() : nullptr;
     s->value = flags & kHasValue ? expr() : nullptr;
-    s->exprs.resize(number());
-    for (Expr*& e : s->exprs) e = expr();
-    s->seps.resize(number());
-    for (Tok& t : s->seps) t = static_cast<Tok>(byte());
-    s->params.resize(number());
-    for (Param& p : s->params) {
+    // The lists are empty (a node from the arena); most statements have few or none.
+    s->exprs.clear();
+    for (uint64_t n = number(); n > 0; --n) s->exprs.push_back(expr());
+    s->seps.clear();
+    for (uint64_t n = number(); n > 0; --n) s->seps.push_back(static_cast<Tok>(byte()));
+    s->params.clear();
+    for (uint64_t n = number(); n > 0; --n) {
+      Param p;
       p.name = text();
       p.loc = loc();
       p.byRef = byte() != 0;
+      s->params.push_back(p);
     }
-    s->body.resize(number());
-    for (Stmt*& b : s->body) b = stmt();
+    s->body.clear();
+    for (uint64_t n = number(); n > 0; --n) s->body.push_back(stmt());
     return s;
   }
 
@@ -168,8 +171,8 @@ class Decoder {
     } else {
       e->ival = signedNumber();
     }
-    e->args.resize(number());
-    for (Expr*& a : e->args) a = expr();
+    e->args.clear();
+    for (uint64_t n = number(); n > 0; --n) e->args.push_back(expr());
     return e;
   }
 

@@ -35,9 +35,12 @@ constexpr std::array kKeywords{
     Keyword{"print", Tok::KwPrint},   Keyword{"input", Tok::KwInput},
 };
 
-bool isIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isIdentChar(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$';
+// ASCII letters and digits only (what isalpha/isalnum give in the "C" locale), without a call
+// per character.
+inline bool isAsciiLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+inline bool isIdentStart(char c) { return isAsciiLetter(c) || c == '_'; }
+inline bool isIdentChar(char c) {
+  return isAsciiLetter(c) || (c >= '0' && c <= '9') || c == '_' || c == '$';
 }
 
 class Lexer {
@@ -240,7 +243,7 @@ class Lexer {
     Tok kind = Tok::Ident;
     if (word.size() < sizeof lower) {
       for (size_t i = 0; i < word.size(); ++i)
-        lower[i] = static_cast<char>(std::tolower(static_cast<unsigned char>(word[i])));
+        lower[i] = word[i] >= 'A' && word[i] <= 'Z' ? static_cast<char>(word[i] - 'A' + 'a') : word[i];
       std::string_view lw(lower, word.size());
       if (lw == "rem") {  // a remark runs to the end of the line
         skipToLineEnd();
@@ -344,13 +347,17 @@ std::vector<Token> lex(const SourceSet& sources, uint32_t fileIndex, DiagnosticL
 }
 
 Tok keywordKind(std::string_view lowerWord) {
-  static const std::unordered_map<std::string_view, Tok> table = [] {
-    std::unordered_map<std::string_view, Tok> m;
-    for (const auto& k : kKeywords) m.emplace(k.word, k.kind);
-    return m;
+  // The keywords of each length: a word is compared with the few of its own length only.
+  constexpr size_t kLongest = 8;
+  static const std::array<std::vector<Keyword>, kLongest + 1> byLength = [] {
+    std::array<std::vector<Keyword>, kLongest + 1> t;
+    for (const auto& k : kKeywords) t.at(k.word.size()).push_back(k);
+    return t;
   }();
-  auto it = table.find(lowerWord);
-  return it == table.end() ? Tok::Ident : it->second;
+  if (lowerWord.empty() || lowerWord.size() > kLongest) return Tok::Ident;
+  for (const Keyword& k : byLength[lowerWord.size()])
+    if (k.word[0] == lowerWord[0] && k.word == lowerWord) return k.kind;
+  return Tok::Ident;
 }
 
 const std::vector<std::string_view>& keywordSpellings() {
