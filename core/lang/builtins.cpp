@@ -157,28 +157,43 @@ std::string Builtin::usage() const {
 
 // ---- BuiltinTable
 
-size_t BuiltinTable::FoldedHash::operator()(std::string_view s) const {
-  size_t h = 14695981039346656037ull;  // FNV-1a over the case-folded characters
-  for (char c : s) {
-    h ^= static_cast<unsigned char>(foldCase(c));
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-bool BuiltinTable::FoldedEqual::operator()(std::string_view a, std::string_view b) const {
+namespace {
+bool foldedEqual(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (foldCase(a[i]) != foldCase(b[i])) return false;
   return true;
 }
+}  // namespace
+
+uint32_t BuiltinTable::foldedHash(std::string_view name) {
+  uint32_t h = 2166136261u ^ static_cast<uint32_t>(name.size());  // FNV-1a over folded bytes
+  for (char c : name) h = (h ^ static_cast<unsigned char>(foldCase(c))) * 16777619u;
+  return h;
+}
+
+BuiltinTable::Entry& BuiltinTable::entryFor(std::string_view name) {
+  size_t mask = slots_.size() - 1;
+  for (size_t i = foldedHash(name) & mask;; i = (i + 1) & mask) {
+    Slot& slot = slots_[i];
+    if (slot.name.empty()) {
+      slot.name = name;
+      return slot.entry;
+    }
+    if (foldedEqual(slot.name, name)) return slot.entry;
+  }
+}
 
 BuiltinTable::BuiltinTable(std::vector<Builtin> rows) : rows_(std::move(rows)) {
+  size_t size = 16;
+  while (size < rows_.size() * 2) size *= 2;
+  slots_.resize(size);
   for (uint32_t i = 0; i < rows_.size(); ++i) {
     Builtin& b = rows_[i];
     derive(b);
     auto k = static_cast<size_t>(b.kind);
-    uint32_t& row = index_[b.name].row[k];
+    if (b.name.empty()) throw std::logic_error("builtin table: a row without a name");
+    uint32_t& row = entryFor(b.name).row[k];
     if (row == kNone) {
       row = i;
       size_t bit = shapeBit(b.name);
@@ -201,8 +216,12 @@ size_t BuiltinTable::shapeBit(std::string_view name) {
 const BuiltinTable::Entry* BuiltinTable::lookup(std::string_view name) const {
   size_t bit = shapeBit(name);
   if (!(shapes_[bit / 64] >> (bit % 64) & 1)) return nullptr;
-  auto it = index_.find(name);
-  return it == index_.end() ? nullptr : &it->second;
+  size_t mask = slots_.size() - 1;
+  for (size_t i = foldedHash(name) & mask;; i = (i + 1) & mask) {
+    const Slot& slot = slots_[i];
+    if (slot.name.empty()) return nullptr;
+    if (foldedEqual(slot.name, name)) return &slot.entry;
+  }
 }
 
 const Builtin* BuiltinTable::find(std::string_view name, BuiltinKind kind) const {

@@ -1,5 +1,6 @@
 #include "lang/checker.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -19,8 +20,8 @@ namespace rb {
 namespace {
 
 struct ScopeUse {
-  std::set<std::string_view> written;
-  std::map<std::string_view, SourceLoc> firstRead;  // ordered for stable output
+  std::unordered_set<std::string_view> written;
+  std::unordered_map<std::string_view, SourceLoc> firstRead;  // reported in the order of names
 };
 
 /// Every word that looks like a name on a line that has an error.
@@ -113,7 +114,10 @@ void Linter::finish(DiagnosticList& diags) {
 
   auto report = [&](const ScopeUse& scope, const char* where) {
     std::vector<std::string_view> written(scope.written.begin(), scope.written.end());
-    for (const auto& [name, loc] : scope.firstRead) {
+    std::sort(written.begin(), written.end());
+    std::vector<std::pair<std::string_view, SourceLoc>> reads(scope.firstRead.begin(), scope.firstRead.end());
+    std::sort(reads.begin(), reads.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [name, loc] : reads) {
       if (scope.written.count(name) || onBrokenLines.count(std::string(name))) continue;
       std::string msg = "variable '" + std::string(name) + "' is read but never assigned" + where;
       std::string hint = closestMatch(name, written, true);

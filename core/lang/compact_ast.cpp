@@ -25,9 +25,16 @@ constexpr uint8_t kHasNameLoc = 16;
 
 class Encoder {
  public:
-  Encoder(std::vector<uint8_t>& out, const SourceSet& sources) : out_(out), sources_(sources) {}
+  /// Writes into `out` (grown as needed); size() is the length written.
+  Encoder(std::vector<uint8_t>& out, const SourceSet& sources) : out_(out), sources_(sources) {
+    if (out_.size() < 256) out_.resize(256);
+    p_ = out_.data();
+    end_ = p_ + out_.size();
+  }
+  size_t size() const { return static_cast<size_t>(p_ - out_.data()); }
 
   void stmt(const Stmt& s) {
+    room(3 + 3 * kLoc + kText + 5 * 4);
     uint8_t flags = static_cast<uint8_t>((s.paren ? kParen : 0) | (s.broken ? kBroken : 0) |
                                          (s.target ? kHasTarget : 0) | (s.value ? kHasValue : 0) |
                                          (s.nameLoc == SourceLoc{} ? 0 : kHasNameLoc));
@@ -39,22 +46,31 @@ class Encoder {
     if (flags & kHasNameLoc) loc(s.nameLoc);
     if (s.target) expr(*s.target);
     if (s.value) expr(*s.value);
+    room(5);
     number(s.exprs.size());
     for (const Expr* e : s.exprs) expr(*e);
+    room(5 + s.seps.size());
     number(s.seps.size());
     for (Tok t : s.seps) byte(static_cast<uint8_t>(t));
+    room(5);
     number(s.params.size());
     for (const Param& p : s.params) {
+      room(kText + kLoc + 1);
       text(p.name, p.loc.file);
       loc(p.loc);
       byte(p.byRef ? 1 : 0);
     }
+    room(5);
     number(s.body.size());
     for (const Stmt* b : s.body) stmt(*b);
   }
 
  private:
+  static constexpr size_t kLoc = 3 * 10;   // the most a position takes
+  static constexpr size_t kText = 3 * 10;  // the most a text reference takes
+
   void expr(const Expr& e) {
+    room(2 + 2 * kLoc + kText + 10 + 5);
     bool hasEnd = !(e.end == SourceLoc{});
     byte(static_cast<uint8_t>(static_cast<uint8_t>(e.kind) | (hasEnd ? kHasEnd : 0)));
     byte(static_cast<uint8_t>(e.op));
@@ -62,9 +78,8 @@ class Encoder {
     if (hasEnd) loc(e.end);
     text(e.text, e.loc.file);
     if (e.kind == ExprKind::Float) {
-      uint8_t bits[sizeof(double)];
-      std::memcpy(bits, &e.dval, sizeof bits);
-      out_.insert(out_.end(), bits, bits + sizeof bits);
+      std::memcpy(p_, &e.dval, sizeof(double));
+      p_ += sizeof(double);
     } else {
       signedNumber(e.ival);
     }
@@ -72,13 +87,21 @@ class Encoder {
     for (const Expr* a : e.args) expr(*a);
   }
 
-  void byte(uint8_t b) { out_.push_back(b); }
+  /// Makes room for `n` more bytes; the writers below assume it.
+  void room(size_t n) {
+    if (static_cast<size_t>(end_ - p_) >= n) return;
+    size_t at = size();
+    out_.resize(std::max(out_.size() * 2, at + n));
+    p_ = out_.data() + at;
+    end_ = out_.data() + out_.size();
+  }
+  void byte(uint8_t b) { *p_++ = b; }
   void number(uint64_t v) {
     while (v >= 0x80) {
-      out_.push_back(static_cast<uint8_t>(v | 0x80));
+      *p_++ = static_cast<uint8_t>(v | 0x80);
       v >>= 7;
     }
-    out_.push_back(static_cast<uint8_t>(v));
+    *p_++ = static_cast<uint8_t>(v);
   }
   void signedNumber(int64_t v) {
     number((static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63));
@@ -114,6 +137,8 @@ class Encoder {
   }
 
   std::vector<uint8_t>& out_;
+  uint8_t* p_;
+  uint8_t* end_;
   const SourceSet& sources_;
   uint32_t prevLine_ = 0;
   int64_t prevEnd_ = 0;
@@ -216,17 +241,18 @@ class Decoder {
 }  // namespace
 
 void CompactStmts::add(const Stmt& s) {
-  buf_.clear();
-  Encoder(buf_, sources_).stmt(s);
-  if (chunks_.empty() || chunks_.back().cap - chunks_.back().size < buf_.size()) {
+  Encoder enc(buf_, sources_);
+  enc.stmt(s);
+  size_t n = enc.size();
+  if (chunks_.empty() || chunks_.back().cap - chunks_.back().size < n) {
     Chunk c;
-    c.cap = std::max(kChunk, buf_.size());
+    c.cap = std::max(kChunk, n);
     c.data = std::make_unique<uint8_t[]>(c.cap);
     chunks_.push_back(std::move(c));
   }
   Chunk& c = chunks_.back();
-  std::memcpy(c.data.get() + c.size, buf_.data(), buf_.size());
-  c.size += buf_.size();
+  std::memcpy(c.data.get() + c.size, buf_.data(), n);
+  c.size += n;
   ++count_;
 }
 

@@ -239,26 +239,22 @@ void Compiler::patchAll(const std::vector<uint32_t>& pcs, Target t) {
 
 // ---------------------------------------------------------------- constants
 
-/// The constant-pool operand of `v`; equal constants share one entry.
+/// The constant-pool operand of `v`; equal constants (of one type, floats bit for bit) share
+/// one entry.
 uint32_t Compiler::constant(const Value& v) {
-  // The key: a type letter, then the value's digits, bits or characters.
-  std::string key;
-  if (v.isInt()) {
-    key = 'i';
-    key += std::to_string(v.i());
-  } else if (v.isNum()) {
+  auto add = [&](auto& index, auto key) {
+    auto [it, fresh] = index.try_emplace(std::move(key), static_cast<uint32_t>(p_.constants.size()));
+    if (fresh) p_.constants.push_back(v);
+    return operand(Base::Const, it->second);
+  };
+  if (v.isInt()) return add(intConsts_, v.i());
+  if (v.isNum()) {
     double d = v.d();
-    char bits[sizeof d];
-    std::memcpy(bits, &d, sizeof d);
-    key = 'd';
-    key.append(bits, sizeof bits);
-  } else {
-    key = 's';
-    key += v.str();
+    uint64_t bits;
+    std::memcpy(&bits, &d, sizeof d);
+    return add(floatConsts_, bits);
   }
-  auto [it, fresh] = constIndex_.try_emplace(key, static_cast<uint32_t>(p_.constants.size()));
-  if (fresh) p_.constants.push_back(v);
-  return operand(Base::Const, it->second);
+  return add(stringConsts_, v.str());
 }
 
 }  // namespace compiler

@@ -215,10 +215,9 @@ class Lexer {
       }
     }
     t.text = std::string_view(text_).substr(start, pos_ - start);
-    std::string digits(t.text);
     if (!isFloat) {
       int64_t v = 0;
-      auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+      auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
       if (r.ec == std::errc()) {
         t.kind = Tok::Int;
         t.intValue = v;
@@ -227,6 +226,7 @@ class Lexer {
       }
       // Too large for a 64-bit integer: keep it as a double.
     }
+    std::string digits(t.text);
     t.kind = Tok::Float;
     t.floatValue = std::strtod(digits.c_str(), nullptr);
     if (!std::isfinite(t.floatValue)) {
