@@ -160,6 +160,11 @@ std::string Builtin::usage() const {
 namespace {
 bool foldedEqual(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
+  // Bytes equal apart from bit 0x20 first (what equal letters of either case are), then exactly.
+  unsigned diff = 0;
+  for (size_t i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+  if (diff == 0) return true;  // the same bytes
+  if (diff & ~0x20u) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (foldCase(a[i]) != foldCase(b[i])) return false;
   return true;
@@ -167,9 +172,10 @@ bool foldedEqual(std::string_view a, std::string_view b) {
 }  // namespace
 
 uint32_t BuiltinTable::foldedHash(std::string_view name) {
-  uint32_t h = 2166136261u ^ static_cast<uint32_t>(name.size());  // FNV-1a over folded bytes
-  for (char c : name) h = (h ^ static_cast<unsigned char>(foldCase(c))) * 16777619u;
-  return h;
+  // FNV-1a over the bytes with bit 0x20 set: the same for names equal but for ASCII case.
+  uint32_t h = 2166136261u ^ static_cast<uint32_t>(name.size());
+  for (char c : name) h = (h ^ (static_cast<unsigned char>(c) | 0x20u)) * 16777619u;
+  return h ^ (h >> 15);
 }
 
 BuiltinTable::Entry& BuiltinTable::entryFor(std::string_view name) {

@@ -7,10 +7,11 @@
 namespace rb::ast {
 
 // The encoding of one statement, field by field (every field, so that reading back gives the
-// same statement): numbers are LEB128 varints (signed ones zigzagged); a position is its file,
-// its line as a difference from the previous position of the statement, and its column; a
-// name or string is 0 (none), or the file whose text holds it, its offset as a difference from
-// the end of the previous text of the statement, and its length.
+// same statement): numbers are LEB128 varints (signed ones zigzagged); a position is its line
+// as a difference from the previous position of the statement, with a bit that says whether
+// its file follows (when it is not the previous position's), then its column; a name or
+// string is 0 (none), 1 (in the file of the previous one) or 2 + its file, then its offset as
+// a difference from the end of the previous text of the statement, and its length.
 
 namespace {
 
@@ -107,10 +108,14 @@ class Encoder {
     number((static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63));
   }
   void loc(SourceLoc l) {
-    number(l.file);
-    signedNumber(static_cast<int64_t>(l.line) - static_cast<int64_t>(prevLine_));
+    int64_t delta = static_cast<int64_t>(l.line) - static_cast<int64_t>(prevLine_);
+    uint64_t zz = (static_cast<uint64_t>(delta) << 1) ^ static_cast<uint64_t>(delta >> 63);
+    bool newFile = l.file != prevFile_;
+    number(zz << 1 | (newFile ? 1 : 0));
+    if (newFile) number(l.file);
     number(l.col);
     prevLine_ = l.line;
+    prevFile_ = l.file;
   }
   void text(std::string_view t, uint32_t hint) {
     if (t.data() == nullptr) {
@@ -125,7 +130,8 @@ class Encoder {
     // Every name and string the parser keeps is a piece of a file's text.
     if (file == sources_.size()) throw std::logic_error("compact statements: a name outside the source text");
     auto off = static_cast<int64_t>(t.data() - sources_.file(file).text().data());
-    number(file + 1);
+    number(file == prevTextFile_ ? 1 : uint64_t(file) + 2);
+    prevTextFile_ = file;
     signedNumber(off - prevEnd_);
     number(t.size());
     prevEnd_ = off + static_cast<int64_t>(t.size());
@@ -141,6 +147,8 @@ class Encoder {
   uint8_t* end_;
   const SourceSet& sources_;
   uint32_t prevLine_ = 0;
+  uint32_t prevFile_ = 0;
+  uint32_t prevTextFile_ = 0;
   int64_t prevEnd_ = 0;
 };
 
@@ -216,25 +224,32 @@ class Decoder {
   }
   SourceLoc loc() {
     SourceLoc l;
-    l.file = static_cast<uint32_t>(number());
-    l.line = static_cast<uint32_t>(static_cast<int64_t>(prevLine_) + signedNumber());
+    uint64_t head = number();
+    uint64_t zz = head >> 1;
+    int64_t delta = static_cast<int64_t>(zz >> 1) ^ -static_cast<int64_t>(zz & 1);
+    l.file = head & 1 ? static_cast<uint32_t>(number()) : prevFile_;
+    l.line = static_cast<uint32_t>(static_cast<int64_t>(prevLine_) + delta);
     l.col = static_cast<uint32_t>(number());
     prevLine_ = l.line;
+    prevFile_ = l.file;
     return l;
   }
   std::string_view text() {
-    uint64_t file = number();
-    if (file == 0) return {};
+    uint64_t head = number();
+    if (head == 0) return {};
+    if (head > 1) prevTextFile_ = static_cast<uint32_t>(head - 2);
     int64_t off = prevEnd_ + signedNumber();
     size_t len = number();
     prevEnd_ = off + static_cast<int64_t>(len);
-    return std::string_view(sources_.file(static_cast<uint32_t>(file - 1)).text().data() + off, len);
+    return std::string_view(sources_.file(prevTextFile_).text().data() + off, len);
   }
 
   const uint8_t* in_;
   const SourceSet& sources_;
   Arena& arena_;
   uint32_t prevLine_ = 0;
+  uint32_t prevFile_ = 0;
+  uint32_t prevTextFile_ = 0;
   int64_t prevEnd_ = 0;
 };
 

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <unordered_map>
 
@@ -88,8 +89,9 @@ class Lexer {
       lineStart_ = pos_;
       return;
     }
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-      ++pos_;
+    if (isBlank(c)) {
+      do ++pos_;
+      while (pos_ < text_.size() && isBlank(text_[pos_]));
       return;
     }
     if (c == '/' && peek(1) == '/') return skipToLineEnd();
@@ -126,8 +128,10 @@ class Lexer {
     t.text = std::string_view(text_).substr(start, len);
     out.push_back(t);
   }
+  static bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
   void skipToLineEnd() {
-    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    const void* nl = std::memchr(text_.data() + pos_, '\n', text_.size() - pos_);
+    pos_ = nl ? static_cast<size_t>(static_cast<const char*>(nl) - text_.data()) : text_.size();
   }
   void blockComment(std::vector<Token>& out) {
     SourceLoc startLoc = loc(pos_);
