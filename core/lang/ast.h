@@ -97,8 +97,12 @@ struct Stmt {
 /// has millions of them).
 class Arena {
  public:
-  Expr* expr() { return exprs_.next(); }
-  Stmt* stmt() { return stmts_.next(); }
+  Expr* expr() { return exprs_.next(true); }
+  Stmt* stmt() { return stmts_.next(true); }
+  /// A node whose every field the caller sets (lists: clears, then fills): a reused node is
+  /// handed out as it was left.
+  Expr* exprToOverwrite() { return exprs_.next(false); }
+  Stmt* stmtToOverwrite() { return stmts_.next(false); }
   /// Forgets every node handed out: the blocks are reused, each node handed out again as if
   /// new (its lists keep their room). For holding one statement at a time.
   void reset() {
@@ -110,7 +114,7 @@ class Arena {
   template <typename T>
   class Pool {
    public:
-    T* next() {
+    T* next(bool renewed) {
       if (used_ == kBlock) {
         if (filled_ == blocks_.size()) blocks_.push_back(std::make_unique<T[]>(kBlock));
         reused_ = filled_ < reusable_;
@@ -118,7 +122,7 @@ class Arena {
         used_ = 0;
       }
       T* node = &blocks_[filled_ - 1][used_++];
-      if (reused_) renew(*node);
+      if (reused_ && renewed) renew(*node);
       return node;
     }
     void reset() {

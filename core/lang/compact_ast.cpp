@@ -158,7 +158,7 @@ class Decoder {
       : in_(in), sources_(sources), arena_(arena) {}
 
   Stmt* stmt() {
-    Stmt* s = arena_.stmt();
+    Stmt* s = arena_.stmtToOverwrite();  // every field is set below
     s->kind = static_cast<StmtKind>(byte());
     s->op = static_cast<Tok>(byte());
     uint8_t flags = byte();
@@ -191,7 +191,7 @@ class Decoder {
 
  private:
   Expr* expr() {
-    Expr* e = arena_.expr();
+    Expr* e = arena_.exprToOverwrite();  // every field is set below
     uint8_t kind = byte();
     e->kind = static_cast<ExprKind>(kind & ~kHasEnd);
     e->op = static_cast<Tok>(byte());
@@ -237,11 +237,14 @@ class Decoder {
   std::string_view text() {
     uint64_t head = number();
     if (head == 0) return {};
-    if (head > 1) prevTextFile_ = static_cast<uint32_t>(head - 2);
+    if (head > 1 || !fileText_) {
+      if (head > 1) prevTextFile_ = static_cast<uint32_t>(head - 2);
+      fileText_ = sources_.file(prevTextFile_).text().data();
+    }
     int64_t off = prevEnd_ + signedNumber();
     size_t len = number();
     prevEnd_ = off + static_cast<int64_t>(len);
-    return std::string_view(sources_.file(prevTextFile_).text().data() + off, len);
+    return std::string_view(fileText_ + off, len);
   }
 
   const uint8_t* in_;
@@ -250,6 +253,7 @@ class Decoder {
   uint32_t prevLine_ = 0;
   uint32_t prevFile_ = 0;
   uint32_t prevTextFile_ = 0;
+  const char* fileText_ = nullptr;  ///< the text of prevTextFile_
   int64_t prevEnd_ = 0;
 };
 

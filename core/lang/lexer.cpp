@@ -321,7 +321,7 @@ class Lexer {
     }
   }
 
-  const std::string& text_;
+  std::string_view text_;  // a view, so that writing pos_ never makes the compiler read it again
   uint32_t file_;
   DiagnosticList& diags_;
   size_t pos_ = 0;
