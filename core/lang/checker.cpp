@@ -19,9 +19,14 @@ namespace rb {
 
 namespace {
 
+/// How a scope (the main program or a sub) uses one name.
+struct NameUses {
+  bool written = false;
+  bool read = false;
+  SourceLoc firstRead;
+};
 struct ScopeUse {
-  std::unordered_set<std::string_view> written;
-  std::unordered_map<std::string_view, SourceLoc> firstRead;  // reported in the order of names
+  std::unordered_map<std::string_view, NameUses> names;  // reported in the order of names
 };
 
 /// Every word that looks like a name on a line that has an error.
@@ -100,9 +105,12 @@ void Linter::statement(const ast::Stmt& s, size_t i) {
   ast::forEachName(s, st.program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
     bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !st.params.count(name));
     ScopeUse* scope = st.local && !globalName ? st.local : &st.global;
-    name = ast::globalName(name);
-    if (use != ast::NameUse::Read) scope->written.insert(name);
-    if (use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) scope->firstRead.try_emplace(name, loc);
+    NameUses& uses = scope->names[ast::globalName(name)];
+    if (use != ast::NameUse::Read) uses.written = true;
+    if ((use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) && !uses.read) {
+      uses.read = true;
+      uses.firstRead = loc;
+    }
   }, isByRef);
 }
 
@@ -113,12 +121,16 @@ void Linter::finish(DiagnosticList& diags) {
   std::unordered_set<std::string> onBrokenLines = namesOnErrorLines(st.program.sources, diags);
 
   auto report = [&](const ScopeUse& scope, const char* where) {
-    std::vector<std::string_view> written(scope.written.begin(), scope.written.end());
+    std::vector<std::string_view> written;
+    std::vector<std::pair<std::string_view, SourceLoc>> reads;  // read and never written
+    for (const auto& [name, uses] : scope.names) {
+      if (uses.written) written.push_back(name);
+      else if (uses.read) reads.emplace_back(name, uses.firstRead);
+    }
     std::sort(written.begin(), written.end());
-    std::vector<std::pair<std::string_view, SourceLoc>> reads(scope.firstRead.begin(), scope.firstRead.end());
     std::sort(reads.begin(), reads.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [name, loc] : reads) {
-      if (scope.written.count(name) || onBrokenLines.count(std::string(name))) continue;
+      if (onBrokenLines.count(std::string(name))) continue;
       std::string msg = "variable '" + std::string(name) + "' is read but never assigned" + where;
       std::string hint = closestMatch(name, written, true);
       if (!hint.empty()) {
