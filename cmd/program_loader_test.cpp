@@ -119,3 +119,94 @@ TEST_CASE("statements read back from the compact form equal the parsed ones", "[
   LoadedFile trees = loadFile(testPrograms().front(), CompileOptions{}, false);
   CHECK(compact.program->stmtCount() == trees.program->stmts.size());
 }
+
+namespace {
+
+/// Writes `text` to a file of its own in the temporary folder and returns its path.
+std::string writeProgram(const std::string& name, const std::string& text) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / "rb_program_loader_test";
+  std::filesystem::create_directories(dir);
+  std::filesystem::path file = dir / name;
+  std::FILE* f = std::fopen(file.string().c_str(), "wb");
+  REQUIRE(f);
+  std::fwrite(text.data(), 1, text.size(), f);
+  std::fclose(f);
+  return file.string();
+}
+
+/// "line:col code" of every diagnostic (notes: "line:col note").
+std::vector<std::string> where(const LoadedFile& f) {
+  std::vector<std::string> out;
+  for (const Diagnostic& d : f.diags.all())
+    out.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.col) + " " +
+                  (d.severity == Severity::Note ? std::string("note") : d.code));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("rb check's compact walk still sees what lies ahead and what is still open", "[check]") {
+  // Forward references need what loading gathered: a sub called before its definition (its
+  // parameter count), a label defined after its gosub, an array dimmed after the sub that
+  // reads it (arrays are global). A block stays open across many statements: its opening
+  // statement (a while's condition is compiled at its wend) must outlive them.
+  std::string body;
+  for (int i = 0; i < 600; ++i) body += "  total = total + " + std::to_string(i) + "\n";
+  std::string text =
+      "total = 0\n"                           // 1
+      "gosub Later\n"                         // 2
+      "call Fill(1, 2)\n"                     // 3: Fill takes 1 argument
+      "gosub Nowhere\n"                       // 4: no such label
+      "while nothing(total) < 3\n" +          // 5: no such function, found at the wend
+      body +                                  // 6..605
+      "wend\n"                                // 606
+      "Later:\n"                              // 607
+      "  return\n"                            // 608
+      "sub Fill(n)\n"                         // 609
+      "  for i = 1 to n\n"                    // 610
+      "    total = total + table[i] + kept\n" // 611: table is global; kept is never assigned
+      "  next\n"                              // 612
+      "endsub\n"                              // 613
+      "dim table[3]\n"                        // 614
+      "if total > 3\n"                        // 615: never closed
+      "  print total\n";                      // 616
+  std::string file = writeProgram("ahead.bas", text);
+  LoadedFile trees = loadFile(file, CompileOptions{}, true);
+  CompileOptions dropped;
+  dropped.keepCode = false;
+  LoadedFile compact = loadFile(file, dropped, true, true);
+  std::vector<std::string> want = {"3:14 rb-argument-count", "4:7 rb-undefined-label",
+                                   "5:7 rb-unknown-function", "611:32 rb-unassigned-variable",
+                                   "615:1 rb-unclosed-if"};
+  std::vector<std::string> got = where(compact);
+  std::vector<std::string> gotCodes;
+  for (const std::string& w : got)
+    if (w.find(" note") == std::string::npos) gotCodes.push_back(w);
+  CHECK(gotCodes == want);
+  CHECK(allDiagnostics(compact) == allDiagnostics(trees));
+}
+
+TEST_CASE("rb check's compact form keeps included files' statements where they are included", "[check]") {
+  std::string lib = writeProgram("lib_part.bas",
+                                 "Helper:\n"
+                                 "  shared = shared + 1\n"
+                                 "  return\n"
+                                 "sub Twice(v, &r)\n"
+                                 "  r = v * 2\n"
+                                 "endsub\n");
+  std::string text = "#include \"lib_part.bas\"\n"
+                     "shared = 0\n"
+                     "gosub Helper\n"
+                     "call Twice(shared, out)\n"
+                     "call Twice(1)\n"
+                     "print out + undefinedName\n";
+  std::string file = writeProgram("includes.bas", text);
+  LoadedFile trees = loadFile(file, CompileOptions{}, true);
+  LoadedFile compact = loadFile(file, CompileOptions{}, true, true);
+  CHECK(compact.program->sources.size() == 2);
+  CHECK(compact.program->stmtCount() == trees.program->stmts.size());
+  CHECK(compact.diags.errorCount() == 1);    // Twice takes 2 arguments
+  CHECK(compact.diags.warningCount() == 1);  // undefinedName
+  CHECK(allDiagnostics(compact) == allDiagnostics(trees));
+  (void)lib;
+}
