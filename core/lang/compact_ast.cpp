@@ -15,6 +15,7 @@ namespace rb::ast {
 
 namespace {
 
+constexpr size_t kFirstChunk = 1 << 12;
 constexpr size_t kChunk = 1 << 20;
 
 constexpr uint8_t kHasEnd = 0x80;      // Expr: `end` is set
@@ -264,8 +265,9 @@ void CompactStmts::add(const Stmt& s) {
   enc.stmt(s);
   size_t n = enc.size();
   if (chunks_.empty() || chunks_.back().cap - chunks_.back().size < n) {
+    // Chunks grow from 4 KiB to 1 MiB: a small program takes little, a big one few chunks.
     Chunk c;
-    c.cap = std::max(kChunk, n);
+    c.cap = std::max(n, chunks_.empty() ? kFirstChunk : std::min(kChunk, chunks_.back().cap * 2));
     c.data = std::make_unique<uint8_t[]>(c.cap);
     chunks_.push_back(std::move(c));
   }
