@@ -63,7 +63,6 @@ void Compiler::run() {
 
 /// Pass 1: declares labels and subs before compiling, so that forward references resolve.
 void Compiler::declare() {
-  arrays_ = lp_.arrays;
   for (const Declaration& s : lp_.declarations) {
     if (s.kind == StmtKind::Label) {
       auto [it, fresh] = labels_.try_emplace(s.name, LabelInfo{s.loc, Target{}, false});

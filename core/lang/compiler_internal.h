@@ -224,7 +224,6 @@ class Compiler {
   std::vector<LabelFixup> labelFixups_;
   std::unordered_map<std::string_view, uint32_t> subIndex_;
   std::unordered_map<std::string_view, uint32_t> globals_;
-  std::unordered_set<std::string_view> arrays_;  ///< names used as arrays: global in every sub
   std::unordered_map<int64_t, uint32_t> intConsts_;     ///< the constant pool, by value
   std::unordered_map<uint64_t, uint32_t> floatConsts_;  ///< by the double's bits
   std::unordered_map<std::string, uint32_t> stringConsts_;

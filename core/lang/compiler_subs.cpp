@@ -41,7 +41,7 @@ void Compiler::beginSub(const Stmt& s, const ast::StmtCursor& body, const ast::S
     size_t i = c.index();
     const Stmt* b = c.next();
     ast::forEachName(*b, builtins_, [&](std::string_view name, SourceLoc, ast::NameUse) {
-      if (!ast::isGlobalRef(name) && !arrays_.count(name)) addLocal(name);  // arrays are global
+      if (!ast::isGlobalRef(name) && !lp_.arrays.count(name)) addLocal(name);  // arrays are global
     }, byRef);
     if (b->kind == StmtKind::For) {
       subScope_.forSlots[i] = subScope_.localCount;
