@@ -81,7 +81,9 @@ int executeCheck(const CheckOptions& opts) {
   DiagnosticReport report(stdout, out);
   size_t unreadable = 0;
   for (const std::string& file : files) {
-    LoadedFile loaded = loadFile(file, CompileOptions{}, true);
+    CompileOptions compile;
+    compile.keepCode = opts.dumpCode;  // only the diagnostics are wanted otherwise
+    LoadedFile loaded = loadFile(file, compile, true, true);
     if (opts.target == "rb9" && loaded.program) {
       checkRb9Target(*loaded.program, loaded.diags);
       loaded.diags.sort();

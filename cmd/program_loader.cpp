@@ -7,7 +7,7 @@
 
 namespace rb::cli {
 
-LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint) {
+LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint, bool compact) {
   LoadedFile out;
   std::string text;
   std::string name = file;
@@ -23,9 +23,18 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
   FileSourceReader reader;
   LoadOptions loadOptions;
   loadOptions.libraryDirs = libraryDirs();
+  loadOptions.compact = compact;
   out.program = loadProgram(name, std::move(text), reader, standardBuiltins(), loadOptions, out.diags);
-  out.compiled = compileProgram(*out.program, options, out.diags);
-  if (lint) lintProgram(*out.program, out.diags);
+  if (lint) {
+    // One walk over the program for both.
+    Linter linter(*out.program);
+    CompileOptions withLint = options;
+    withLint.onStatement = [&linter](const ast::Stmt& s, size_t i) { linter.statement(s, i); };
+    out.compiled = compileProgram(*out.program, withLint, out.diags);
+    linter.finish(out.diags);
+  } else {
+    out.compiled = compileProgram(*out.program, options, out.diags);
+  }
   out.diags.sort();
   return out;
 }

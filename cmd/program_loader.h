@@ -21,8 +21,11 @@ struct LoadedFile {
   std::string readError;                   ///< why it cannot be read ("no such file", ...)
 };
 
-/// Reads FILE ("-": standard input), loads its includes and compiles it.
-LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint);
+/// Reads FILE ("-": standard input), loads its includes and compiles it; `compact` keeps the
+/// statements in their compact form (LoadOptions::compact: for rb check, which needs only the
+/// diagnostics).
+LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint,
+                    bool compact = false);
 
 /// Prints diagnostics gcc-style; warnings and notes too unless `errorsOnly`.
 void printDiagnostics(std::FILE* out, const SourceSet& sources, const DiagnosticList& diags,

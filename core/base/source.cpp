@@ -1,12 +1,21 @@
 #include "base/source.h"
 
+#include <cstring>
+
 namespace rb {
 
 SourceFile::SourceFile(std::string name, std::string text, SourceLoc includedFrom)
     : name_(std::move(name)), text_(std::move(text)), includedFrom_(includedFrom) {
+  // Counted first, so that the table has exactly its size (a big file has millions of lines).
+  const char* begin = text_.data();
+  const char* end = begin + text_.size();
+  size_t lines = 1;
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)))); ++p)
+    ++lines;
+  lineStarts_.reserve(lines);
   lineStarts_.push_back(0);
-  for (uint32_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\n' && i + 1 < text_.size()) lineStarts_.push_back(i + 1);
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)))); ++p) {
+    if (p + 1 < end) lineStarts_.push_back(static_cast<uint32_t>(p + 1 - begin));
   }
 }
 
@@ -91,8 +100,23 @@ DecodedText decodeSourceText(std::string raw) {
   }
   bool utf8 = true;
   size_t odd = 0;
+  const char* bytes = raw.data();
   for (size_t i = start; i < raw.size();) {
-    unsigned char c = static_cast<unsigned char>(raw[i]);
+    // Most of a program is printable ASCII: eight bytes at a time while no byte is below 0x20
+    // or above 0x7f.
+    while (i + 8 <= raw.size()) {
+      uint64_t w;
+      std::memcpy(&w, bytes + i, 8);
+      constexpr uint64_t kHigh = 0x8080808080808080ull;
+      if (((w | (w - 0x2020202020202020ull)) & kHigh) != 0) break;
+      i += 8;
+    }
+    if (i >= raw.size()) break;
+    unsigned char c = static_cast<unsigned char>(bytes[i]);
+    if (c >= 0x20 && c < 0x80) {
+      ++i;
+      continue;
+    }
     if (oddControl(c)) ++odd;
     size_t n = utf8Length(raw, i);
     if (n == 0) {
@@ -108,7 +132,8 @@ DecodedText decodeSourceText(std::string raw) {
       out.why = std::to_string(odd) + " control characters";
       return out;
     }
-    out.text = raw.substr(start);
+    raw.erase(0, start);
+    out.text = std::move(raw);
     return out;
   }
   // Not UTF-8: Windows-1252, one character a byte.

@@ -4,6 +4,7 @@
 // repeat/until, sub/endsub) stay separate entries; the compiler pairs them, which lets
 // goto/gosub jump into and out of blocks as RobotBASIC allows.
 
+#include <algorithm>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -91,31 +92,74 @@ struct Stmt {
                               ///< reported): it only keeps its closer paired
 };
 
-/// Owns every node of a program; pointers stay valid for its lifetime. Nodes come from
-/// blocks of a few hundred, so a node costs its size and nothing more (a big program has
-/// millions of them).
+/// Owns every node of a program; pointers stay valid for its lifetime (or until reset()). Nodes
+/// come from blocks of a few hundred, so a node costs its size and nothing more (a big program
+/// has millions of them).
 class Arena {
  public:
-  Expr* expr() { return exprs_.next(); }
-  Stmt* stmt() { return stmts_.next(); }
+  Expr* expr() { return exprs_.next(true); }
+  Stmt* stmt() { return stmts_.next(true); }
+  /// A node whose every field the caller sets (lists: clears, then fills): a reused node is
+  /// handed out as it was left.
+  Expr* exprToOverwrite() { return exprs_.next(false); }
+  Stmt* stmtToOverwrite() { return stmts_.next(false); }
+  /// Forgets every node handed out: the blocks are reused, each node handed out again as if
+  /// new (its lists keep their room). For holding one statement at a time.
+  void reset() {
+    exprs_.reset();
+    stmts_.reset();
+  }
 
  private:
   template <typename T>
   class Pool {
    public:
-    T* next() {
+    T* next(bool renewed) {
       if (used_ == kBlock) {
-        blocks_.push_back(std::make_unique<T[]>(kBlock));
+        if (filled_ == blocks_.size()) blocks_.push_back(std::make_unique<T[]>(kBlock));
+        reused_ = filled_ < reusable_;
+        ++filled_;
         used_ = 0;
       }
-      return &blocks_.back()[used_++];
+      T* node = &blocks_[filled_ - 1][used_++];
+      if (reused_ && renewed) renew(*node);
+      return node;
+    }
+    void reset() {
+      reusable_ = std::max(reusable_, filled_);
+      filled_ = 0;
+      used_ = kBlock;
     }
 
    private:
     static constexpr size_t kBlock = 256;
     std::vector<std::unique_ptr<T[]>> blocks_;
-    size_t used_ = kBlock;
+    size_t filled_ = 0;    ///< blocks in use
+    size_t reusable_ = 0;  ///< blocks that held nodes before a reset
+    size_t used_ = kBlock;  ///< nodes handed out of the last block in use
+    bool reused_ = false;  ///< that block held nodes before
   };
+  /// A node as default-constructed, its lists emptied but keeping their room.
+  static void renew(Expr& e) {
+    e.kind = ExprKind::Int;
+    e.op = Tok::Eof;
+    e.loc = e.end = SourceLoc{};
+    e.text = {};
+    e.ival = 0;
+    e.args.clear();
+  }
+  static void renew(Stmt& s) {
+    s.kind = StmtKind::End;
+    s.op = Tok::Eof;
+    s.loc = s.nameLoc = SourceLoc{};
+    s.name = {};
+    s.target = s.value = nullptr;
+    s.exprs.clear();
+    s.seps.clear();
+    s.params.clear();
+    s.body.clear();
+    s.paren = s.broken = false;
+  }
   Pool<Expr> exprs_;
   Pool<Stmt> stmts_;
 };

@@ -112,25 +112,34 @@ void forEachName(const Stmt& s, const BuiltinTable& builtins, const Visit& visit
 }
 
 std::vector<SubSpan> subSpans(const std::vector<Stmt*>& stmts) {
-  std::vector<SubSpan> spans;
-  for (size_t i = 0; i < stmts.size(); ++i) {
-    if (stmts[i]->kind != StmtKind::Sub) continue;
-    SubSpan span{i, stmts.size(), SubEnd::EndOfFile};
-    for (size_t j = i + 1; j < stmts.size(); ++j) {
-      const Stmt* s = stmts[j];
-      if (s->loc.file != stmts[i]->loc.file) {
-        span = {i, j, SubEnd::EndOfFile};
-        break;
-      }
-      if (s->kind == StmtKind::Sub || s->kind == StmtKind::EndSub) {
-        span = {i, j, s->kind == StmtKind::Sub ? SubEnd::NextSub : SubEnd::EndSub};
-        break;
-      }
+  SubSpanFinder finder;
+  for (size_t i = 0; i < stmts.size(); ++i) finder.add(*stmts[i], i);
+  return finder.finish(stmts.size());
+}
+
+// A sub's body ends at the first statement of another file, at the next sub or at an endsub.
+void SubSpanFinder::add(const Stmt& s, size_t index) {
+  if (open_) {
+    if (s.loc.file != file_) {
+      spans_.back().end = index;
+      open_ = false;
+    } else if (s.kind == StmtKind::Sub || s.kind == StmtKind::EndSub) {
+      spans_.back().end = index;
+      spans_.back().how = s.kind == StmtKind::Sub ? SubEnd::NextSub : SubEnd::EndSub;
+      open_ = false;
     }
-    spans.push_back(span);
-    i = span.end - 1;  // the next sub starts at `end` at the earliest
   }
-  return spans;
+  if (!open_ && s.kind == StmtKind::Sub) {
+    spans_.push_back(SubSpan{index, 0, SubEnd::EndOfFile});
+    open_ = true;
+    file_ = s.loc.file;
+  }
+}
+
+std::vector<SubSpan> SubSpanFinder::finish(size_t count) {
+  if (open_) spans_.back().end = count;
+  open_ = false;
+  return std::move(spans_);
 }
 
 namespace {
@@ -154,5 +163,7 @@ std::unordered_set<std::string_view> arrayNames(const std::vector<Stmt*>& stmts)
   for (const Stmt* s : stmts) arrayNamesOf(*s, out);
   return out;
 }
+
+void addArrayNames(const Stmt& s, std::unordered_set<std::string_view>& out) { arrayNamesOf(s, out); }
 
 }  // namespace rb::ast

@@ -38,6 +38,18 @@ struct SubSpan {
 /// Every sub of the program, in order (a sub whose line had a syntax error included).
 std::vector<SubSpan> subSpans(const std::vector<Stmt*>& stmts);
 
+/// subSpans() of statements met one at a time: add() each in order, then finish().
+class SubSpanFinder {
+ public:
+  void add(const Stmt& s, size_t index);
+  std::vector<SubSpan> finish(size_t count);
+
+ private:
+  std::vector<SubSpan> spans_;
+  bool open_ = false;
+  uint32_t file_ = 0;  ///< the file of the open sub
+};
+
 /// `_name` inside a sub is the main program's `name` (and the same variable outside subs).
 inline bool isGlobalRef(std::string_view name) { return name.size() > 1 && name[0] == '_'; }
 /// The variable a name refers to, without its global marker: "_x" -> "x", "x" -> "x".
@@ -58,5 +70,7 @@ void forEachName(const Stmt& s, const BuiltinTable& builtins,
 /// reads them in the main program and in another sub): inside a sub, such a name is the global
 /// array unless it is one of the sub's parameters.
 std::unordered_set<std::string_view> arrayNames(const std::vector<Stmt*>& stmts);
+/// Adds the array names of one statement to `out` (arrayNames() one statement at a time).
+void addArrayNames(const Stmt& s, std::unordered_set<std::string_view>& out);
 
 }  // namespace rb::ast

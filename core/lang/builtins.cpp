@@ -157,47 +157,96 @@ std::string Builtin::usage() const {
 
 // ---- BuiltinTable
 
-size_t BuiltinTable::FoldedHash::operator()(std::string_view s) const {
-  size_t h = 14695981039346656037ull;  // FNV-1a over the case-folded characters
-  for (char c : s) {
-    h ^= static_cast<unsigned char>(foldCase(c));
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-bool BuiltinTable::FoldedEqual::operator()(std::string_view a, std::string_view b) const {
+namespace {
+bool foldedEqual(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
+  // Bytes equal apart from bit 0x20 first (what equal letters of either case are), then exactly.
+  unsigned diff = 0;
+  for (size_t i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+  if (diff == 0) return true;  // the same bytes
+  if (diff & ~0x20u) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (foldCase(a[i]) != foldCase(b[i])) return false;
   return true;
 }
+}  // namespace
+
+uint32_t BuiltinTable::foldedHash(std::string_view name) {
+  // FNV-1a over the bytes with bit 0x20 set: the same for names equal but for ASCII case.
+  uint32_t h = 2166136261u ^ static_cast<uint32_t>(name.size());
+  for (char c : name) h = (h ^ (static_cast<unsigned char>(c) | 0x20u)) * 16777619u;
+  return h ^ (h >> 15);
+}
+
+BuiltinTable::Entry& BuiltinTable::entryFor(std::string_view name) {
+  size_t mask = slots_.size() - 1;
+  for (size_t i = foldedHash(name) & mask;; i = (i + 1) & mask) {
+    Slot& slot = slots_[i];
+    if (slot.name.empty()) {
+      slot.name = name;
+      return slot.entry;
+    }
+    if (foldedEqual(slot.name, name)) return slot.entry;
+  }
+}
 
 BuiltinTable::BuiltinTable(std::vector<Builtin> rows) : rows_(std::move(rows)) {
+  size_t size = 16;
+  while (size < rows_.size() * 2) size *= 2;
+  slots_.resize(size);
   for (uint32_t i = 0; i < rows_.size(); ++i) {
     Builtin& b = rows_[i];
     derive(b);
     auto k = static_cast<size_t>(b.kind);
-    if (!byKind_[k].emplace(b.name, i).second)
+    if (b.name.empty()) throw std::logic_error("builtin table: a row without a name");
+    uint32_t& row = entryFor(b.name).row[k];
+    if (row == kNone) {
+      row = i;
+      size_t bit = shapeBit(b.name);
+      shapes_[bit / 64] |= uint64_t(1) << (bit % 64);
+    } else {
       throw std::logic_error("builtin table: " + std::string(b.name) + " appears twice as a " +
                              kindWord(b.kind));
+    }
     names_[k].push_back(b.name);
   }
 }
 
+size_t BuiltinTable::shapeBit(std::string_view name) {
+  if (name.empty()) return 0;
+  auto first = static_cast<size_t>(static_cast<unsigned char>(foldCase(name.front())) & 31);
+  auto last = static_cast<size_t>(static_cast<unsigned char>(foldCase(name.back())) & 31);
+  return (first << 10) | (last << 5) | (name.size() & 31);
+}
+
+const BuiltinTable::Entry* BuiltinTable::lookup(std::string_view name) const {
+  size_t bit = shapeBit(name);
+  if (!(shapes_[bit / 64] >> (bit % 64) & 1)) return nullptr;
+  size_t mask = slots_.size() - 1;
+  for (size_t i = foldedHash(name) & mask;; i = (i + 1) & mask) {
+    const Slot& slot = slots_[i];
+    if (slot.name.empty()) return nullptr;
+    if (foldedEqual(slot.name, name)) return &slot.entry;
+  }
+}
+
 const Builtin* BuiltinTable::find(std::string_view name, BuiltinKind kind) const {
-  const Index& index = byKind_[static_cast<size_t>(kind)];
-  auto it = index.find(name);
-  return it == index.end() ? nullptr : &rows_[it->second];
+  const Entry* e = lookup(name);
+  if (!e) return nullptr;
+  uint32_t row = e->row[static_cast<size_t>(kind)];
+  return row == kNone ? nullptr : &rows_[row];
 }
 
 const Builtin* BuiltinTable::findAny(std::string_view name) const {
+  const Entry* e = lookup(name);
+  if (!e) return nullptr;
   for (BuiltinKind k : {BuiltinKind::Constant, BuiltinKind::Function, BuiltinKind::Command})
-    if (const Builtin* b = find(name, k)) return b;
+    if (uint32_t row = e->row[static_cast<size_t>(k)]; row != kNone) return &rows_[row];
   return nullptr;
 }
 
 std::optional<std::string> BuiltinTable::misuse(std::string_view name, NamePlace place) const {
+  if (!lookup(name)) return std::nullopt;  // no built-in's name: allowed anywhere
   const Builtin* b = nullptr;
   const char* use = "";
   std::string how;

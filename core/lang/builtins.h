@@ -108,18 +108,29 @@ class BuiltinTable {
   std::optional<std::string> misuse(std::string_view name, NamePlace place) const;
 
  private:
-  /// Hashing and comparing names without regard to ASCII case, without building a lower-case
-  /// copy for every lookup.
-  struct FoldedHash {
-    size_t operator()(std::string_view s) const;
+  /// The rows of each kind (by BuiltinKind) that bear one name; kNone where there is none.
+  static constexpr uint32_t kNone = 0xffffffffu;
+  struct Entry {
+    uint32_t row[3] = {kNone, kNone, kNone};
   };
-  struct FoldedEqual {
-    bool operator()(std::string_view a, std::string_view b) const;
+  /// One name's place in the index: an open-addressing table hashed without regard to ASCII
+  /// case, so that no lower-case copy is made for a lookup.
+  struct Slot {
+    std::string_view name;  ///< empty: a free slot
+    Entry entry;
   };
-  using Index = std::unordered_map<std::string_view, uint32_t, FoldedHash, FoldedEqual>;
+  static uint32_t foldedHash(std::string_view name);
+  /// The rows named `name`, or nullptr: one lookup for every kind.
+  const Entry* lookup(std::string_view name) const;
+  /// The entry for `name`, added when missing.
+  Entry& entryFor(std::string_view name);
+  /// A bit for each (first letter, last letter, length) of a built-in's name, all folded: most
+  /// names a program uses are its own and are turned away here without hashing.
+  static size_t shapeBit(std::string_view name);
 
   std::vector<Builtin> rows_;
-  Index byKind_[3];
+  std::vector<Slot> slots_;  ///< a power of two, at most half full
+  std::vector<uint64_t> shapes_ = std::vector<uint64_t>(1 << 9);
   std::vector<std::string_view> names_[3];
 };
 

@@ -1,5 +1,6 @@
 #include "lang/checker.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -18,9 +19,14 @@ namespace rb {
 
 namespace {
 
+/// How a scope (the main program or a sub) uses one name.
+struct NameUses {
+  bool written = false;
+  bool read = false;
+  SourceLoc firstRead;
+};
 struct ScopeUse {
-  std::set<std::string_view> written;
-  std::map<std::string_view, SourceLoc> firstRead;  // ordered for stable output
+  std::unordered_map<std::string_view, NameUses> names;  // reported in the order of names
 };
 
 /// Every word that looks like a name on a line that has an error.
@@ -46,65 +52,85 @@ std::unordered_set<std::string> namesOnErrorLines(const SourceSet& sources, cons
 
 }  // namespace
 
-void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
-  // Which sub parameters are by reference, for calls.
-  std::unordered_map<std::string_view, std::vector<bool>> byRef;
-  for (const ast::Stmt* s : program.stmts) {
-    if (s->kind != ast::StmtKind::Sub || s->broken) continue;
-    std::vector<bool>& flags = byRef[s->name];
-    for (const ast::Param& p : s->params) flags.push_back(p.byRef);
-  }
-  auto isByRef = [&](std::string_view sub, size_t i) {
-    auto it = byRef.find(sub);
-    return it != byRef.end() && i < it->second.size() && it->second[i];
-  };
-
+struct Linter::State {
+  explicit State(const LoadedProgram& p) : program(p), nextSpan(p.subSpans.begin()) {}
+  const LoadedProgram& program;
+  std::unordered_map<std::string_view, std::vector<bool>> byRef;  ///< sub parameters by reference
   ScopeUse global;
   std::vector<ScopeUse> subs;
   ScopeUse* local = nullptr;      // the sub being read, if any
   bool skip = false;              // a sub whose line had a syntax error: its names are unknown
-  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
-  std::unordered_set<std::string_view> arrays = ast::arrayNames(program.stmts);
   std::unordered_set<std::string_view> params;
-  std::vector<ast::SubSpan> spans = ast::subSpans(program.stmts);
-  auto nextSpan = spans.begin();
+  std::vector<ast::SubSpan>::const_iterator nextSpan;
   size_t subEnd = 0;
-  for (size_t i = 0; i < program.stmts.size(); ++i) {
-    const ast::Stmt* s = program.stmts[i];
-    if ((local || skip) && i == subEnd) {
-      local = nullptr;
-      skip = false;
-    }
-    if (nextSpan != spans.end() && nextSpan->begin == i) {
-      subEnd = nextSpan->end;
-      ++nextSpan;
-      params.clear();
-      if (s->broken) {
-        skip = true;
-      } else {
-        subs.emplace_back();
-        local = &subs.back();
-        for (const ast::Param& p : s->params) params.insert(p.name);
-      }
-    }
-    if (skip || s->kind == ast::StmtKind::EndSub) continue;
-    ast::forEachName(*s, program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
-      bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !params.count(name));
-      ScopeUse* scope = local && !globalName ? local : &global;
-      name = ast::globalName(name);
-      if (use != ast::NameUse::Read) scope->written.insert(name);
-      if (use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) scope->firstRead.try_emplace(name, loc);
-    }, isByRef);
-  }
+};
 
+Linter::Linter(const LoadedProgram& program) : st_(std::make_unique<State>(program)) {
+  // Which sub parameters are by reference, for calls.
+  for (const Declaration& s : program.declarations) {
+    if (s.kind != ast::StmtKind::Sub || s.broken) continue;
+    std::vector<bool>& flags = st_->byRef[s.name];
+    for (const ast::Param& p : s.params) flags.push_back(p.byRef);
+  }
+}
+
+Linter::~Linter() = default;
+
+void Linter::statement(const ast::Stmt& s, size_t i) {
+  State& st = *st_;
+  const std::vector<ast::SubSpan>& spans = st.program.subSpans;
+  if ((st.local || st.skip) && i == st.subEnd) {
+    st.local = nullptr;
+    st.skip = false;
+  }
+  if (st.nextSpan != spans.end() && st.nextSpan->begin == i) {
+    st.subEnd = st.nextSpan->end;
+    ++st.nextSpan;
+    st.params.clear();
+    if (s.broken) {
+      st.skip = true;
+    } else {
+      st.subs.emplace_back();
+      st.local = &st.subs.back();
+      for (const ast::Param& p : s.params) st.params.insert(p.name);
+    }
+  }
+  if (st.skip || s.kind == ast::StmtKind::EndSub) return;
+  auto isByRef = [&](std::string_view sub, size_t k) {
+    auto it = st.byRef.find(sub);
+    return it != st.byRef.end() && k < it->second.size() && it->second[k];
+  };
+  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
+  const std::unordered_set<std::string_view>& arrays = st.program.arrays;
+  ast::forEachName(s, st.program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
+    bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !st.params.count(name));
+    ScopeUse* scope = st.local && !globalName ? st.local : &st.global;
+    NameUses& uses = scope->names[ast::globalName(name)];
+    if (use != ast::NameUse::Read) uses.written = true;
+    if ((use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) && !uses.read) {
+      uses.read = true;
+      uses.firstRead = loc;
+    }
+  }, isByRef);
+}
+
+void Linter::finish(DiagnosticList& diags) {
+  State& st = *st_;
   // A line with an error was not (or not wholly) understood: any name on it may have been
   // assigned there, so a read of it elsewhere is no news (no cascade from a missing ')').
-  std::unordered_set<std::string> onBrokenLines = namesOnErrorLines(program.sources, diags);
+  std::unordered_set<std::string> onBrokenLines = namesOnErrorLines(st.program.sources, diags);
 
   auto report = [&](const ScopeUse& scope, const char* where) {
-    std::vector<std::string_view> written(scope.written.begin(), scope.written.end());
-    for (const auto& [name, loc] : scope.firstRead) {
-      if (scope.written.count(name) || onBrokenLines.count(std::string(name))) continue;
+    std::vector<std::string_view> written;
+    std::vector<std::pair<std::string_view, SourceLoc>> reads;  // read and never written
+    for (const auto& [name, uses] : scope.names) {
+      if (uses.written) written.push_back(name);
+      else if (uses.read) reads.emplace_back(name, uses.firstRead);
+    }
+    std::sort(written.begin(), written.end());
+    std::sort(reads.begin(), reads.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [name, loc] : reads) {
+      if (onBrokenLines.count(std::string(name))) continue;
       std::string msg = "variable '" + std::string(name) + "' is read but never assigned" + where;
       std::string hint = closestMatch(name, written, true);
       if (!hint.empty()) {
@@ -116,8 +142,19 @@ void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
         d.fixits.push_back({loc, {loc.file, loc.line, loc.col + static_cast<uint32_t>(name.size())}, hint});
     }
   };
-  report(global, "");
-  for (const ScopeUse& s : subs) report(s, " in this sub");
+  report(st.global, "");
+  for (const ScopeUse& s : st.subs) report(s, " in this sub");
+}
+
+void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
+  Linter linter(program);
+  ast::Arena scratch;  // statements read back from the compact form, one at a time
+  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
+    scratch.reset();
+    size_t i = c.index();
+    linter.statement(*c.next(), i);
+  }
+  linter.finish(diags);
 }
 
 }  // namespace rb
@@ -182,7 +219,11 @@ void checkStmt(const ast::Stmt* s, const BuiltinTable& builtins, DiagnosticList&
 }  // namespace
 
 void checkRb9Target(const LoadedProgram& program, DiagnosticList& diags) {
-  for (const ast::Stmt* s : program.stmts) checkStmt(s, program.builtins, diags);
+  ast::Arena scratch;
+  for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
+    scratch.reset();
+    checkStmt(c.next(), program.builtins, diags);
+  }
 }
 
 }  // namespace rb

@@ -2,6 +2,8 @@
 // Checks `rb check` adds to what the compiler finds: warnings about likely mistakes that do not
 // stop a program from loading.
 
+#include <memory>
+
 #include "base/diagnostic.h"
 #include "lang/loader.h"
 
@@ -10,6 +12,23 @@ namespace rb {
 /// Warns about every variable that is read somewhere but assigned nowhere in its scope (the main
 /// program or a sub). Such a read is a runtime error, and usually a case slip: `real` vs `Real`.
 void lintProgram(const LoadedProgram& program, DiagnosticList& diags);
+
+/// lintProgram() fed one statement at a time, for walking the program once with the compiler
+/// (CompileOptions::onStatement): statement() for every statement in order, then finish() once
+/// the compiler's diagnostics are in.
+class Linter {
+ public:
+  explicit Linter(const LoadedProgram& program);
+  ~Linter();
+  Linter(const Linter&) = delete;
+  Linter& operator=(const Linter&) = delete;
+  void statement(const ast::Stmt& s, size_t index);
+  void finish(DiagnosticList& diags);
+
+ private:
+  struct State;
+  std::unique_ptr<State> st_;
+};
 
 /// `rb check --target rb9`: warns where a program asks the RB-9 robot for what it cannot do:
 /// a single rForward with a constant distance above 250 (the seed document's limit), and the

@@ -15,13 +15,19 @@ void Compiler::run() {
   p_.builtins = &builtins_;
   p_.lineTracing = options_.lineTracing;
   declare();
+  const std::vector<ast::SubSpan>& spans = lp_.subSpans;
   scope_ = &global_;
-  const auto& stmts = lp_.stmts;
-  std::vector<ast::SubSpan> spans = ast::subSpans(stmts);
   auto nextSpan = spans.begin();
   const ast::SubSpan* open = nullptr;  // the sub being compiled
-  for (size_t i = 0; i < stmts.size(); ++i) {
-    const Stmt* s = stmts[i];
+  ast::StmtCursor cursor = lp_.cursor(scratch_);
+  while (!cursor.done()) {
+    // A statement read back from the compact form lives until the next reset: blocks still
+    // open refer to their opening statement.
+    if (blocks_.empty()) scratch_.reset();
+    size_t i = cursor.index();
+    const Stmt* s = cursor.next();
+    stmtIndex_ = i;
+    if (options_.onStatement) options_.onStatement(*s, i);
     if (open && i == open->end) {
       bool atEndSub = open->how == ast::SubEnd::EndSub;
       endSub(open->how == ast::SubEnd::EndOfFile ? SourceLoc{} : s->loc);
@@ -30,7 +36,7 @@ void Compiler::run() {
     }
     if (nextSpan != spans.end() && nextSpan->begin == i) {
       open = &*nextSpan++;
-      beginSub(*open);
+      beginSub(*s, cursor, *open);
       continue;
     }
     if (s->kind == StmtKind::EndSub) {
@@ -55,35 +61,34 @@ void Compiler::run() {
                  "rb-program-too-large");
 }
 
-/// Pass 1: finds labels and subs before compiling, so that forward references resolve.
+/// Pass 1: declares labels and subs before compiling, so that forward references resolve.
 void Compiler::declare() {
-  arrays_ = ast::arrayNames(lp_.stmts);
-  for (const Stmt* s : lp_.stmts) {
-    if (s->kind == StmtKind::Label) {
-      auto [it, fresh] = labels_.try_emplace(s->name, LabelInfo{s->loc, Target{}, false});
+  for (const Declaration& s : lp_.declarations) {
+    if (s.kind == StmtKind::Label) {
+      auto [it, fresh] = labels_.try_emplace(s.name, LabelInfo{s.loc, Target{}, false});
       if (!fresh) {
-        diags_.error(s->loc, "duplicate label " + quoted(s->name), "rb-duplicate-label");
-        diags_.note(it->second.loc, quoted(s->name) + " was first defined here");
+        diags_.error(s.loc, "duplicate label " + quoted(s.name), "rb-duplicate-label");
+        diags_.note(it->second.loc, quoted(s.name) + " was first defined here");
       }
-    } else if (s->kind == StmtKind::Sub && !s->broken) {
-      if (subIndex_.count(s->name)) {
-        diags_.error(s->nameLoc, "duplicate sub " + quoted(s->name), "rb-duplicate-sub");
-        diags_.note(p_.subs[subIndex_[s->name]].loc, quoted(s->name) + " was first defined here");
+    } else if (s.kind == StmtKind::Sub && !s.broken) {
+      if (subIndex_.count(s.name)) {
+        diags_.error(s.nameLoc, "duplicate sub " + quoted(s.name), "rb-duplicate-sub");
+        diags_.note(p_.subs[subIndex_[s.name]].loc, quoted(s.name) + " was first defined here");
         continue;
       }
-      if (std::optional<std::string> why = builtins_.misuse(s->name, NamePlace::Sub))
-        diags_.error(s->nameLoc, std::move(*why), "rb-misplaced-builtin");
+      if (std::optional<std::string> why = builtins_.misuse(s.name, NamePlace::Sub))
+        diags_.error(s.nameLoc, std::move(*why), "rb-misplaced-builtin");
       SubInfo info;
-      info.name = std::string(s->name);
-      info.loc = s->nameLoc;
-      info.paramCount = static_cast<uint32_t>(s->params.size());
+      info.name = std::string(s.name);
+      info.loc = s.nameLoc;
+      info.paramCount = static_cast<uint32_t>(s.params.size());
       std::unordered_set<std::string_view> seen;
-      for (const ast::Param& prm : s->params) {
+      for (const ast::Param& prm : s.params) {
         if (!seen.insert(prm.name).second)
           diags_.error(prm.loc, "parameter " + quoted(prm.name) + " appears twice", "rb-duplicate-parameter");
         info.byRef.push_back(prm.byRef);
       }
-      subIndex_[s->name] = static_cast<uint32_t>(p_.subs.size());
+      subIndex_[s.name] = static_cast<uint32_t>(p_.subs.size());
       p_.subs.push_back(std::move(info));
     }
   }
@@ -182,6 +187,8 @@ void Compiler::checkTarget(const Expr& target) {
 // ---------------------------------------------------------------- emission
 
 uint32_t Compiler::emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc, uint16_t count) {
+  lastLoc_ = loc;
+  if (!options_.keepCode) return codeSize_++;
   Instr in;
   in.op = op;
   in.a = a;
@@ -190,13 +197,13 @@ uint32_t Compiler::emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc
   in.count = count;
   p_.code.push_back(in);
   p_.locs.push_back(loc);
-  return static_cast<uint32_t>(p_.code.size() - 1);
+  return codeSize_++;
 }
 
 /// Emits a control transfer carrying the statements counted since the previous one.
 uint32_t Compiler::emitTransfer(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc) {
   uint32_t pc = emit(op, a, b, c, loc);
-  p_.code[pc].steps = static_cast<int16_t>(pending_);
+  if (options_.keepCode) p_.code[pc].steps = static_cast<int16_t>(pending_);
   pending_ = 0;
   return pc;
 }
@@ -204,7 +211,7 @@ uint32_t Compiler::emitTransfer(Op op, uint32_t a, uint32_t b, uint32_t c, Sourc
 /// The address of the next instruction, as a jump target.
 Target Compiler::placeTarget() {
   if (pending_ > kMaxTargetPending) flushSteps();
-  return {static_cast<uint32_t>(p_.code.size()), static_cast<int32_t>(pending_)};
+  return {codeSize_, static_cast<int32_t>(pending_)};
 }
 
 void Compiler::flushSteps() {
@@ -212,6 +219,7 @@ void Compiler::flushSteps() {
 }
 
 void Compiler::patch(uint32_t pc, Target t) {
+  if (!options_.keepCode) return;
   Instr& in = p_.code[pc];
   if (in.op == Op::ForPrep || in.op == Op::ForLoop || in.op == Op::ForLoop1) in.c = t.pc;
   else in.a = t.pc;
@@ -230,26 +238,22 @@ void Compiler::patchAll(const std::vector<uint32_t>& pcs, Target t) {
 
 // ---------------------------------------------------------------- constants
 
-/// The constant-pool operand of `v`; equal constants share one entry.
+/// The constant-pool operand of `v`; equal constants (of one type, floats bit for bit) share
+/// one entry.
 uint32_t Compiler::constant(const Value& v) {
-  // The key: a type letter, then the value's digits, bits or characters.
-  std::string key;
-  if (v.isInt()) {
-    key = 'i';
-    key += std::to_string(v.i());
-  } else if (v.isNum()) {
+  auto add = [&](auto& index, auto key) {
+    auto [it, fresh] = index.try_emplace(std::move(key), static_cast<uint32_t>(p_.constants.size()));
+    if (fresh) p_.constants.push_back(v);
+    return operand(Base::Const, it->second);
+  };
+  if (v.isInt()) return add(intConsts_, v.i());
+  if (v.isNum()) {
     double d = v.d();
-    char bits[sizeof d];
-    std::memcpy(bits, &d, sizeof d);
-    key = 'd';
-    key.append(bits, sizeof bits);
-  } else {
-    key = 's';
-    key += v.str();
+    uint64_t bits;
+    std::memcpy(&bits, &d, sizeof d);
+    return add(floatConsts_, bits);
   }
-  auto [it, fresh] = constIndex_.try_emplace(key, static_cast<uint32_t>(p_.constants.size()));
-  if (fresh) p_.constants.push_back(v);
-  return operand(Base::Const, it->second);
+  return add(stringConsts_, v.str());
 }
 
 }  // namespace compiler

@@ -4,6 +4,7 @@
 // and the program's subs. Everything `rb run` rejects before running is found here, so `rb
 // check` and `rb run` agree by construction.
 
+#include <functional>
 #include <memory>
 
 #include "lang/bytecode.h"
@@ -15,6 +16,13 @@ namespace rb {
 struct CompileOptions {
   /// Emit a Line instruction at every statement (for `rb trace --lines` and single-stepping).
   bool lineTracing = false;
+  /// Keep the instructions. Off for `rb check` without --dump-code: every instruction is still
+  /// generated (so every error is found) but none is stored, and the program returned (when
+  /// there are no errors) has subs, labels and names but no code.
+  bool keepCode = true;
+  /// Called with every statement of the program, in order, as the compiler reads it (with its
+  /// index), so that other checks can walk the program in the same pass (see Linter).
+  std::function<void(const ast::Stmt&, size_t)> onStatement;
 };
 
 /// Compiles `program`. Errors and warnings go to `diags`; the result is null when `diags` holds

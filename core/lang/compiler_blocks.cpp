@@ -101,7 +101,7 @@ void Compiler::forStmt(const Stmt& s) {
   uint32_t var = variable(s.target->text);
   uint32_t limit;
   if (inSub()) {
-    auto it = subScope_.forSlots.find(&s);
+    auto it = subScope_.forSlots.find(stmtIndex_);
     limit = operand(Base::Frame, it->second);
   } else {
     limit = hiddenGlobalPair();

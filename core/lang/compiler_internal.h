@@ -84,7 +84,7 @@ struct Scope {
   uint32_t nextTemp = 0;
   uint32_t maxTemp = 0;
   std::vector<uint32_t> gosubs;  ///< Gosub instructions whose frame bump is patched at the end
-  std::unordered_map<const Stmt*, uint32_t> forSlots;  ///< hidden limit/step slots of for loops
+  std::unordered_map<size_t, uint32_t> forSlots;  ///< hidden limit/step slots of for loops, by statement index
 };
 
 class Compiler {
@@ -123,7 +123,9 @@ class Compiler {
   void flushSteps();
   void patch(uint32_t pc, Target t);
   void patchAll(const std::vector<uint32_t>& pcs, Target t);
-  SourceLoc lastLoc() const { return p_.locs.empty() ? SourceLoc{} : p_.locs.back(); }
+  SourceLoc lastLoc() const { return lastLoc_; }
+  /// The address of the next instruction (also when instructions are not kept).
+  uint32_t codeSize() const { return codeSize_; }
   uint32_t constant(const Value& v);
   uint32_t intConst(int64_t i) { return constant(Value::integer(i)); }
 
@@ -186,7 +188,7 @@ class Compiler {
   // ---- subs and scopes (compiler_subs.cpp)
   bool inSub() const { return scope_ != &global_; }
   bool isByRef(std::string_view sub, size_t i) const;
-  void beginSub(const ast::SubSpan& span);
+  void beginSub(const Stmt& sub, const ast::StmtCursor& body, const ast::SubSpan& span);
   void endSub(SourceLoc loc);
   void finishScope(Scope& sc);
   uint32_t variable(std::string_view name);
@@ -211,14 +213,20 @@ class Compiler {
   Scope* scope_ = nullptr;
   uint32_t subSkip_ = 0;   ///< the jump that lets code falling into a sub skip its body
   uint32_t pending_ = 0;   ///< statements counted since the last control transfer
+  uint32_t codeSize_ = 0;  ///< instructions emitted
+  size_t stmtIndex_ = 0;   ///< the index of the statement being compiled
+  ast::Arena scratch_;     ///< statements read back from the compact form (LoadOptions::compact)
+  ast::Arena scanScratch_; ///< the same, for looking over a sub's body before compiling it
+  SourceLoc lastLoc_;      ///< the source position of the last one
 
   std::vector<Block> blocks_;
   std::map<std::string_view, LabelInfo> labels_;
   std::vector<LabelFixup> labelFixups_;
   std::unordered_map<std::string_view, uint32_t> subIndex_;
   std::unordered_map<std::string_view, uint32_t> globals_;
-  std::unordered_set<std::string_view> arrays_;  ///< names used as arrays: global in every sub
-  std::unordered_map<std::string, uint32_t> constIndex_;
+  std::unordered_map<int64_t, uint32_t> intConsts_;     ///< the constant pool, by value
+  std::unordered_map<uint64_t, uint32_t> floatConsts_;  ///< by the double's bits
+  std::unordered_map<std::string, uint32_t> stringConsts_;
 };
 
 }  // namespace rb::compiler

@@ -133,7 +133,7 @@ void Compiler::checkArity(const Builtin& b, const std::vector<Expr*>& args, Sour
 void Compiler::callBuiltin(const Builtin& b, const std::vector<Expr*>& args,
                            const std::vector<Tok>* seps, uint32_t dest, SourceLoc loc) {
   int n = static_cast<int>(args.size());
-  std::vector<const Expr*> outputs(args.size(), nullptr);
+  std::vector<const Expr*> outputs;  // by argument, once there is an output parameter
   uint32_t first = 0;
   if (b.printList && seps) {
     // Leading fixed parameters, then every remaining item formatted into one string.
@@ -162,6 +162,7 @@ void Compiler::callBuiltin(const Builtin& b, const std::vector<Expr*>& args,
                           "rb-output-argument", a->end},
                {Diagnostic{Severity::Note, SourceLoc{}, "usage: " + b.usage()}});
         checkTarget(*a);
+        if (outputs.empty()) outputs.assign(args.size(), nullptr);
         outputs[static_cast<size_t>(i)] = a;
         emit(Op::Move, first + static_cast<uint32_t>(i), intConst(0), 0, a->loc);
       } else {

@@ -17,8 +17,7 @@ bool Compiler::isByRef(std::string_view sub, size_t i) const {
 }
 
 /// Opens the scope of the sub `span` describes; its body follows, up to endSub().
-void Compiler::beginSub(const ast::SubSpan& span) {
-  const Stmt& s = *lp_.stmts[span.begin];
+void Compiler::beginSub(const Stmt& s, const ast::StmtCursor& body, const ast::SubSpan& span) {
   closeBlocksAtEnd(s.loc);  // blocks cannot continue into a sub
   auto it = subIndex_.find(s.name);
   int sub = it == subIndex_.end() ? -1 : static_cast<int>(it->second);
@@ -37,13 +36,15 @@ void Compiler::beginSub(const ast::SubSpan& span) {
   };
   for (const ast::Param& prm : s.params) addLocal(prm.name);
   auto byRef = [this](std::string_view n, size_t i) { return isByRef(n, i); };
-  for (size_t i = span.begin + 1; i < span.end; ++i) {
-    const Stmt* b = lp_.stmts[i];
+  for (ast::StmtCursor c(body, scanScratch_); c.index() < span.end;) {
+    scanScratch_.reset();
+    size_t i = c.index();
+    const Stmt* b = c.next();
     ast::forEachName(*b, builtins_, [&](std::string_view name, SourceLoc, ast::NameUse) {
-      if (!ast::isGlobalRef(name) && !arrays_.count(name)) addLocal(name);  // arrays are global
+      if (!ast::isGlobalRef(name) && !lp_.arrays.count(name)) addLocal(name);  // arrays are global
     }, byRef);
     if (b->kind == StmtKind::For) {
-      subScope_.forSlots[b] = subScope_.localCount;
+      subScope_.forSlots[i] = subScope_.localCount;
       subScope_.localCount += 2;
       if (names) {
         names->emplace_back("(for limit)");
@@ -53,7 +54,7 @@ void Compiler::beginSub(const ast::SubSpan& span) {
   }
   if (sub >= 0) {
     SubInfo& info = p_.subs[static_cast<size_t>(sub)];
-    info.entry = static_cast<uint32_t>(p_.code.size());
+    info.entry = codeSize_;
     info.localCount = subScope_.localCount;
   }
 }
@@ -69,7 +70,7 @@ void Compiler::endSub(SourceLoc loc) {
   if (subScope_.sub >= 0) {
     SubInfo& info = p_.subs[static_cast<size_t>(subScope_.sub)];
     info.frameSize = subScope_.localCount + subScope_.maxTemp;
-    info.end = static_cast<uint32_t>(p_.code.size());
+    info.end = codeSize_;
   }
   scope_ = &global_;
   patch(subSkip_, placeTarget());
@@ -78,7 +79,8 @@ void Compiler::endSub(SourceLoc loc) {
 /// Patches the frame bump of every gosub in the scope now that its frame size is known.
 void Compiler::finishScope(Scope& sc) {
   uint32_t frame = sc.localCount + sc.maxTemp;
-  for (uint32_t pc : sc.gosubs) p_.code[pc].b = frame;
+  if (options_.keepCode)
+    for (uint32_t pc : sc.gosubs) p_.code[pc].b = frame;
 }
 
 // ---------------------------------------------------------------- slots
@@ -171,7 +173,7 @@ void Compiler::callSub(const SubInfo& sub, const std::vector<Expr*>& args, uint3
     if (sub.byRef[i]) {
       // A by-reference argument may be an output: it need not have a value yet.
       emit(Op::Move, first + i, variable(a->text), 0, a->loc);
-      p_.code.back().flags = kMoveMayBeUnassigned;
+      if (options_.keepCode) p_.code.back().flags = kMoveMayBeUnassigned;
     } else {
       exprInto(a, first + i);
     }

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <unordered_map>
 
@@ -35,9 +36,12 @@ constexpr std::array kKeywords{
     Keyword{"print", Tok::KwPrint},   Keyword{"input", Tok::KwInput},
 };
 
-bool isIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isIdentChar(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$';
+// ASCII letters and digits only (what isalpha/isalnum give in the "C" locale), without a call
+// per character.
+inline bool isAsciiLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+inline bool isIdentStart(char c) { return isAsciiLetter(c) || c == '_'; }
+inline bool isIdentChar(char c) {
+  return isAsciiLetter(c) || (c >= '0' && c <= '9') || c == '_' || c == '$';
 }
 
 class Lexer {
@@ -85,8 +89,9 @@ class Lexer {
       lineStart_ = pos_;
       return;
     }
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-      ++pos_;
+    if (isBlank(c)) {
+      do ++pos_;
+      while (pos_ < text_.size() && isBlank(text_[pos_]));
       return;
     }
     if (c == '/' && peek(1) == '/') return skipToLineEnd();
@@ -123,8 +128,10 @@ class Lexer {
     t.text = std::string_view(text_).substr(start, len);
     out.push_back(t);
   }
+  static bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
   void skipToLineEnd() {
-    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    const void* nl = std::memchr(text_.data() + pos_, '\n', text_.size() - pos_);
+    pos_ = nl ? static_cast<size_t>(static_cast<const char*>(nl) - text_.data()) : text_.size();
   }
   void blockComment(std::vector<Token>& out) {
     SourceLoc startLoc = loc(pos_);
@@ -212,10 +219,9 @@ class Lexer {
       }
     }
     t.text = std::string_view(text_).substr(start, pos_ - start);
-    std::string digits(t.text);
     if (!isFloat) {
       int64_t v = 0;
-      auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+      auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
       if (r.ec == std::errc()) {
         t.kind = Tok::Int;
         t.intValue = v;
@@ -224,6 +230,7 @@ class Lexer {
       }
       // Too large for a 64-bit integer: keep it as a double.
     }
+    std::string digits(t.text);
     t.kind = Tok::Float;
     t.floatValue = std::strtod(digits.c_str(), nullptr);
     if (!std::isfinite(t.floatValue)) {
@@ -240,7 +247,7 @@ class Lexer {
     Tok kind = Tok::Ident;
     if (word.size() < sizeof lower) {
       for (size_t i = 0; i < word.size(); ++i)
-        lower[i] = static_cast<char>(std::tolower(static_cast<unsigned char>(word[i])));
+        lower[i] = word[i] >= 'A' && word[i] <= 'Z' ? static_cast<char>(word[i] - 'A' + 'a') : word[i];
       std::string_view lw(lower, word.size());
       if (lw == "rem") {  // a remark runs to the end of the line
         skipToLineEnd();
@@ -314,7 +321,7 @@ class Lexer {
     }
   }
 
-  const std::string& text_;
+  std::string_view text_;  // a view, so that writing pos_ never makes the compiler read it again
   uint32_t file_;
   DiagnosticList& diags_;
   size_t pos_ = 0;
@@ -344,13 +351,17 @@ std::vector<Token> lex(const SourceSet& sources, uint32_t fileIndex, DiagnosticL
 }
 
 Tok keywordKind(std::string_view lowerWord) {
-  static const std::unordered_map<std::string_view, Tok> table = [] {
-    std::unordered_map<std::string_view, Tok> m;
-    for (const auto& k : kKeywords) m.emplace(k.word, k.kind);
-    return m;
+  // The keywords of each length: a word is compared with the few of its own length only.
+  constexpr size_t kLongest = 8;
+  static const std::array<std::vector<Keyword>, kLongest + 1> byLength = [] {
+    std::array<std::vector<Keyword>, kLongest + 1> t;
+    for (const auto& k : kKeywords) t.at(k.word.size()).push_back(k);
+    return t;
   }();
-  auto it = table.find(lowerWord);
-  return it == table.end() ? Tok::Ident : it->second;
+  if (lowerWord.empty() || lowerWord.size() > kLongest) return Tok::Ident;
+  for (const Keyword& k : byLength[lowerWord.size()])
+    if (k.word[0] == lowerWord[0] && k.word == lowerWord) return k.kind;
+  return Tok::Ident;
 }
 
 const std::vector<std::string_view>& keywordSpellings() {

@@ -20,22 +20,38 @@ class Loader {
 
   void loadMain(const std::string& name, std::string text) {
     if (auto canonical = reader_.find(name)) seen_.insert(*canonical);
-    addAndParse(name, std::move(text), SourceLoc{}, 0, out_.stmts);
+    if (options_.compact) out_.compact = std::make_unique<ast::CompactStmts>(out_.sources);
+    addAndParse(name, std::move(text), SourceLoc{}, 0);
+    out_.subSpans = spans_.finish(out_.stmtCount());
   }
 
  private:
-  void parseFile(uint32_t index, int depth, std::vector<ast::Stmt*>& dest) {
-    std::vector<ast::Stmt*> stmts = rb::parseFile(out_.sources, index, out_.arena, out_.builtins, diags_);
-    for (ast::Stmt* s : stmts) {
-      if (s->kind == ast::StmtKind::Include) {
-        include(*s, index, depth, dest);
-      } else {
-        dest.push_back(s);
+  /// Parses a file line by line; an #include brings its file's statements in at once, where
+  /// the directive stands (each file once).
+  void parseFile(uint32_t index, int depth) {
+    ast::Arena lineArena;  // compact: the trees of one line at a time
+    ast::Arena& arena = out_.compact ? lineArena : out_.arena;
+    rb::parseFileLines(out_.sources, index, arena, out_.builtins, diags_,
+                       [&](const std::vector<ast::Stmt*>& line) {
+      for (ast::Stmt* s : line) {
+        if (s->kind == ast::StmtKind::Include) include(*s, index, depth);
+        else keep(*s);
       }
-    }
+      if (out_.compact) lineArena.reset();
+    });
   }
 
-  void include(const ast::Stmt& s, uint32_t from, int depth, std::vector<ast::Stmt*>& dest) {
+  /// Adds a statement to the program, noting what is declared in it.
+  void keep(ast::Stmt& s) {
+    spans_.add(s, out_.stmtCount());
+    ast::addArrayNames(s, out_.arrays);
+    if (s.kind == ast::StmtKind::Label || s.kind == ast::StmtKind::Sub)
+      out_.declarations.push_back(Declaration{s.kind, s.broken, s.name, s.loc, s.nameLoc, s.params});
+    if (out_.compact) out_.compact->add(s);
+    else out_.stmts.push_back(&s);
+  }
+
+  void include(const ast::Stmt& s, uint32_t from, int depth) {
     std::string wanted(s.name);
     if (depth + 1 > kMaxIncludeDepth) {
       diags_.error(s.nameLoc, "includes nested too deeply (more than " +
@@ -73,13 +89,12 @@ class Loader {
       diags_.error(s.nameLoc, "cannot read include file '" + wanted + "'", "rb-include-unreadable");
       return;
     }
-    addAndParse(display, std::move(*text), s.loc, depth + 1, dest);
+    addAndParse(display, std::move(*text), s.loc, depth + 1);
   }
 
   /// Decodes a file's bytes (BOM, Windows-1252), adds it to the program and parses it; a file
   /// that is not text is reported once and not parsed.
-  void addAndParse(const std::string& name, std::string raw, SourceLoc includedFrom, int depth,
-                   std::vector<ast::Stmt*>& dest) {
+  void addAndParse(const std::string& name, std::string raw, SourceLoc includedFrom, int depth) {
     DecodedText decoded = decodeSourceText(std::move(raw));
     uint32_t index = out_.sources.add(name, std::move(decoded.text), includedFrom);
     if (decoded.kind == DecodedText::Binary) {
@@ -88,7 +103,7 @@ class Loader {
                    "rb-binary-input");
       return;
     }
-    parseFile(index, depth, dest);
+    parseFile(index, depth);
   }
 
   LoadedProgram& out_;
@@ -96,6 +111,7 @@ class Loader {
   const LoadOptions& options_;
   DiagnosticList& diags_;
   std::set<std::string> seen_;
+  ast::SubSpanFinder spans_;
 };
 
 }  // namespace

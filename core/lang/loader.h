@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "lang/ast.h"
+#include "lang/ast_walk.h"
+#include "lang/compact_ast.h"
 #include "base/diagnostic.h"
 #include "base/source.h"
 
@@ -30,6 +32,22 @@ class SourceReader {
 struct LoadOptions {
   /// Folders searched for an #include that is not found beside the including file.
   std::vector<std::string> libraryDirs;
+  /// Keep the statements in their compact form (ast::CompactStmts) instead of as trees: each
+  /// statement's tree is freed once parsed, and read back one at a time by whoever walks the
+  /// program (`rb check`: a big program's trees take many times the memory of its text). The
+  /// compiler and the checks give the same results either way; `stmts` stays empty.
+  bool compact = false;
+};
+
+/// A label or a sub statement: what the compiler declares before compiling, and the checks
+/// read before walking the program.
+struct Declaration {
+  ast::StmtKind kind = ast::StmtKind::Label;
+  bool broken = false;
+  std::string_view name;
+  SourceLoc loc;
+  SourceLoc nameLoc;
+  std::vector<ast::Param> params;
 };
 
 /// A parsed program with every include spliced in.
@@ -40,6 +58,17 @@ struct LoadedProgram {
   SourceSet sources;
   ast::Arena arena;
   std::vector<ast::Stmt*> stmts;
+  std::unique_ptr<ast::CompactStmts> compact;  ///< set when loaded with LoadOptions::compact
+  // Gathered while loading, so that nobody walks the whole program for them again:
+  std::vector<Declaration> declarations;  ///< every label and sub statement, in order
+  std::vector<ast::SubSpan> subSpans;     ///< ast::subSpans() of the statements
+  std::unordered_set<std::string_view> arrays;  ///< ast::arrayNames() of the statements
+
+  /// Reads the statements in order, whichever form they are kept in (see ast::StmtCursor).
+  ast::StmtCursor cursor(ast::Arena& scratch) const {
+    return compact ? ast::StmtCursor(*compact, scratch) : ast::StmtCursor(stmts);
+  }
+  size_t stmtCount() const { return compact ? compact->size() : stmts.size(); }
 };
 
 /// Loads `text` as the main file named `name` (already read by the caller), against the

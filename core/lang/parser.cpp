@@ -98,6 +98,13 @@ class Parser {
   /// Eof); nothing in a statement looks past its line.
   std::vector<Stmt*> run() {
     std::vector<Stmt*> out;
+    run([&](const std::vector<Stmt*>& line) { out.insert(out.end(), line.begin(), line.end()); });
+    return out;
+  }
+
+  /// Hands each line's statements to `onLine`, then forgets them.
+  void run(const std::function<void(const std::vector<Stmt*>&)>& onLine) {
+    std::vector<Stmt*> out;  // the statements of one line
     for (;;) {
       lines_.next(toks_);
       pos_ = 0;
@@ -110,9 +117,10 @@ class Parser {
         keepBlockOpener(0, out);
         while (cur().kind != Tok::Newline && cur().kind != Tok::Eof) ++pos_;
       }
+      if (!out.empty()) onLine(out);
+      out.clear();
       if (cur().kind == Tok::Eof) break;
     }
-    return out;
   }
 
  private:
@@ -795,6 +803,13 @@ std::vector<ast::Stmt*> parseFile(const SourceSet& sources, uint32_t fileIndex, 
                                   const BuiltinTable& builtins, DiagnosticList& diags) {
   LexedLines lines(sources, fileIndex, diags);
   return Parser(lines, arena, builtins, diags).run();
+}
+
+void parseFileLines(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,
+                    const BuiltinTable& builtins, DiagnosticList& diags,
+                    const std::function<void(const std::vector<ast::Stmt*>&)>& onLine) {
+  LexedLines lines(sources, fileIndex, diags);
+  Parser(lines, arena, builtins, diags).run(onLine);
 }
 
 }  // namespace rb

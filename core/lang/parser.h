@@ -2,6 +2,7 @@
 // Tokens of one file -> flat statement list. Syntax errors are collected; after an error the
 // parser skips to the end of the line and goes on, so one run reports every bad line.
 
+#include <functional>
 #include <vector>
 
 #include "lang/ast.h"
@@ -21,6 +22,12 @@ std::vector<ast::Stmt*> parseTokens(const std::vector<Token>& tokens, ast::Arena
 /// diagnostics as parseTokens(lex(...)), without ever holding the whole file's tokens.
 std::vector<ast::Stmt*> parseFile(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,
                                   const BuiltinTable& builtins, DiagnosticList& diags);
+
+/// The same, handing the statements of each line to `onLine` as soon as the line is parsed
+/// (nothing of a line is kept by the parser after that: `arena` may be reset in `onLine`).
+void parseFileLines(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,
+                    const BuiltinTable& builtins, DiagnosticList& diags,
+                    const std::function<void(const std::vector<ast::Stmt*>&)>& onLine);
 
 /// The binary operator table: precedence (higher binds tighter, 0 = not a binary operator) and
 /// associativity. Unary operators bind tighter than every binary one.
