@@ -1,6 +1,7 @@
 // libFuzzer target: the input bytes are a RobotBASIC program "fuzz.bas". It is loaded (lexer,
-// parser, #include splicing), compiled twice (without and with line tracing), linted, and every
-// diagnostic is formatted as text and as JSON. The program is never run: the interpreter may
+// parser, #include splicing), compiled twice (without and with line tracing), linted, and the
+// first diagnostics are formatted; rb check's compact path (statements kept compact, no code
+// kept) must find exactly the same diagnostics as the tree path, or the fuzzer stops. The program is never run: the interpreter may
 // legitimately loop forever. Any crash, sanitizer report or hang is a bug in rb_core.
 
 #include <algorithm>
@@ -58,6 +59,17 @@ class FuzzReader : public rb::SourceReader {
 
 size_t sink = 0;  // keeps the formatted text observable
 
+/// Every diagnostic's severity, place, rule and message, in order.
+std::string summary(const rb::DiagnosticList& diags) {
+  std::string out;
+  for (const rb::Diagnostic& d : diags.all()) {
+    out += std::to_string(static_cast<int>(d.severity)) + ' ' + std::to_string(d.loc.file) + ':' +
+           std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col) + ' ' + d.code + ' ' +
+           d.message + '\n';
+  }
+  return out;
+}
+
 /// Formats the first diagnostics, before and after sorting. Only the first 64 each time: rb
 /// check prints 20 errors unless told otherwise, every diagnostic goes through the same code,
 /// and formatting thousands of them on one 4 KiB line took most of each execution's time.
@@ -92,6 +104,26 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       rb::loadProgram("fuzz.bas", text, reader, rb::standardBuiltins(), options, loadDiags);
   if (!loaded) __builtin_trap();  // loadProgram promises a usable result
 
+  // rb check's path: statements kept compact, no code kept, the unassigned-variable check fed
+  // by the compiler's walk. It must find exactly what the tree path below finds.
+  std::string compactFound;
+  {
+    rb::DiagnosticList diags;
+    rb::LoadOptions compactOptions = options;
+    compactOptions.compact = true;
+    std::unique_ptr<rb::LoadedProgram> compact =
+        rb::loadProgram("fuzz.bas", text, reader, rb::standardBuiltins(), compactOptions, diags);
+    if (!compact) __builtin_trap();
+    rb::Linter linter(*compact);
+    rb::CompileOptions checkOptions;
+    checkOptions.keepCode = false;
+    checkOptions.onStatement = [&linter](const rb::ast::Stmt& st, size_t i) { linter.statement(st, i); };
+    std::unique_ptr<rb::Program> program = rb::compileProgram(*compact, checkOptions, diags);
+    linter.finish(diags);
+    diags.sort();
+    compactFound = summary(diags);
+  }
+
   for (bool lineTracing : {false, true}) {
     rb::DiagnosticList diags = loadDiags;
     rb::CompileOptions compileOptions;
@@ -100,7 +132,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     // The contract of compileProgram: a program exactly when there are no errors.
     if ((program != nullptr) == diags.hasErrors()) __builtin_trap();
     if (program) sink += rb::dumpCode(*program, loaded->sources).size();  // the dump reads every operand
-    if (!lineTracing) rb::lintProgram(*loaded, diags);
+    if (!lineTracing) {
+      rb::lintProgram(*loaded, diags);
+      rb::DiagnosticList sorted = diags;
+      sorted.sort();
+      if (summary(sorted) != compactFound) __builtin_trap();
+    }
     formatAll(loaded->sources, diags);
   }
   return 0;
