@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Configures and builds rb. Usage: scripts/build.sh [--tests] [--sanitize | --fuzz]
+# Configures and builds rb. Usage: scripts/build.sh [--tests] [--sanitize | --fuzz | --fuzz-fast]
 #   (default)   Release build of rb in build/
 #   --tests     also the unit and golden tests (CMake's BUILD_TESTING)
-#   --sanitize  Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, with the tests,
+#   --sanitize  AddressSanitizer + UndefinedBehaviorSanitizer build (-O1, line tables), with the tests,
 #               in build-asan/
 #   --fuzz      clang build of the libFuzzer targets (only those) in build-fuzz/, with ASan + UBSan
 #   --fuzz-fast the same with UBSan only, in build-fuzz-fast/: for long offline runs
