@@ -78,6 +78,7 @@ StopSignals::StopSignals() {
 }
 
 StopSignals::~StopSignals() {
+  if (keepBlocked_) return;
   // Swallow a pending stop signal so that unblocking it does not kill the process after the
   // clean-up already ran.
   sigset_t pending;

@@ -25,10 +25,15 @@ class StopSignals {
 
   /// True once one of the signals has arrived.
   bool requested() const;
+  /// Keeps the signals blocked when this object goes: for a process that ends right after, so
+  /// that a signal arriving while it exits (the caller saw the port close and sent SIGTERM)
+  /// does not turn a clean exit into death by that signal.
+  void keepBlockedAtExit() { keepBlocked_ = true; }
 
  private:
   sigset_t stop_;
   sigset_t previous_;
+  bool keepBlocked_ = false;
 };
 
 /// How the loop answers and what it logs.
