@@ -31,9 +31,6 @@ int executeRobot(const RobotOptions& opts) {
   }
   // Before the pty exists, so that a kill at any later moment still removes the link.
   drivers::StopSignals signals;
-  // The process ends when serving ends: a SIGTERM during the exit (after --die-after closed
-  // the port, say) must not change the exit status.
-  signals.keepBlockedAtExit();
   try {
     drivers::Pty pty;
     std::optional<drivers::SymlinkGuard> link;

@@ -74,25 +74,7 @@ StopSignals::StopSignals() {
   sigaddset(&stop_, SIGINT);
   sigaddset(&stop_, SIGTERM);
   sigaddset(&stop_, SIGHUP);
-  pthread_sigmask(SIG_BLOCK, &stop_, &previous_);
-}
-
-StopSignals::~StopSignals() {
-  if (keepBlocked_) return;
-  // Swallow a pending stop signal so that unblocking it does not kill the process after the
-  // clean-up already ran.
-  sigset_t pending;
-  sigpending(&pending);
-  for (int s : {SIGINT, SIGTERM, SIGHUP}) {
-    if (sigismember(&pending, s)) {
-      sigset_t one;
-      sigemptyset(&one);
-      sigaddset(&one, s);
-      int got = 0;
-      sigwait(&one, &got);
-    }
-  }
-  pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+  pthread_sigmask(SIG_BLOCK, &stop_, nullptr);
 }
 
 bool StopSignals::requested() const {

@@ -14,26 +14,21 @@
 
 namespace rb::drivers {
 
-/// Blocks SIGINT, SIGTERM and SIGHUP for as long as it lives, so that a loop can notice them
-/// between two waits and end cleanly (removing its link) without a signal handler.
+/// Blocks SIGINT, SIGTERM and SIGHUP for the rest of the process, so that a loop can notice
+/// them between two waits and end cleanly (removing its link) without a signal handler. They
+/// stay blocked through the exit: a signal that arrives while the process ends (the caller saw
+/// the port close and sent SIGTERM) does not turn a clean exit into death by that signal.
 class StopSignals {
  public:
   StopSignals();
-  ~StopSignals();
   StopSignals(const StopSignals&) = delete;
   StopSignals& operator=(const StopSignals&) = delete;
 
   /// True once one of the signals has arrived.
   bool requested() const;
-  /// Keeps the signals blocked when this object goes: for a process that ends right after, so
-  /// that a signal arriving while it exits (the caller saw the port close and sent SIGTERM)
-  /// does not turn a clean exit into death by that signal.
-  void keepBlockedAtExit() { keepBlocked_ = true; }
 
  private:
   sigset_t stop_;
-  sigset_t previous_;
-  bool keepBlocked_ = false;
 };
 
 /// How the loop answers and what it logs.
