@@ -13,6 +13,12 @@ trap 'rm -rf "$dir"' EXIT
 for n in 1 10 100 0; do
   sed "s/^every = 100\$/every = $n/" "$here/roam_status.bas" > "$dir/every$n.bas"
 done
+# The same every step with opaque backgrounds (xyText's white, setColor's yellow behind
+# xyString), the way a status line is usually kept readable: each changed character's cell is
+# painted afresh.
+sed -e "s/^every = 100\$/every = 1/" -e 's/"", 10$/"", 10, 0, black, white/' \
+    -e 's/^turns = 0$/turns = 0\nsetColor black, yellow/' "$here/roam_status.bas" > "$dir/every1bg.bas"
+grep -q 'black, white' "$dir/every1bg.bas" && grep -q "setColor black, yellow" "$dir/every1bg.bas"
 python3 - "$rb" "$dir" "$runs" "$here/.." <<'PY'
 import sys
 rb, d, runs = sys.argv[1], sys.argv[2], int(sys.argv[3])
@@ -20,7 +26,8 @@ sys.path.insert(0, sys.argv[4])
 from measure import alternate, machine, ms, mib
 # turns, x, y after 100,000 steps; the status text lies where this robot never drives.
 expect = "864 37 242"
-names = {"every step": 1, "every 10 steps": 10, "every 100 steps": 100, "no status line": 0}
+names = {"every step": "1", "every step, backgrounds": "1bg", "every 10 steps": "10",
+         "every 100 steps": "100", "no status line": "0"}
 jobs = {name: ([rb, "run", f"{d}/every{n}.bas"], expect) for name, n in names.items()}
 print(f"machine: {machine()}")
 got = alternate(jobs, runs)

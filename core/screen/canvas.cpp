@@ -47,22 +47,15 @@ Colour rgbColour(int r, int g, int b) {
   return clamp(r) | clamp(g) << 8 | clamp(b) << 16;
 }
 
-void ObstacleChanges::addFar(int x, int y) {
-  for (PixelBox& b : boxes) {
-    if (x >= b.x0 - kJoin && x <= b.x1 + kJoin && y >= b.y0 - kJoin && y <= b.y1 + kJoin) {
-      b.add(x, y);
-      return;
-    }
-  }
-  if (boxes.size() < kMaxBoxes) {
-    boxes.emplace_back().add(x, y);
-    return;
-  }
+PixelBox& ObstacleChanges::boxForFar(int x, int y) {
+  for (PixelBox& b : boxes)
+    if (x >= b.x0 - kJoin && x <= b.x1 + kJoin && y >= b.y0 - kJoin && y <= b.y1 + kJoin) return b;
+  if (boxes.size() < kMaxBoxes) return boxes.emplace_back();
   // Too many scattered changes: one box holds them all.
   PixelBox merged;
   for (const PixelBox& b : boxes) merged.add(b);
-  merged.add(x, y);
   boxes.assign(1, merged);
+  return boxes.back();
 }
 
 Canvas::Canvas() = default;
@@ -91,6 +84,7 @@ void Canvas::keepDisplayList(bool keep) {
 void Canvas::clear(Colour c) {
   background_ = c;
   std::fill(pixels_.begin(), pixels_.end(), c);  // nothing to fill while the screen is unmade
+  forgetAllTraces();
   obstaclesChangedEverywhere();
   ++version_;
   cursor_ = {};
@@ -204,18 +198,55 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
   // that already have the colour cost one comparison.
   Colour* row = &materialize()[static_cast<size_t>(y) * kWidth];
   const bool obstacle = isObstacleColour(c);
-  bool changed = false;
+  // Copies: the compiler cannot tell that writing a pixel leaves them alone.
+  const Colour background = background_;
+  const bool someInvisible = !invisible_.empty();
+  int first = -1, last = -1;  // the first and last pixel that changed
+  int firstFlip = -1, lastFlip = -1;  // ... that became or stopped being an obstacle
   for (int x = x1; x <= x2; ++x) {
     Colour& p = row[x];
     if (p == c) continue;
-    if (isObstacleColour(p) != obstacle) {
-      ++obstacleVersion_;
-      obstacleChanges_.add(x, y);
+    if ((p != background && (!someInvisible || isObstacleColour(p))) != obstacle) {
+      if (firstFlip < 0) firstFlip = x;
+      lastFlip = x;
     }
     p = c;
-    changed = true;
+    if (first < 0) first = x;
+    last = x;
   }
-  if (changed) ++version_;
+  if (first < 0) return;
+  ++version_;
+  if (firstFlip >= 0) {
+    ++obstacleVersion_;
+    obstacleChanges_.addRow(y, firstFlip, lastFlip);
+  }
+  if (liveTraces_ != 0) forgetTraces(y, first, last);
+}
+
+void Canvas::paintGlyph(const Glyph& g, int left, int top, Colour c) {
+  if (left >= 0 && top >= 0 && left + g.width <= kWidth && top + g.height <= kHeight) {
+    // On the screen: a run whose pixels all have the colour already (text drawn over itself)
+    // is passed over without span()'s clipping and bookkeeping.
+    const Colour* origin = &materialize()[static_cast<size_t>(top) * kWidth + static_cast<size_t>(left)];
+    for (const Glyph::Run& r : g.runs) {
+      const Colour* p = origin + static_cast<ptrdiff_t>(r.y) * kWidth + r.x;
+      int k = 0;
+      while (k < r.length && p[k] == c) ++k;
+      if (k < r.length) span(top + r.y, left + r.x + k, left + r.x + r.length - 1, c);
+    }
+    return;
+  }
+  for (const Glyph::Run& r : g.runs) span(top + r.y, left + r.x, left + r.x + r.length - 1, c);
+}
+
+void Canvas::forgetTraces(int y, int x1, int x2) {
+  for (TextTrace& t : traces_) {
+    if (t.live && y >= t.box.y0 && y <= t.box.y1 && x2 >= t.box.x0 &&
+        x1 <= t.box.x1) {
+      t.live = false;
+      --liveTraces_;
+    }
+  }
 }
 
 void Canvas::rectangle(Point a, Point b, int width, std::optional<Colour> outline,
@@ -384,25 +415,111 @@ FontRenderer& Canvas::fonts() {
   return *fonts_;
 }
 
+namespace {
+
+bool sameTextStyle(const TextStyle& a, const TextStyle& b) {
+  return a.font == b.font && a.underline == b.underline && a.strikeout == b.strikeout &&
+         a.background == b.background;
+}
+
+}  // namespace
+
 int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Colour c) {
   FontRenderer& f = fonts();
-  const FontMetrics m = f.metrics(style.font);
-  const int width = f.width(style.font, s);
-  if (style.background)
+  const FontMetrics& m = f.metrics(style.font);
+  std::vector<const Glyph*>& glyphs = glyphScratch_;
+  const int width = f.glyphs(style.font, s, glyphs);
+
+  // The same text style drawn at the same place before, its pixels untouched since: its
+  // characters that are drawn again where they already are can be left alone. With a
+  // background, each changed character's cell is painted afresh, which is the same picture
+  // only when no glyph, old or new, reaches into a neighbouring cell.
+  TextTrace* trace = nullptr;
+  bool reuse = false;
+  if (textMemory_) {
+    for (TextTrace& t : traces_)
+      if (t.live && t.at == Point{x, y} && t.colour == c && sameTextStyle(t.style, style)) {
+        trace = &t;
+        reuse = !style.background ||
+                (t.inCells && std::all_of(glyphs.begin(), glyphs.end(), [](const Glyph* g) { return g->inCell; }));
+        break;
+      }
+    if (!trace) {  // a free slot, else the oldest
+      trace = &traces_[0];
+      for (TextTrace& t : traces_) {
+        if (!t.live) {
+          trace = &t;
+          break;
+        }
+        if (t.drawn < trace->drawn) trace = &t;
+      }
+    }
+    if (trace->live) --liveTraces_;
+    trace->live = false;  // so that this draw's own pixels do not forget it
+  }
+  const size_t before = reuse ? trace->text.size() : 0;  // characters drawn last time
+  if (trace) {
+    trace->text.resize(s.size());
+    trace->pens.resize(s.size());
+  }
+
+  if (style.background && !reuse)
     for (int yy = 0; yy < m.lineHeight; ++yy) span(y + yy, x, x + width - 1, *style.background);
   const int baseline = y + m.ascent;
+  PixelBox box;  // where this draw may have painted: the cells, and glyphs reaching out of them
+  bool inCells = true;
   int penX = x;
-  for (unsigned char chr : s) {
-    if (penX >= kWidth) break;  // the rest of the text is off the screen
-    const Glyph& g = f.glyph(style.font, chr);
+  size_t drawn = 0;
+  if (before > 0 && trace->inCells) {
+    // The characters before the first that changed are already there, at the same places
+    // (same font, same characters before them), each inside its own cell.
+    const size_t n = std::min(before, s.size());
+    drawn = static_cast<size_t>(std::mismatch(s.begin(), s.begin() + static_cast<long>(n), trace->text.begin()).first - s.begin());
+    if (drawn > 0) penX = drawn < before ? trace->pens[drawn] : trace->pens[drawn - 1] + glyphs[drawn - 1]->advance;
+  }
+  for (; drawn < glyphs.size() && penX < kWidth; ++drawn) {  // the rest would be off the screen
+    const Glyph& g = *glyphs[drawn];
     const int left = penX + g.left, top = baseline - g.top;
-    for (const Glyph::Run& r : g.runs) span(top + r.y, left + r.x, left + r.x + r.length - 1, c);
+    if (trace) {
+      const bool same = drawn < before && trace->text[drawn] == s[drawn] && trace->pens[drawn] == penX;
+      trace->text[drawn] = s[drawn];
+      trace->pens[drawn] = penX;
+      if (!g.inCell) {
+        inCells = false;
+        box.add(left, top);
+        box.add(left + g.width - 1, top + g.height - 1);
+      }
+      if (same) {
+        penX += g.advance;
+        continue;  // already there
+      }
+      if (style.background && reuse)
+        for (int yy = 0; yy < m.lineHeight; ++yy) span(y + yy, penX, penX + g.advance - 1, *style.background);
+    }
+    paintGlyph(g, left, top, c);
     penX += g.advance;
   }
   if (style.underline)
     for (int k = 0; k < m.underlineThickness; ++k) span(y + m.underlineTop + k, x, x + width - 1, c);
   if (style.strikeout)
     for (int k = 0; k < m.strikeoutThickness; ++k) span(y + m.strikeoutTop + k, x, x + width - 1, c);
+
+  if (trace && drawn > 0) {
+    box.add(x, y);
+    box.add(x + std::max(width, 1) - 1, y + m.lineHeight - 1);
+    if (style.underline) box.add(x, y + m.underlineTop + m.underlineThickness - 1);
+    if (style.strikeout) box.add(x, y + m.strikeoutTop + m.strikeoutThickness - 1);
+    trace->text.resize(drawn);
+    trace->pens.resize(drawn);
+    trace->live = true;
+    ++liveTraces_;
+    trace->at = {x, y};
+    trace->style = style;
+    trace->colour = c;
+    trace->box = box;
+    trace->inCells = inCells;
+    trace->drawn = ++textClock_;
+  }
   record([&] {
     DrawOp op{DrawOp::Text, {{x, y}, {x + width, y + m.lineHeight}}, c, std::nullopt, 1, s, style};
     op.ascent = m.ascent;
@@ -416,6 +533,7 @@ void Canvas::scrollUp(int pixels) {
   materialize();
   std::move(pixels_.begin() + static_cast<long>(shift), pixels_.end(), pixels_.begin());
   std::fill(pixels_.end() - static_cast<long>(shift), pixels_.end(), background_);
+  forgetAllTraces();
   obstaclesChangedEverywhere();
   ++version_;
   record([&] { return DrawOp{DrawOp::Raster, {}}; });
@@ -516,6 +634,7 @@ void Canvas::save() { saved_ = materialize(); }
 
 void Canvas::restore() {
   if (saved_.empty()) return;
+  forgetAllTraces();
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) plot(x, y, saved_[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)]);
   record([&] { return DrawOp{DrawOp::Raster, {}}; });

@@ -65,19 +65,25 @@ struct ObstacleChanges {
   std::vector<PixelBox> boxes;  ///< every pixel that became or stopped being an obstacle
   bool all = false;             ///< something changed everywhere (clearScr, rInvisible, scrolling)
 
-  void add(int x, int y) {
-    if (!boxes.empty()) {
-      PixelBox& last = boxes.back();  // drawing is mostly local: the last box first
-      if (x >= last.x0 - kJoin && x <= last.x1 + kJoin && y >= last.y0 - kJoin && y <= last.y1 + kJoin) {
-        last.add(x, y);
-        return;
-      }
-    }
-    addFar(x, y);
+  void add(int x, int y) { boxFor(x, y).add(x, y); }
+  /// Pixels x1..x2 of row y: one box takes them all.
+  void addRow(int y, int x1, int x2) {
+    PixelBox& b = boxFor(x1, y);
+    b.add(x1, y);
+    b.add(x2, y);
   }
 
  private:
-  void addFar(int x, int y);
+  /// The box a change at (x, y) joins (a new one if none is near).
+  PixelBox& boxFor(int x, int y) {
+    if (!boxes.empty()) {
+      PixelBox& last = boxes.back();  // drawing is mostly local: the last box first
+      if (x >= last.x0 - kJoin && x <= last.x1 + kJoin && y >= last.y0 - kJoin && y <= last.y1 + kJoin)
+        return last;
+    }
+    return boxForFar(x, y);
+  }
+  PixelBox& boxForFar(int x, int y);
 };
 
 /// xyText's style bits, the constants fs_Bold, fs_Italic, fs_Underline, fs_StrikeOut (the
@@ -209,6 +215,12 @@ class Canvas {
   /// clearScr or a fill of the whole screen drops what it hides.
   void keepDisplayList(bool keep);
   const std::vector<DrawOp>& displayList() const { return ops_; }
+  /// Whether text drawn again over itself paints only the characters that changed (see
+  /// TextTrace; on by default). The pixels are the same either way: tests compare the two.
+  void setTextMemory(bool on) {
+    textMemory_ = on;
+    if (!on) forgetAllTraces();
+  }
   /// How far a point of the pen trail may lie from the straight segment that replaces it.
   static constexpr double kTrailTolerance = 0.5;
 
@@ -223,9 +235,12 @@ class Canvas {
     }
     p = c;
     ++version_;
+    if (liveTraces_ != 0) [[unlikely]] forgetTraces(y, x, x);
   }
   void brush(int x, int y, int width, Colour c);
   void span(int y, int x1, int x2, Colour c);
+  /// A glyph's pixels, its bitmap's top-left corner at (left, top).
+  void paintGlyph(const Glyph& g, int left, int top, Colour c);
   void drawLine(Point a, Point b, int width, Colour c);  ///< without recording it
   void scrollUp(int pixels);
   /// Records the operation `make()` builds, when the display list is kept.
@@ -243,6 +258,34 @@ class Canvas {
            ops_.back().kind == DrawOp::Trail;
   }
   void pushTrail(std::vector<Point> pts, bool keepSeen);
+
+  /// What a recent text draw left on the screen: its characters were drawn at `at` in this
+  /// style and colour, and no pixel in `box` has changed since. Drawing text again over it
+  /// (a status line redrawn every step) paints only the characters that differ: a character
+  /// drawn again where it already is, over pixels that have not changed, paints nothing new.
+  struct TextTrace {
+    bool live = false;
+    Point at;
+    TextStyle style;
+    Colour colour = 0;
+    std::string text;       ///< the characters drawn (those that start on the screen)
+    std::vector<int> pens;  ///< where each of them starts
+    PixelBox box;           ///< every pixel the draw may have painted: cells and glyphs
+    bool inCells = false;   ///< no glyph reaches outside its own character cell
+    uint64_t drawn = 0;     ///< when (textClock_), to replace the oldest
+  };
+  static constexpr size_t kMaxTraces = 4;
+  std::array<TextTrace, kMaxTraces> traces_;
+  int liveTraces_ = 0;
+  uint64_t textClock_ = 0;
+  bool textMemory_ = true;
+  std::vector<const Glyph*> glyphScratch_;
+  /// A pixel in row y between x1 and x2 changed: the traces whose box holds it are forgotten.
+  void forgetTraces(int y, int x1, int x2);
+  void forgetAllTraces() {
+    for (TextTrace& t : traces_) t.live = false;
+    liveTraces_ = 0;
+  }
 
   /// The screen, row by row; empty until something is drawn or the pixels are asked for, and
   /// then every pixel is background_. A program that never draws never touches the 1.9 MB

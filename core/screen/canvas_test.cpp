@@ -340,3 +340,84 @@ TEST_CASE("canvas: the screen made on first use looks the same as one made at on
   saved.restore();
   CHECK(saved.pixels() == std::vector<Colour>(n, colours::kWhite));
 }
+
+TEST_CASE("canvas: text redrawn over itself paints only what changed, with the same pixels",
+          "[canvas]") {
+  // Two screens get the same random drawing: one remembers its text (the default), one draws
+  // every character every time. Status lines are redrawn at a few places, in a few styles
+  // (italic glyphs reach into their neighbours' cells), with and without a background, between
+  // other drawing that covers them, clearScr, scrolling prints and restoreScr.
+  Canvas fast, slow;
+  slow.setTextMemory(false);
+  uint64_t state = 0x2545F4914F6CDD1Dull;
+  auto next = [&](uint64_t n) {
+    state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+    return state % n;
+  };
+  const std::vector<Point> places = {{20, 560}, {420, 560}, {24, 562}, {790, 300}, {-4, 10},
+                                     {300, 20}, {500, 300}, {100, 300}};
+  const std::string alphabet = "0123456789 ._-Wjgfy|";
+  auto both = [&](auto draw) {
+    draw(fast);
+    draw(slow);
+  };
+  size_t textDraws = 0;
+  for (int step = 0; step < 6000; ++step) {
+    const uint64_t what = next(100);
+    if (what < 80) {
+      const size_t place = next(places.size());
+      const Point at = places[place];
+      // Each place keeps its style most of the time (a status line), so redraws match.
+      TextStyle style;
+      const bool usual = next(5) != 0;
+      auto pick = [&](uint64_t n) { return usual ? (place * 7 + 3) % n : next(n); };
+      style.font.face = pick(3) == 0 ? Typeface::Sans : Typeface::Mono;
+      style.font.italic = pick(4) == 0;
+      style.font.bold = pick(5) == 0;
+      style.font.pixelSize = pick(4) == 0 ? 20 : 13;
+      style.underline = pick(6) == 0;
+      style.strikeout = pick(8) == 0;
+      if (pick(2) == 0) style.background = pick(3) == 0 ? colours::kYellow : colours::kWhite;
+      const Colour c = next(8) == 0 ? colours::kRed : colours::kBlack;
+      std::string s = "step ";
+      for (uint64_t k = next(12); k > 0; --k) s += alphabet[next(alphabet.size())];
+      both([&](Canvas& cv) { cv.text(at.x, at.y, s, style, c); });
+      ++textDraws;
+    } else if (what < 90) {
+      Point a{static_cast<int>(next(800)), static_cast<int>(next(40)) + 540};
+      Point b{a.x + static_cast<int>(next(60)), a.y + static_cast<int>(next(20))};
+      const Colour c = static_cast<Colour>(next(16));
+      const int w = 1 + static_cast<int>(next(3));
+      if (next(2) == 0) both([&](Canvas& cv) { cv.rectangle(a, b, 1, c, c); });
+      else both([&](Canvas& cv) { cv.line(a, b, w, c); });
+    } else if (what < 94) {
+      const int x = static_cast<int>(next(800)), y = static_cast<int>(next(600));
+      const Colour c = static_cast<Colour>(next(16));
+      both([&](Canvas& cv) { cv.setPixel(x, y, c); });
+    } else if (what < 96) {
+      both([&](Canvas& cv) { cv.print("a line\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n\n", false); });
+    } else if (what < 97) {
+      const Colour c = next(2) == 0 ? colours::kWhite : colours::kGray;
+      both([&](Canvas& cv) { cv.clear(c); });
+    } else if (what < 98) {
+      both([](Canvas& cv) { cv.save(); });
+    } else if (what < 99) {
+      both([](Canvas& cv) { cv.restore(); });
+    } else {
+      const int x = static_cast<int>(next(800)), y = static_cast<int>(next(40)) + 540;
+      both([&](Canvas& cv) { cv.floodFill(x, y, colours::kCyan); });
+    }
+    INFO("step " << step << " (operation " << what << ")");
+    if (step % 64 == 0) {
+      REQUIRE(fast.pixels() == slow.pixels());
+    } else {
+      // Where the text is drawn, after every step.
+      for (int band : {0, 290, 530})
+        for (int y = band; y < band + 70 && y < Canvas::kHeight; ++y)
+          for (int x = 0; x < Canvas::kWidth; ++x)
+            if (fast.at(x, y) != slow.at(x, y)) FAIL("pixel " << x << "," << y << " differs");
+    }
+  }
+  REQUIRE(fast.pixels() == slow.pixels());
+  CHECK(textDraws > 4000);
+}

@@ -151,6 +151,15 @@ struct FontRenderer::Impl {
     return s;
   }
 
+  /// Rasterizes a character of one size into its slot of s.glyphs.
+  void load(Sized& s, const FontKey& key, unsigned char ch) {
+    FT_Activate_Size(s.size);
+    Glyph& g = s.glyphs[ch].emplace(rasterize(face(faceIndex(key)), ch));
+    const int top = s.metrics.ascent - g.top;
+    g.inCell = g.width == 0 || g.height == 0 ||
+               (g.left >= 0 && g.left + g.width <= g.advance && top >= 0 && top + g.height <= s.metrics.lineHeight);
+  }
+
   Glyph rasterize(FT_Face f, unsigned char ch) {
     FT_UInt index = FT_Get_Char_Index(f, ch);
     if (index == 0) index = FT_Get_Char_Index(f, '?');
@@ -196,11 +205,22 @@ const FontMetrics& FontRenderer::metrics(const FontKey& key) { return impl_->siz
 const Glyph& FontRenderer::glyph(const FontKey& key, unsigned char ch) {
   Impl::Sized& s = impl_->sized(key);
   std::optional<Glyph>& g = s.glyphs[ch];
-  if (!g) {
-    FT_Activate_Size(s.size);
-    g = impl_->rasterize(impl_->face(Impl::faceIndex(key)), ch);
-  }
+  if (!g) [[unlikely]] impl_->load(s, key, ch);
   return *g;
+}
+
+int FontRenderer::glyphs(const FontKey& key, std::string_view text, std::vector<const Glyph*>& out) {
+  Impl::Sized& s = impl_->sized(key);
+  out.resize(text.size());
+  int width = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const auto ch = static_cast<unsigned char>(text[i]);
+    std::optional<Glyph>& g = s.glyphs[ch];
+    if (!g) [[unlikely]] impl_->load(s, key, ch);
+    out[i] = &*g;
+    width += g->advance;
+  }
+  return width;
 }
 
 int FontRenderer::width(const FontKey& key, std::string_view text) {

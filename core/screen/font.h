@@ -67,6 +67,9 @@ struct Glyph {
   int top = 0;      ///< from the baseline up to the bitmap's first row
   int width = 0, height = 0;
   int advance = 0;  ///< how far the pen moves, in whole pixels
+  /// The bitmap lies inside the character's cell: between the pen and the next pen position,
+  /// within the line's height (FontMetrics::lineHeight below the cell's top).
+  bool inCell = true;
   std::vector<uint8_t> bits;  ///< width * height, 1 where the pixel is drawn
   bool pixel(int x, int y) const { return bits[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)] != 0; }
   /// The drawn pixels as horizontal runs, so drawing visits only them.
@@ -87,6 +90,10 @@ class FontRenderer {
 
   const FontMetrics& metrics(const FontKey& key);
   const Glyph& glyph(const FontKey& key, unsigned char ch);
+  /// The glyph of each character of `text`, in `out` (replacing what it held): one font
+  /// lookup for the whole string. The glyphs live as long as the renderer. Returns the width,
+  /// the sum of the advances.
+  int glyphs(const FontKey& key, std::string_view text, std::vector<const Glyph*>& out);
   /// The width of a string: the sum of its advances.
   int width(const FontKey& key, std::string_view text);
 
