@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets and runs each for a bounded time:
+# Builds the libFuzzer targets and runs them side by side, each for a bounded time:
 #   rb_fuzz      the front end (lexer, parser, checker, compiler, diagnostics), inputs <= 4 KiB
 #   rb_fuzz_run  whole runs (screen, robot, picture writers) under limits, inputs <= 64 KiB
 # Usage: fuzz/run.sh [seconds] [libFuzzer options...]   (seconds per target, default 60)
@@ -29,7 +29,7 @@ bin="$root/build-$build/fuzz"
 # source tree; the fuzzer adds the inputs it finds interesting to it, so it is thrown away
 # afterwards).
 work="$(mktemp -d "${TMPDIR:-/tmp}/rb-fuzz.XXXXXX")"
-trap 'rm -rf "$work"' EXIT
+trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
 seeds="$work/seeds"
 mkdir -p "$seeds"
 n=0
@@ -49,6 +49,9 @@ cp "$root/fuzz/bas.dict" "$dict"
 
 artifacts="$bin/artifacts"
 mkdir -p "$artifacts"
+# The targets run side by side (each is one process; CI has two CPUs or more), each for the
+# time given; their output goes to a log each, shown when they are done.
+declare -A pids logs
 for target in $targets; do
   case "$target" in
     rb_fuzz) maxlen=4096; rss=2048 ;;
@@ -60,7 +63,7 @@ for target in $targets; do
   corpus="$work/corpus-$target"
   mkdir -p "$corpus"
   log="$bin/last-run-$target.log"
-  status=0
+  logs[$target]="$log"
   "$bin/$target" \
     -max_total_time="$seconds" \
     -max_len="$maxlen" \
@@ -70,13 +73,24 @@ for target in $targets; do
     -artifact_prefix="$artifacts/$target-" \
     -print_final_stats=1 \
     "$@" \
-    "$corpus" "$seeds" 2>&1 | tee "$log" || status=${PIPESTATUS[0]}
+    "$corpus" "$seeds" > "$log" 2>&1 &
+  pids[$target]=$!
+done
+failed=0
+for target in $targets; do
+  status=0
+  wait "${pids[$target]}" || status=$?
+  log="${logs[$target]}"
   if [[ $status -ne 0 ]]; then
+    tail -n 60 "$log" >&2
     echo >&2
     echo "run.sh: $target failed (exit status $status); log in $log" >&2
     grep -E "^(artifact_prefix|Test unit written to)" "$log" >&2 || true
     echo "run.sh: reproduce with: $bin/$target <crash file>" >&2
-    exit "$status"
+    failed=$status
+    continue
   fi
+  grep -E "^stat::" "$log" || true
   echo "run.sh: $target: no crash in ${seconds}s ($(grep -Eo 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -Eo '[0-9]+$') executions)"
 done
+exit "$failed"
