@@ -427,8 +427,10 @@ bool sameTextStyle(const TextStyle& a, const TextStyle& b) {
 int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Colour c) {
   FontRenderer& f = fonts();
   const FontMetrics& m = f.metrics(style.font);
+  // A text longer than kMaxTraceChars is drawn without the memory below (its glyphs looked
+  // up one by one past that length): a long string costs no memory in proportion to its length.
   std::vector<const Glyph*>& glyphs = glyphScratch_;
-  const int width = f.glyphs(style.font, s, glyphs);
+  const int width = f.glyphs(style.font, s, glyphs, kMaxTraceChars);
 
   // The same text style drawn at the same place before, its pixels untouched since: its
   // characters that are drawn again where they already are can be left alone. With a
@@ -436,7 +438,7 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
   // only when no glyph, old or new, reaches into a neighbouring cell.
   TextTrace* trace = nullptr;
   bool reuse = false;
-  if (textMemory_) {
+  if (textMemory_ && s.size() <= kMaxTraceChars) {
     for (TextTrace& t : traces_)
       if (t.live && t.at == Point{x, y} && t.colour == c && sameTextStyle(t.style, style)) {
         trace = &t;
@@ -478,7 +480,7 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
     if (drawn > 0) penX = drawn < before ? trace->pens[drawn] : trace->pens[drawn - 1] + glyphs[drawn - 1]->advance;
   }
   for (; drawn < glyphs.size() && penX < kWidth; ++drawn) {  // the rest would be off the screen
-    const Glyph& g = *glyphs[drawn];
+    const Glyph& g = drawn < glyphs.size() ? *glyphs[drawn] : f.glyph(style.font, static_cast<unsigned char>(s[drawn]));
     const int left = penX + g.left, top = baseline - g.top;
     if (trace) {
       const bool same = drawn < before && trace->text[drawn] == s[drawn] && trace->pens[drawn] == penX;

@@ -275,6 +275,7 @@ class Canvas {
     uint64_t drawn = 0;     ///< when (textClock_), to replace the oldest
   };
   static constexpr size_t kMaxTraces = 4;
+  static constexpr size_t kMaxTraceChars = 512;  ///< longer texts are not remembered
   std::array<TextTrace, kMaxTraces> traces_;
   int liveTraces_ = 0;
   uint64_t textClock_ = 0;

@@ -380,7 +380,8 @@ TEST_CASE("canvas: text redrawn over itself paints only what changed, with the s
       if (pick(2) == 0) style.background = pick(3) == 0 ? colours::kYellow : colours::kWhite;
       const Colour c = next(8) == 0 ? colours::kRed : colours::kBlack;
       std::string s = "step ";
-      for (uint64_t k = next(12); k > 0; --k) s += alphabet[next(alphabet.size())];
+      // Now and then a text too long to be remembered (Canvas::kMaxTraceChars).
+      for (uint64_t k = next(50) == 0 ? 600 : next(12); k > 0; --k) s += alphabet[next(alphabet.size())];
       both([&](Canvas& cv) { cv.text(at.x, at.y, s, style, c); });
       ++textDraws;
     } else if (what < 90) {

@@ -209,15 +209,15 @@ const Glyph& FontRenderer::glyph(const FontKey& key, unsigned char ch) {
   return *g;
 }
 
-int FontRenderer::glyphs(const FontKey& key, std::string_view text, std::vector<const Glyph*>& out) {
+int FontRenderer::glyphs(const FontKey& key, std::string_view text, std::vector<const Glyph*>& out, size_t keep) {
   Impl::Sized& s = impl_->sized(key);
-  out.resize(text.size());
+  out.resize(std::min(keep, text.size()));
   int width = 0;
   for (size_t i = 0; i < text.size(); ++i) {
     const auto ch = static_cast<unsigned char>(text[i]);
     std::optional<Glyph>& g = s.glyphs[ch];
     if (!g) [[unlikely]] impl_->load(s, key, ch);
-    out[i] = &*g;
+    if (i < out.size()) out[i] = &*g;
     width += g->advance;
   }
   return width;

@@ -90,10 +90,10 @@ class FontRenderer {
 
   const FontMetrics& metrics(const FontKey& key);
   const Glyph& glyph(const FontKey& key, unsigned char ch);
-  /// The glyph of each character of `text`, in `out` (replacing what it held): one font
-  /// lookup for the whole string. The glyphs live as long as the renderer. Returns the width,
-  /// the sum of the advances.
-  int glyphs(const FontKey& key, std::string_view text, std::vector<const Glyph*>& out);
+  /// The glyphs of the first `keep` characters of `text` (at most), in `out` (replacing what it
+  /// held): one font lookup for the whole string. The glyphs live as long as the renderer.
+  /// Returns the width of the whole text, the sum of the advances.
+  int glyphs(const FontKey& key, std::string_view text, std::vector<const Glyph*>& out, size_t keep);
   /// The width of a string: the sum of its advances.
   int width(const FontKey& key, std::string_view text);
 
