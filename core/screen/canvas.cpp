@@ -479,7 +479,7 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
     drawn = static_cast<size_t>(std::mismatch(s.begin(), s.begin() + static_cast<long>(n), trace->text.begin()).first - s.begin());
     if (drawn > 0) penX = drawn < before ? trace->pens[drawn] : trace->pens[drawn - 1] + glyphs[drawn - 1]->advance;
   }
-  for (; drawn < glyphs.size() && penX < kWidth; ++drawn) {  // the rest would be off the screen
+  for (; drawn < s.size() && penX < kWidth; ++drawn) {  // the rest would be off the screen
     const Glyph& g = drawn < glyphs.size() ? *glyphs[drawn] : f.glyph(style.font, static_cast<unsigned char>(s[drawn]));
     const int left = penX + g.left, top = baseline - g.top;
     if (trace) {

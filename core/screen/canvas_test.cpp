@@ -13,6 +13,14 @@
 
 using namespace rb;
 
+namespace {
+
+/// Whether two screens have the same pixels: a bool, so that a failure does not print 480,000
+/// of them.
+bool samePixels(const Canvas& a, const Canvas& b) { return a.pixels() == b.pixels(); }
+
+}  // namespace
+
 TEST_CASE("a print that scrolls a whole screen draws only what stays visible, identically",
           "[canvas]") {
   // The same text printed line by line (scrolling each time) and in one huge print (which
@@ -35,7 +43,7 @@ TEST_CASE("a print that scrolls a whole screen draws only what stays visible, id
   }
   fast.print(lines.substr(0, lines.size() - 1), true);
   CHECK(fast.textCursor() == slow.textCursor());
-  CHECK(fast.pixels() == slow.pixels());
+  CHECK(samePixels(fast, slow));
 }
 
 TEST_CASE("print wraps at the right edge and expands tabs to 8 columns", "[canvas]") {
@@ -172,7 +180,7 @@ TEST_CASE("canvas: a retraced trail keeps one lap in the display list", "[canvas
   // The same segments in the same colour and width: the same picture, and about one lap's size.
   CHECK(trailSegments(many.displayList()) == trailSegments(one.displayList()));
   CHECK(pointCount(many.displayList()) <= pointCount(one.displayList()) + 4);
-  CHECK(many.pixels() == one.pixels());
+  CHECK(samePixels(many, one));
 
   // Lifting the pen and putting it down again with nothing drawn in between: still one lap.
   many.trailEnd();
@@ -410,7 +418,7 @@ TEST_CASE("canvas: text redrawn over itself paints only what changed, with the s
     }
     INFO("step " << step << " (operation " << what << ")");
     if (step % 64 == 0) {
-      REQUIRE(fast.pixels() == slow.pixels());
+      REQUIRE(samePixels(fast, slow));
     } else {
       // Where the text is drawn, after every step.
       for (int band : {0, 290, 530})
@@ -419,6 +427,19 @@ TEST_CASE("canvas: text redrawn over itself paints only what changed, with the s
             if (fast.at(x, y) != slow.at(x, y)) FAIL("pixel " << x << "," << y << " differs");
     }
   }
-  REQUIRE(fast.pixels() == slow.pixels());
+  REQUIRE(samePixels(fast, slow));
   CHECK(textDraws > 4000);
+}
+
+TEST_CASE("canvas: a long text starting far to the left shows its end", "[canvas]") {
+  // 600 characters of 8 pixels from x = -4000: the last 100 are on the screen, where the same
+  // 100 drawn alone from x = 0 are.
+  const TextStyle mono;
+  std::string s;
+  for (int i = 0; i < 600; ++i) s += static_cast<char>('a' + i % 26);
+  Canvas whole, tail;
+  REQUIRE(whole.text(-4000, 100, s, mono, colours::kBlack) == 4800);
+  tail.text(0, 100, s.substr(500), mono, colours::kBlack);
+  CHECK(samePixels(whole, tail));
+  CHECK(std::count(whole.pixels().begin(), whole.pixels().end(), colours::kBlack) > 1000);
 }
