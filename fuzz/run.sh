@@ -29,7 +29,7 @@ bin="$root/build-$build/fuzz"
 # source tree; the fuzzer adds the inputs it finds interesting to it, so it is thrown away
 # afterwards).
 work="$(mktemp -d "${TMPDIR:-/tmp}/rb-fuzz.XXXXXX")"
-trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
+trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
 seeds="$work/seeds"
 mkdir -p "$seeds"
 n=0
