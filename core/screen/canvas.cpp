@@ -198,15 +198,12 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
   // that already have the colour cost one comparison.
   Colour* row = &materialize()[static_cast<size_t>(y) * kWidth];
   const bool obstacle = isObstacleColour(c);
-  // Copies: the compiler cannot tell that writing a pixel leaves them alone.
-  const Colour background = background_;
-  const bool someInvisible = !invisible_.empty();
   int first = -1, last = -1;  // the first and last pixel that changed
   int firstFlip = -1, lastFlip = -1;  // ... that became or stopped being an obstacle
   for (int x = x1; x <= x2; ++x) {
     Colour& p = row[x];
     if (p == c) continue;
-    if ((p != background && (!someInvisible || isObstacleColour(p))) != obstacle) {
+    if (isObstacleColour(p) != obstacle) {
       if (firstFlip < 0) firstFlip = x;
       lastFlip = x;
     }
@@ -465,8 +462,11 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
     trace->pens.resize(s.size());
   }
 
-  if (style.background && !reuse)
-    for (int yy = 0; yy < m.lineHeight; ++yy) span(y + yy, x, x + width - 1, *style.background);
+  // The background behind the cells from x1 to x2.
+  auto background = [&](int x1, int x2) {
+    for (int yy = 0; yy < m.lineHeight; ++yy) span(y + yy, x1, x2, *style.background);
+  };
+  if (style.background && !reuse) background(x, x + width - 1);
   const int baseline = y + m.ascent;
   PixelBox box;  // where this draw may have painted: the cells, and glyphs reaching out of them
   bool inCells = true;
@@ -495,8 +495,7 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
         penX += g.advance;
         continue;  // already there
       }
-      if (style.background && reuse)
-        for (int yy = 0; yy < m.lineHeight; ++yy) span(y + yy, penX, penX + g.advance - 1, *style.background);
+      if (style.background && reuse) background(penX, penX + g.advance - 1);
     }
     paintGlyph(g, left, top, c);
     penX += g.advance;

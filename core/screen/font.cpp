@@ -224,9 +224,8 @@ int FontRenderer::glyphs(const FontKey& key, std::string_view text, std::vector<
 }
 
 int FontRenderer::width(const FontKey& key, std::string_view text) {
-  int w = 0;
-  for (unsigned char c : text) w += glyph(key, c).advance;
-  return w;
+  std::vector<const Glyph*> none;
+  return glyphs(key, text, none, 0);
 }
 
 }  // namespace rb
