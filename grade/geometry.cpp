@@ -1,6 +1,7 @@
 #include "geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -25,20 +26,47 @@ std::vector<Segment> segments(const Polylines& lines) {
   return out;
 }
 
-/// Points along every segment at most `step` apart, vertices included.
-std::vector<P2> samples(const Polylines& lines, double step) {
+/// The segments of `lines` in their order, each once: a segment drawn again in either direction
+/// (a robot going round the same square lap after lap) is kept only where it first appears.
+/// Endpoints count as equal when they agree to a millionth of a pixel, so that laps whose
+/// positions drift by rounding errors are still one; the Hausdorff distance changes by less.
+std::vector<Segment> distinctSegments(const Polylines& lines) {
+  std::vector<Segment> all = segments(lines);
+  struct Key {
+    std::array<double, 4> ends;
+    size_t index;
+  };
+  auto rounded = [](double v) { return std::nearbyint(v * 1e6); };
+  std::vector<Key> keys;
+  keys.reserve(all.size());
+  for (size_t i = 0; i < all.size(); ++i) {
+    std::array<double, 2> a{rounded(all[i].a.x), rounded(all[i].a.y)}, b{rounded(all[i].b.x), rounded(all[i].b.y)};
+    if (b < a) std::swap(a, b);
+    keys.push_back({{a[0], a[1], b[0], b[1]}, i});
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) {
+    return x.ends != y.ends ? x.ends < y.ends : x.index < y.index;
+  });
+  std::vector<bool> keep(all.size(), false);
+  for (size_t k = 0; k < keys.size(); ++k)
+    if (k == 0 || keys[k].ends != keys[k - 1].ends) keep[keys[k].index] = true;
+  std::vector<Segment> out;
+  for (size_t i = 0; i < all.size(); ++i)
+    if (keep[i]) out.push_back(all[i]);
+  return out;
+}
+
+/// Points along every segment at most `step` apart, ends included.
+std::vector<P2> samples(const std::vector<Segment>& segs, double step) {
   std::vector<P2> out;
-  for (const Polyline& l : lines) {
-    if (l.empty()) continue;
-    out.push_back(l[0]);
-    for (size_t i = 1; i < l.size(); ++i) {
-      P2 a = l[i - 1], b = l[i];
-      double len = distance(a, b);
-      int n = static_cast<int>(std::min(std::ceil(len / step), 1e7));
-      for (int k = 1; k <= n; ++k) {
-        double t = static_cast<double>(k) / n;
-        out.push_back({a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t});
-      }
+  for (const Segment& s : segs) {
+    P2 a = s.a, b = s.b;
+    out.push_back(a);
+    double len = distance(a, b);
+    int n = static_cast<int>(std::min(std::ceil(len / step), 1e7));
+    for (int k = 1; k <= n; ++k) {
+      double t = static_cast<double>(k) / n;
+      out.push_back({a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t});
     }
   }
   return out;
@@ -94,9 +122,11 @@ bool empty(const Polylines& lines) {
 
 DirectedDistance directedHausdorff(const Polylines& a, const Polylines& b, double step) {
   DirectedDistance result;
-  std::vector<P2> points = samples(a, step > 0 ? step : 0.5);
+  // A trail retraced many times (a program that loops until its step limit) is compared once:
+  // repeated segments add no point to either side.
+  std::vector<P2> points = samples(distinctSegments(a), step > 0 ? step : 0.5);
   if (points.empty()) return result;
-  std::vector<Segment> segs = segments(b);
+  std::vector<Segment> segs = distinctSegments(b);
   if (segs.empty()) return {kInf, points[0]};
   // Visit the samples in a scattered order: once a far point sets the running maximum, most
   // other samples find a segment nearer than it at once and stop early (Taha and Hanbury's

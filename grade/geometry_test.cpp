@@ -1,6 +1,7 @@
 #include "geometry.h"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -79,6 +80,24 @@ TEST_CASE("Hausdorff distance agrees with brute force on random trails", "[grade
     // Both sample the segments; 0.5 px steps on one side, 400 per segment on the other.
     CHECK(fast == Approx(slow).margin(0.8));
   }
+}
+
+TEST_CASE("Hausdorff distance of a trail retraced lap after lap is that of one lap",
+          "[grade][geometry]") {
+  // 2,000 laps of the square, each point off by a rounding error as a turning robot's would be,
+  // some laps driven the other way round: the same distances as the single square.
+  Polylines laps{{}};
+  for (int lap = 0; lap < 2000; ++lap) {
+    const double drift = (lap % 7) * 1e-9;
+    Polyline one = kSquare[0];
+    if (lap % 3 == 0) std::reverse(one.begin(), one.end());
+    for (const P2& p : one) laps[0].push_back({p.x + drift, p.y - drift});
+  }
+  CHECK(hausdorff(laps, kSquare).distance == Approx(0).margin(1e-6));
+  Polylines three{{{400, 300}, {400, 180}, {520, 180}, {520, 300}}};
+  CHECK(hausdorff(laps, three).distance == Approx(hausdorff(kSquare, three).distance).margin(1e-6));
+  Polylines shifted{{{410, 300}, {410, 180}, {530, 180}, {530, 300}, {410, 300}}};
+  CHECK(hausdorff(shifted, laps).distance == Approx(hausdorff(shifted, kSquare).distance).margin(1e-6));
 }
 
 TEST_CASE("regions", "[grade][geometry]") {
