@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <span>
 #include <string_view>
 
 #include "robot/robot_sim.h"
@@ -102,7 +103,7 @@ int blockOf(int p, int n, int size) {
 
 /// Tallies one block of the screen. Runs of equal pixels on a row are counted at once, since
 /// drawings are mostly long runs of one colour.
-Tally tallyBlock(const std::vector<Colour>& pixels, Colour background, Range xs, Range ys) {
+Tally tallyBlock(std::span<const Colour> pixels, Colour background, Range xs, Range ys) {
   Tally t;
   t.pixels = static_cast<uint32_t>((xs.last - xs.first) * (ys.last - ys.first));
   for (int y = ys.first; y < ys.last; ++y) {
@@ -181,7 +182,7 @@ std::string cellCharacter(unsigned char c) {
 }
 
 void overlayText(ArenaFrame& frame, const std::vector<DrawOp>& ops,
-                 const std::vector<Colour>& pixels, Colour background) {
+                 std::span<const Colour> pixels, Colour background) {
   if (frame.cols <= 0 || frame.rows <= 0) return;
   size_t from = ops.size();
   while (from > 0 && ops.size() - from < kTextLookBack) {
@@ -250,19 +251,19 @@ void overlayText(ArenaFrame& frame, const std::vector<DrawOp>& ops,
 
 }  // namespace
 
-ArenaFrame renderArena(const std::vector<Colour>& screenPixels, Colour background, const RobotView& robot,
+ArenaFrame renderArena(const Pixels& screenPixels, Colour background, const RobotView& robot,
                        const ArenaOptions& options) {
   // The robot's image (robot_image.h) is drawn into a copy of the screen at scale 1, so its
   // ring and heading line fill cells like any drawing; its heading glyph goes on top at the end.
   const RobotImage robotImage(robot);
-  std::vector<Colour> withRobot;
+  std::vector<Colour> withRobot;  // heap memory: made again for every frame (screen_memory.h)
   if (!robotImage.empty() && screenPixels.size() >= static_cast<size_t>(kScreenW) * kScreenH) {
-    withRobot = screenPixels;
+    withRobot.assign(screenPixels.begin(), screenPixels.end());
     robotImage.rasterize(1, kScreenW, kScreenH, [&](int x, int y) {
       withRobot[static_cast<size_t>(y) * kScreenW + static_cast<size_t>(x)] = robot.colour;
     });
   }
-  const std::vector<Colour>& pixels = withRobot.empty() ? screenPixels : withRobot;
+  const std::span<const Colour> pixels = withRobot.empty() ? std::span<const Colour>(screenPixels) : std::span<const Colour>(withRobot);
   ArenaFrame frame;
   frame.cols = std::max(options.cols, 0);
   frame.rows = std::max(options.rows, 0);

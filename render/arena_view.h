@@ -54,7 +54,7 @@ constexpr double kReadableCells = 0.75;
 /// Scales the 800 x 600 screen (`pixels`, row-major colour numbers) into cols x rows cells with
 /// the robot's image (its 3-pixel ring and heading line, robot_image.h) drawn in, and puts a
 /// glyph showing its heading in the cell of its centre.
-ArenaFrame renderArena(const std::vector<Colour>& pixels, Colour background, const RobotView& robot,
+ArenaFrame renderArena(const Pixels& pixels, Colour background, const RobotView& robot,
                        const ArenaOptions& options);
 
 /// The frame's characters as text: one line per row, each ending in "\n".

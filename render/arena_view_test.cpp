@@ -99,7 +99,7 @@ TEST_CASE("renderArena: golden frames of small programs in every mode", "[render
 }
 
 TEST_CASE("renderArena: a frame has rows * cols cells and frameText one line per row", "[render][arena]") {
-  std::vector<Colour> screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
+  Pixels screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
   ArenaOptions opts;
   opts.cols = 7;
   opts.rows = 3;
@@ -144,7 +144,7 @@ TEST_CASE("renderArena: density chooses the ASCII glyph", "[render][arena]") {
 }
 
 TEST_CASE("renderArena: the foreground is the block's dominant colour", "[render][arena]") {
-  std::vector<Colour> screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
+  Pixels screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
   // The top-left cell of a 100 x 37 grid is 8 x 16 pixels: 40 red pixels, 8 blue ones.
   for (int y = 0; y < 5; ++y)
     for (int x = 0; x < 8; ++x) screen[static_cast<size_t>(y) * Canvas::kWidth + x] = colours::kRed;
@@ -173,7 +173,7 @@ TEST_CASE("renderArena: the foreground is the block's dominant colour", "[render
 }
 
 TEST_CASE("renderArena: half blocks show upper, lower and full cells", "[render][arena]") {
-  std::vector<Colour> screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
+  Pixels screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
   auto fill = [&](int x0, int y0, int x1, int y1, Colour c) {
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) screen[static_cast<size_t>(y) * Canvas::kWidth + x] = c;
@@ -195,7 +195,7 @@ TEST_CASE("renderArena: half blocks show upper, lower and full cells", "[render]
 }
 
 TEST_CASE("renderArena: the robot is one glyph showing its heading", "[render][arena]") {
-  std::vector<Colour> screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
+  Pixels screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
   RobotView robot;
   robot.visible = true;
   robot.x = 400;

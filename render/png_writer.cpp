@@ -23,7 +23,7 @@ constexpr int kScreenH = Canvas::kHeight;
 
 }  // namespace
 
-RgbImage screenImage(const std::vector<Colour>& pixels, int scale) {
+RgbImage screenImage(const Pixels& pixels, int scale) {
   scale = std::clamp(scale, 1, kMaxScale);
   RgbImage image;
   image.width = kScreenW * scale;
@@ -63,7 +63,7 @@ void drawRobot(RgbImage& image, const RobotView& robot, int scale) {
                   [&](int x, int y) { image.set(x, y, colour); });
 }
 
-RgbImage composeImage(const std::vector<Colour>& pixels, const RobotView& robot, int scale) {
+RgbImage composeImage(const Pixels& pixels, const RobotView& robot, int scale) {
   RgbImage image = screenImage(pixels, scale);
   drawRobot(image, robot, scale);
   return image;

@@ -38,7 +38,7 @@ constexpr int kMaxScale = 8;
 
 /// The 800 x 600 screen (`pixels`: row-major colour numbers) scaled by `scale` (1..kMaxScale,
 /// clamped), nearest neighbour, without the robot.
-RgbImage screenImage(const std::vector<Colour>& pixels, int scale);
+RgbImage screenImage(const Pixels& pixels, int scale);
 
 /// Draws the robot onto an image of the screen made with `scale`: a circle outline 3 screen
 /// pixels thick just inside its rim and a line as thick from its centre to the rim in the
@@ -47,7 +47,7 @@ RgbImage screenImage(const std::vector<Colour>& pixels, int scale);
 void drawRobot(RgbImage& image, const RobotView& robot, int scale);
 
 /// screenImage() with drawRobot() on top: the picture `rb render` writes.
-RgbImage composeImage(const std::vector<Colour>& pixels, const RobotView& robot, int scale);
+RgbImage composeImage(const Pixels& pixels, const RobotView& robot, int scale);
 
 /// The image as the bytes of a PNG file (8-bit RGB, no time stamp, so the same image always
 /// gives the same bytes). Throws std::runtime_error when libpng fails (out of memory).

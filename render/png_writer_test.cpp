@@ -106,7 +106,7 @@ TEST_CASE("png: Figure 1.7 draws a green square with 4-pixel sides", "[render][p
 }
 
 TEST_CASE("png: the robot's heading line follows headingVector (0 up, clockwise)", "[render][png]") {
-  std::vector<Colour> screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
+  Pixels screen(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, colours::kWhite);
   RobotView robot;
   robot.visible = true;
   robot.x = 200;
@@ -132,7 +132,7 @@ TEST_CASE("png: the robot's heading line follows headingVector (0 up, clockwise)
 
 TEST_CASE("png: --scale 2 doubles the picture, nearest neighbour", "[render][png]") {
   auto run = runFigure17();
-  const std::vector<Colour>& pixels = run->canvas().pixels();
+  const Pixels& pixels = run->canvas().pixels();
   RgbImage one = screenImage(pixels, 1);
   RgbImage two = screenImage(pixels, 2);
   REQUIRE(two.width == 1600);
@@ -169,7 +169,7 @@ TEST_CASE("png: the same screen always encodes to the same bytes", "[render][png
   const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   CHECK(std::equal(signature, signature + 8, a.begin()));
   // A screen full of different colours needs more than the first guess of the buffer size.
-  std::vector<Colour> noise(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight);
+  Pixels noise(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight);
   uint32_t state = 12345;
   for (Colour& c : noise) {
     state = state * 1664525u + 1013904223u;
@@ -185,7 +185,7 @@ TEST_CASE("png: the same screen always encodes to the same bytes", "[render][png
 }
 
 TEST_CASE("png: write and read errors name the file", "[render][png]") {
-  RgbImage img = screenImage(std::vector<Colour>(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, 0), 1);
+  RgbImage img = screenImage(Pixels(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight, 0), 1);
   std::string error;
   CHECK_FALSE(writePngFile("/nonexistent-rb-dir/out.png", img, error));
   CHECK_THAT(error, Catch::Contains("/nonexistent-rb-dir/out.png"));

@@ -23,7 +23,7 @@ bool needsRaster(const std::vector<DrawOp>& ops);
 /// `shown`, when given, is what is shown instead of the canvas (flip is on: the screen at the last
 /// flip), embedded as pixels.
 std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
-                      const std::vector<Colour>* shown = nullptr);
+                      const Pixels* shown = nullptr);
 
 /// Standard base64 with padding (RFC 4648), for data: URLs.
 std::string base64Encode(const std::vector<uint8_t>& bytes);

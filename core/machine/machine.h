@@ -112,10 +112,10 @@ class Machine {
   // flip on/off: while on, what is shown of the screen (a live view, rb render's picture) is
   // the screen as it was at the last flip.
   bool flipMode = false;
-  std::vector<Colour> flipped;  ///< the screen at the last flip
+  Pixels flipped;  ///< the screen at the last flip
   /// The screen's pixels as a viewer sees them: the last flip's while flip is on, else the
   /// canvas itself.
-  const std::vector<Colour>& shownScreen() const {
+  const Pixels& shownScreen() const {
     return flipMode && !flipped.empty() ? flipped : canvas_.pixels();
   }
   /// True while what is shown is not the canvas (flip is on and the canvas changed since).

@@ -6,27 +6,10 @@
 #include <numbers>
 #include <cstdint>
 #include <cstdlib>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace rb {
 
 namespace {
-
-/// Asks the kernel to map the pages of [p, p + bytes) at once, before they are written: one
-/// system call instead of a page fault for every 4 KiB (about 470 for the screen), which costs
-/// more than the rest of a short program's run on some virtual machines (about 10 us a fault).
-/// Nothing happens where the kernel cannot (before Linux 5.14, other systems): the pages then
-/// fault as usual.
-void prefault([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-  const auto page = static_cast<uintptr_t>(4096);
-  const uintptr_t from = (reinterpret_cast<uintptr_t>(p) + page - 1) & ~(page - 1);
-  const uintptr_t to = (reinterpret_cast<uintptr_t>(p) + bytes) & ~(page - 1);
-  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
-#endif
-}
 // RobotBASIC 4.2's colours. Confirmed by screenshots: Blue, Cyan, Red, Gray, LightRed. The
 // others are rb's choice by the same pattern: a dark colour has each channel at 0, 128 or 255,
 // its light twin (colour + 8) adds 128 to every channel, capped at 255; Brown and Yellow are the
@@ -79,8 +62,6 @@ Canvas::Canvas() = default;
 
 void Canvas::makePixels() const {
   const size_t n = static_cast<size_t>(kWidth) * kHeight;
-  pixels_.reserve(n);
-  prefault(pixels_.data(), n * sizeof(Colour));
   pixels_.assign(n, background_);
 }
 

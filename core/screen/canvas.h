@@ -17,11 +17,14 @@
 #include <vector>
 
 #include "screen/font.h"
+#include "screen/screen_memory.h"
 
 namespace rb {
 
 /// A colour number: 0..15 the palette, otherwise r + 256*g + 65536*b as RGB() makes it.
 using Colour = uint32_t;
+/// A whole screen of colours, row by row (see screen_memory.h for where its memory comes from).
+using Pixels = std::vector<Colour, ScreenAllocator<Colour>>;
 
 namespace colours {
 constexpr Colour kBlack = 0, kBlue = 1, kGreen = 2, kCyan = 3, kRed = 4, kMagenta = 5,
@@ -141,7 +144,7 @@ class Canvas {
     return pixels_.empty() ? background_ : pixels_[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)];
   }
   /// Every pixel, row by row (the screen's memory is made on first use: see pixels_).
-  const std::vector<Colour>& pixels() const { return materialize(); }
+  const Pixels& pixels() const { return materialize(); }
 
   // ---- drawing state (setColor, lineWidth, gotoXY)
   Colour foreground = colours::kBlack;
@@ -291,13 +294,13 @@ class Canvas {
   /// The screen, row by row; empty until something is drawn or the pixels are asked for, and
   /// then every pixel is background_. A program that never draws never touches the 1.9 MB
   /// (mapping those pages cost more than the rest of an empty program's start-up).
-  mutable std::vector<Colour> pixels_;
-  std::vector<Colour>& materialize() const {
+  mutable Pixels pixels_;
+  Pixels& materialize() const {
     if (pixels_.empty()) [[unlikely]] makePixels();
     return pixels_;
   }
   void makePixels() const;
-  std::vector<Colour> saved_;
+  Pixels saved_;
   Colour background_ = colours::kWhite;
   std::vector<Colour> invisible_;
   uint64_t obstacleVersion_ = 1;

@@ -343,13 +343,13 @@ TEST_CASE("canvas: the screen made on first use looks the same as one made at on
   Canvas fresh;
   CHECK(fresh.at(0, 0) == colours::kWhite);
   CHECK(fresh.at(799, 599) == colours::kWhite);
-  CHECK(fresh.pixels() == std::vector<Colour>(n, colours::kWhite));
+  CHECK(fresh.pixels() == Pixels(n, colours::kWhite));
 
   // clearScr before anything is drawn: every pixel takes the new colour, read either way.
   Canvas cleared;
   cleared.clear(colours::kRed);
   CHECK(cleared.at(400, 300) == colours::kRed);
-  CHECK(cleared.pixels() == std::vector<Colour>(n, colours::kRed));
+  CHECK(cleared.pixels() == Pixels(n, colours::kRed));
   cleared.setPixel(1, 1, colours::kBlue);
   CHECK(cleared.at(1, 1) == colours::kBlue);
   CHECK(cleared.at(2, 1) == colours::kRed);
@@ -360,7 +360,7 @@ TEST_CASE("canvas: the screen made on first use looks the same as one made at on
   saved.rectangle({10, 10}, {50, 50}, 1, colours::kBlack, colours::kBlack);
   CHECK(saved.at(20, 20) == colours::kBlack);
   saved.restore();
-  CHECK(saved.pixels() == std::vector<Colour>(n, colours::kWhite));
+  CHECK(saved.pixels() == Pixels(n, colours::kWhite));
 }
 
 TEST_CASE("canvas: text redrawn over itself paints only what changed, with the same pixels",
