@@ -1,5 +1,6 @@
 #include "assignment.h"
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <toml++/toml.h>
@@ -57,8 +58,12 @@ void onlyKeys(const toml::table& table, const std::vector<std::string_view>& all
   }
 }
 
+/// A number, finite: TOML's nan and inf mean nothing as a coordinate, tolerance or time.
 double number(const toml::node& node, const std::string& what) {
-  if (std::optional<double> v = node.value<double>(); v && node.is_number()) return *v;
+  if (std::optional<double> v = node.value<double>(); v && node.is_number()) {
+    if (std::isfinite(*v)) return *v;
+    throw Bad{what + " must be a finite number, not " + std::string(std::isnan(*v) ? "nan" : "inf"), node.source()};
+  }
   throw Bad{what + " must be a number", node.source()};
 }
 

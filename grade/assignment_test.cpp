@@ -130,6 +130,9 @@ TEST_CASE("mistakes in an assignment file say where and what", "[grade][assignme
   CHECK(errorOf("[run]\nseed = [1]\n") == "2:1: unknown key 'seed' in [run]; did you mean 'seeds'?");
   CHECK(errorOf("[run]\nmax-steps = -1\n").find("max-steps must be a whole number") != std::string::npos);
   CHECK(errorOf("[[check]]\nkind = \"ends-in\"\nrect = [1, 2, 3]\n") == "3:8: rect must be a list of 4 numbers");
+  CHECK(errorOf("[[check]]\nkind = \"trail\"\npath = [[nan, 300], [400, 180]]\n") ==
+        "3:10: each point of path's entries must be a finite number, not nan");
+  CHECK(errorOf("[run]\ntimeout = inf\n") == "2:11: timeout must be a finite number, not inf");
   CHECK(errorOf("[[check]]\nkind = \"screen\"\nreference = \"nope.png\"\n").find("no such file") != std::string::npos);
   CHECK(errorOf("[[check]]\nkind = \"solution-screen\"\n").find("need the reference solution") != std::string::npos);
   CHECK(errorOf("[[check]]\nkind = \"solution-screen\"\ntolerance = 5\nsolution = \"x\"\n")

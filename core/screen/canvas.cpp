@@ -61,8 +61,7 @@ PixelBox& ObstacleChanges::boxForFar(int x, int y) {
 Canvas::Canvas() = default;
 
 void Canvas::makePixels() const {
-  const size_t n = static_cast<size_t>(kWidth) * kHeight;
-  pixels_.assign(n, background_);
+  pixels_.assign(static_cast<size_t>(kWidth) * kHeight, background_);
 }
 
 void Canvas::push(DrawOp op) {
