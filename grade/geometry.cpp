@@ -120,13 +120,12 @@ bool empty(const Polylines& lines) {
   return std::all_of(lines.begin(), lines.end(), [](const Polyline& l) { return l.empty(); });
 }
 
-DirectedDistance directedHausdorff(const Polylines& a, const Polylines& b, double step) {
+namespace {
+/// directedHausdorff on the distinct segments of both sides (distinctSegments).
+DirectedDistance directed(const std::vector<Segment>& a, const std::vector<Segment>& segs, double step) {
   DirectedDistance result;
-  // A trail retraced many times (a program that loops until its step limit) is compared once:
-  // repeated segments add no point to either side.
-  std::vector<P2> points = samples(distinctSegments(a), step > 0 ? step : 0.5);
+  std::vector<P2> points = samples(a, step > 0 ? step : 0.5);
   if (points.empty()) return result;
-  std::vector<Segment> segs = distinctSegments(b);
   if (segs.empty()) return {kInf, points[0]};
   // Visit the samples in a scattered order: once a far point sets the running maximum, most
   // other samples find a segment nearer than it at once and stop early (Taha and Hanbury's
@@ -151,10 +150,18 @@ DirectedDistance directedHausdorff(const Polylines& a, const Polylines& b, doubl
   result.distance = worst;
   return result;
 }
+}  // namespace
+
+// A trail retraced many times (a program that loops until its step limit) is compared once:
+// repeated segments add no point to either side. Each side's distinct segments are found once.
+DirectedDistance directedHausdorff(const Polylines& a, const Polylines& b, double step) {
+  return directed(distinctSegments(a), distinctSegments(b), step);
+}
 
 HausdorffDistance hausdorff(const Polylines& a, const Polylines& b, double step) {
   if (empty(a) && empty(b)) return {};
-  DirectedDistance ab = directedHausdorff(a, b, step), ba = directedHausdorff(b, a, step);
+  const std::vector<Segment> sa = distinctSegments(a), sb = distinctSegments(b);
+  DirectedDistance ab = directed(sa, sb, step), ba = directed(sb, sa, step);
   if (empty(a)) return {kInf, ba.worst, false};
   if (ab.distance >= ba.distance) return {ab.distance, ab.worst, true};
   return {ba.distance, ba.worst, false};
