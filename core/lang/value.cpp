@@ -9,6 +9,16 @@ namespace rb {
 
 void Value::freeStr(StrObj* s) { delete s; }
 void Value::freeArr(ArrObj* a) { delete a; }
+__attribute__((cold, noinline)) void Value::replaceHeap(int64_t v) {
+  release();
+  type_ = VType::Int;
+  i_ = v;
+}
+__attribute__((cold, noinline)) void Value::replaceHeap(double v) {
+  release();
+  type_ = VType::Num;
+  d_ = v;
+}
 
 Value Value::string(std::string s) {
   Value r;

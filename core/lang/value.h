@@ -85,9 +85,20 @@ class Value {
   std::string* uniqueStr() { return type_ == VType::Str && s_->refs == 1 ? &s_->s : nullptr; }
   ArrObj& arr() const { return *a_; }
 
-  // Fast in-place setters used by the interpreter's hot paths.
-  void setInt(int64_t v) { if (isHeap()) release(); type_ = VType::Int; i_ = v; }
-  void setNum(double v) { if (isHeap()) release(); type_ = VType::Num; d_ = v; }
+  // Fast in-place setters used by the interpreter's hot paths. A string or array being replaced
+  // is released out of line, so that the new number needs no register that survives a call: a
+  // double kept across the possible release went through a general register on its way to
+  // memory, which put a transfer on every arithmetic result's path.
+  void setInt(int64_t v) {
+    if (isHeap()) [[unlikely]] return replaceHeap(v);
+    type_ = VType::Int;
+    i_ = v;
+  }
+  void setNum(double v) {
+    if (isHeap()) [[unlikely]] return replaceHeap(v);
+    type_ = VType::Num;
+    d_ = v;
+  }
   void clear() { release(); type_ = VType::Undef; i_ = 0; }
   /// Copies a number into a value that holds no string or array (nothing to release).
   void setNumeric(const Value& o) { type_ = o.type_; i_ = o.i_; }
@@ -114,6 +125,9 @@ class Value {
   }
   static void freeStr(StrObj* s);
   static void freeArr(ArrObj* a);
+  /// setInt and setNum on a value that holds a string or an array.
+  void replaceHeap(int64_t v);
+  void replaceHeap(double v);
 
   VType type_;
   union {
