@@ -145,6 +145,32 @@ std::vector<std::string> where(const LoadedFile& f) {
 
 }  // namespace
 
+TEST_CASE("a program whose compact form fills several chunks reads back whole", "[check]") {
+  // Chunks grow on the heap to 512 KiB, then are 2 MiB of large memory each: this program's
+  // statements take several of both, and each must read back as parsed, across every boundary.
+  std::string text;
+  for (int i = 0; i < 60000; ++i) {
+    text += "v" + std::to_string(i % 97) + " = " + std::to_string(i) + " * w + sqrt(" + std::to_string(i % 13) + ")\n";
+    if (i % 3 == 0) text += "if v1 > " + std::to_string(i) + " then print \"line " + std::to_string(i) + "\", v2\n";
+  }
+  std::string file = writeProgram("many_chunks.bas", text);
+  LoadedFile trees = loadFile(file, CompileOptions{}, false);
+  REQUIRE(trees.program);
+  const std::vector<ast::Stmt*>& stmts = trees.program->stmts;
+  ast::CompactStmts store(trees.program->sources);
+  for (const ast::Stmt* s : stmts) store.add(*s);
+  CHECK(store.bytes() > (size_t{3} << 20));
+  ast::Arena scratch;
+  ast::StmtCursor c(store, scratch);
+  size_t differ = 0;
+  for (const ast::Stmt* want : stmts) {
+    scratch.reset();
+    if (!sameStmt(c.next(), want)) ++differ;
+  }
+  CHECK(differ == 0);
+  CHECK(c.done());
+}
+
 TEST_CASE("rb check's compact walk still sees what lies ahead and what is still open", "[check]") {
   // Forward references need what loading gathered: a sub called before its definition (its
   // parameter count), a label defined after its gosub, an array dimmed after the sub that

@@ -256,7 +256,7 @@ ArenaFrame renderArena(const Pixels& screenPixels, Colour background, const Robo
   // The robot's image (robot_image.h) is drawn into a copy of the screen at scale 1, so its
   // ring and heading line fill cells like any drawing; its heading glyph goes on top at the end.
   const RobotImage robotImage(robot);
-  std::vector<Colour> withRobot;  // heap memory: made again for every frame (screen_memory.h)
+  std::vector<Colour> withRobot;  // heap memory: made again for every frame (base/large_memory.h)
   if (!robotImage.empty() && screenPixels.size() >= static_cast<size_t>(kScreenW) * kScreenH) {
     withRobot.assign(screenPixels.begin(), screenPixels.end());
     robotImage.rasterize(1, kScreenW, kScreenH, [&](int x, int y) {

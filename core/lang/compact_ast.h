@@ -24,10 +24,16 @@ class CompactStmts {
 
  private:
   friend class StmtCursor;
+  /// A block of encoded statements; the big ones are large memory (base/large_memory.h).
   struct Chunk {
-    std::unique_ptr<uint8_t[]> data;
+    explicit Chunk(size_t capacity);
+    Chunk(Chunk&& o) noexcept : data(o.data), size(o.size), cap(o.cap) { o.data = nullptr; }
+    Chunk(const Chunk&) = delete;
+    Chunk& operator=(const Chunk&) = delete;
+    ~Chunk();
+    uint8_t* data;
     size_t size = 0;
-    size_t cap = 0;
+    size_t cap;
   };
   const SourceSet& sources_;
   std::vector<Chunk> chunks_;

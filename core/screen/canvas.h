@@ -17,14 +17,14 @@
 #include <vector>
 
 #include "screen/font.h"
-#include "screen/screen_memory.h"
+#include "base/large_memory.h"
 
 namespace rb {
 
 /// A colour number: 0..15 the palette, otherwise r + 256*g + 65536*b as RGB() makes it.
 using Colour = uint32_t;
-/// A whole screen of colours, row by row (see screen_memory.h for where its memory comes from).
-using Pixels = std::vector<Colour, ScreenAllocator<Colour>>;
+/// A whole screen of colours, row by row (see base/large_memory.h for where its memory comes from).
+using Pixels = std::vector<Colour, LargeAllocator<Colour>>;
 
 namespace colours {
 constexpr Colour kBlack = 0, kBlue = 1, kGreen = 2, kCyan = 3, kRed = 4, kMagenta = 5,

@@ -457,3 +457,18 @@ TEST_CASE("canvas: a long text starting far to the left shows its end", "[canvas
   CHECK(samePixels(whole, tail));
   CHECK(std::count(whole.pixels().begin(), whole.pixels().end(), colours::kBlack) > 1000);
 }
+
+TEST_CASE("canvas: a screen of pixels (large memory) copies, compares and grows like a vector", "[screen]") {
+  const size_t n = static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight;
+  Pixels screen(n, colours::kWhite);
+  screen[n - 1] = colours::kRed;
+  Pixels copy = screen;
+  CHECK(copy == screen);
+  copy[0] = colours::kBlue;
+  CHECK(copy != screen);
+  copy.resize(2 * n, colours::kGreen);  // moves to a larger block
+  CHECK(copy[n - 1] == colours::kRed);
+  CHECK(copy[2 * n - 1] == colours::kGreen);
+  copy = screen;  // back to the screen's size, in the block it has
+  CHECK(copy == screen);
+}

@@ -1,33 +1,31 @@
-#include "screen/screen_memory.h"
+#include "base/large_memory.h"
 
 #include <cstdint>
 #include <new>
 
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)
-#define RB_SCREEN_MEMORY_PLAIN 1
+#define RB_LARGE_MEMORY_PLAIN 1
 #endif
 #endif
 #if defined(__SANITIZE_ADDRESS__)
-#define RB_SCREEN_MEMORY_PLAIN 1
+#define RB_LARGE_MEMORY_PLAIN 1
 #endif
-#if defined(__linux__) && !defined(RB_SCREEN_MEMORY_PLAIN)
+#if defined(__linux__) && !defined(RB_LARGE_MEMORY_PLAIN)
 #include <sys/mman.h>
-#define RB_SCREEN_MEMORY_MAPPED 1
+#define RB_LARGE_MEMORY_MAPPED 1
 #endif
 
 namespace rb {
 
-#if defined(RB_SCREEN_MEMORY_MAPPED)
+#if defined(RB_LARGE_MEMORY_MAPPED)
 namespace {
 constexpr std::size_t kHuge = std::size_t{2} << 20;  // the x86-64 and arm64 huge page
-/// Smaller blocks come from the heap: mapping pays only for about a screen.
-constexpr std::size_t kMappedFrom = std::size_t{1} << 20;
 std::size_t mappedSize(std::size_t bytes) { return (bytes + kHuge - 1) & ~(kHuge - 1); }
 }  // namespace
 
-void* allocateScreenMemory(std::size_t bytes) {
-  if (bytes < kMappedFrom) return ::operator new(bytes);
+void* allocateLarge(std::size_t bytes) {
+  if (bytes < kLargeBlock) return ::operator new(bytes);
   const std::size_t size = mappedSize(bytes);
   // Map one huge page more than needed and give back what lies outside the aligned block.
   void* raw = mmap(nullptr, size + kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -47,16 +45,16 @@ void* allocateScreenMemory(std::size_t bytes) {
   return p;
 }
 
-void freeScreenMemory(void* p, std::size_t bytes) noexcept {
-  if (bytes < kMappedFrom) {
+void freeLarge(void* p, std::size_t bytes) noexcept {
+  if (bytes < kLargeBlock) {
     ::operator delete(p);
     return;
   }
   munmap(p, mappedSize(bytes));
 }
 #else
-void* allocateScreenMemory(std::size_t bytes) { return ::operator new(bytes); }
-void freeScreenMemory(void* p, std::size_t) noexcept { ::operator delete(p); }
+void* allocateLarge(std::size_t bytes) { return ::operator new(bytes); }
+void freeLarge(void* p, std::size_t) noexcept { ::operator delete(p); }
 #endif
 
 }  // namespace rb

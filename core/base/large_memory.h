@@ -1,0 +1,36 @@
+#pragma once
+// Memory for large blocks that are filled soon after they are made: whole screens (the canvas,
+// its saveScr copy, a flipped frame: 480,000 pixels, 1.9 MB each) and the chunks of a big
+// program's compact statements (rb check). On Linux a block of 1 MiB or more is mapped in
+// 2 MiB huge pages where the kernel allows it (transparent huge pages in "madvise" or "always"
+// mode), with its pages mapped at once: a fresh screen then costs one page fault instead of
+// about 470, which on some virtual machines took longer than the rest of a short program's
+// run. Smaller blocks, every block elsewhere, and every block in the sanitizer builds (so that
+// AddressSanitizer still guards them) are ordinary heap memory.
+
+#include <cstddef>
+
+namespace rb {
+
+/// Blocks of at least this many bytes are the ones mapped in huge pages (where they are).
+inline constexpr std::size_t kLargeBlock = std::size_t{1} << 20;
+
+/// At least `bytes` of memory, aligned for any fundamental type; throws std::bad_alloc.
+void* allocateLarge(std::size_t bytes);
+/// Gives back a block from allocateLarge of the same size.
+void freeLarge(void* p, std::size_t bytes) noexcept;
+
+/// An allocator for containers whose storage is large (a screen of pixels).
+template <typename T>
+struct LargeAllocator {
+  using value_type = T;
+  LargeAllocator() noexcept = default;
+  template <typename U>
+  LargeAllocator(const LargeAllocator<U>&) noexcept {}
+  T* allocate(std::size_t n) { return static_cast<T*>(allocateLarge(n * sizeof(T))); }
+  void deallocate(T* p, std::size_t n) noexcept { freeLarge(p, n * sizeof(T)); }
+  template <typename U>
+  friend bool operator==(const LargeAllocator&, const LargeAllocator<U>&) noexcept { return true; }
+};
+
+}  // namespace rb
