@@ -8,6 +8,8 @@
 #include <iostream>
 #include <system_error>
 
+#include "base/large_memory.h"
+
 namespace fs = std::filesystem;
 
 namespace rb::cli {
@@ -59,6 +61,8 @@ namespace {
 std::optional<std::string> readLimited(std::istream& in, std::string* why, uintmax_t expected = 0) {
   std::string text;
   if (expected > 0 && expected <= kMaxInputBytes) {
+    text.reserve(static_cast<size_t>(expected));
+    prepareLarge(text.data(), static_cast<size_t>(expected));  // a big file: its pages at once
     text.resize(static_cast<size_t>(expected));
     in.read(text.data(), static_cast<std::streamsize>(expected));
     text.resize(static_cast<size_t>(in.gcount()));  // shorter if the file shrank meanwhile

@@ -45,6 +45,22 @@ void* allocateLarge(std::size_t bytes) {
   return p;
 }
 
+void prepareLarge(void* p, std::size_t bytes) noexcept {
+  if (bytes < kLargeBlock) return;
+  constexpr std::uintptr_t kPage = 4096;
+  const auto start = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t end = start + bytes;
+  // Advice only: a range the kernel refuses is left as it was.
+#if defined(MADV_HUGEPAGE)
+  const std::uintptr_t hugeStart = (start + kHuge - 1) & ~(kHuge - 1), hugeEnd = end & ~(kHuge - 1);
+  if (hugeEnd > hugeStart) madvise(reinterpret_cast<void*>(hugeStart), hugeEnd - hugeStart, MADV_HUGEPAGE);
+#endif
+#if defined(MADV_POPULATE_WRITE)
+  const std::uintptr_t pageStart = (start + kPage - 1) & ~(kPage - 1), pageEnd = end & ~(kPage - 1);
+  if (pageEnd > pageStart) madvise(reinterpret_cast<void*>(pageStart), pageEnd - pageStart, MADV_POPULATE_WRITE);
+#endif
+}
+
 void freeLarge(void* p, std::size_t bytes) noexcept {
   if (bytes < kLargeBlock) {
     ::operator delete(p);
@@ -55,6 +71,7 @@ void freeLarge(void* p, std::size_t bytes) noexcept {
 #else
 void* allocateLarge(std::size_t bytes) { return ::operator new(bytes); }
 void freeLarge(void* p, std::size_t) noexcept { ::operator delete(p); }
+void prepareLarge(void*, std::size_t) noexcept {}
 #endif
 
 }  // namespace rb

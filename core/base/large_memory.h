@@ -20,6 +20,12 @@ void* allocateLarge(std::size_t bytes);
 /// Gives back a block from allocateLarge of the same size.
 void freeLarge(void* p, std::size_t bytes) noexcept;
 
+/// For a block of ordinary memory (a std::string's or std::vector's) that is about to be
+/// written whole: where large memory is mapped, asks for the huge pages that fit inside it and
+/// maps its pages at once; nothing for a block under kLargeBlock, or elsewhere. Only advice:
+/// the memory is the same, however the system answers.
+void prepareLarge(void* p, std::size_t bytes) noexcept;
+
 /// An allocator for containers whose storage is large (a screen of pixels).
 template <typename T>
 struct LargeAllocator {

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "base/large_memory.h"
+
 namespace rb {
 
 SourceFile::SourceFile(std::string name, std::string text, SourceLoc includedFrom)
@@ -13,6 +15,7 @@ SourceFile::SourceFile(std::string name, std::string text, SourceLoc includedFro
   for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)))); ++p)
     ++lines;
   lineStarts_.reserve(lines);
+  prepareLarge(lineStarts_.data(), lines * sizeof(uint32_t));
   lineStarts_.push_back(0);
   for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)))); ++p) {
     if (p + 1 < end) lineStarts_.push_back(static_cast<uint32_t>(p + 1 - begin));
