@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "base/large_memory.h"
 
@@ -23,5 +24,21 @@ TEST_CASE("large memory: small and screen-sized blocks are writable and aligned"
     CHECK(b[bytes / 2] == 0xCD);
     freeLarge(a, bytes);
     freeLarge(b, bytes);
+  }
+}
+
+TEST_CASE("large memory: preparing a heap block keeps what it holds", "[base]") {
+  // prepareLarge is advice: whatever the system does with it (huge pages inside the block,
+  // its pages mapped at once), bytes already written stay and the rest can be written.
+  for (size_t bytes : {size_t{100}, size_t{3} << 20, (size_t{5} << 20) + 12345}) {
+    INFO(bytes << " bytes");
+    std::vector<uint8_t> block(bytes);
+    for (size_t i = 0; i < bytes / 2; ++i) block[i] = static_cast<uint8_t>(i * 7);
+    prepareLarge(block.data() + 1, bytes - 1);  // not aligned to anything
+    size_t wrong = 0;
+    for (size_t i = 0; i < bytes / 2; ++i) wrong += block[i] != static_cast<uint8_t>(i * 7);
+    CHECK(wrong == 0);
+    for (size_t i = bytes / 2; i < bytes; ++i) block[i] = static_cast<uint8_t>(i);
+    CHECK(block[bytes - 1] == static_cast<uint8_t>(bytes - 1));
   }
 }
