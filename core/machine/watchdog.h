@@ -4,12 +4,13 @@
 // Hosts own one and arm it from Host::armWatchdog; the interpreter and long built-ins read the
 // alarms (Machine::checkAlarms), so a statement that runs long still stops near the limit.
 
+#include <pthread.h>
+
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <mutex>
-#include <thread>
 
 #include "machine/host.h"
 
@@ -34,7 +35,19 @@ class Watchdog {
   void disarm();
 
  private:
-  std::thread thread_;
+  // A POSIX thread rather than a std::thread: std::thread's state is made by the caller and
+  // freed by the new thread, and that first free() makes glibc set up a second malloc arena for
+  // the thread (a 128 MiB reservation and three more system calls) in every run, short or not.
+  // This thread allocates nothing until it first samples memory, and has a small stack.
+  static void* threadMain(void* self);
+  void watch();
+
+  pthread_t thread_{};
+  bool running_ = false;
+  Clock::time_point deadline_;
+  uint64_t memoryLimit_ = 0;
+  MemorySampler memory_;
+  RunAlarms* alarms_ = nullptr;
   std::mutex mutex_;
   std::condition_variable wake_;
   bool stop_ = false;
