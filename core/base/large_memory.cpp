@@ -46,7 +46,7 @@ void* allocateLarge(std::size_t bytes) {
 }
 
 void prepareLarge(void* p, std::size_t bytes) noexcept {
-  if (bytes < kLargeBlock) return;
+  if (bytes < kPreparedFrom) return;
   constexpr std::uintptr_t kPage = 4096;
   const auto start = reinterpret_cast<std::uintptr_t>(p);
   const std::uintptr_t end = start + bytes;

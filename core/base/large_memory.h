@@ -20,10 +20,14 @@ void* allocateLarge(std::size_t bytes);
 /// Gives back a block from allocateLarge of the same size.
 void freeLarge(void* p, std::size_t bytes) noexcept;
 
+/// Blocks of at least this many bytes are the ones prepareLarge maps at once.
+inline constexpr std::size_t kPreparedFrom = std::size_t{64} << 10;
+
 /// For a block of ordinary memory (a std::string's or std::vector's) that is about to be
-/// written whole: where large memory is mapped, asks for the huge pages that fit inside it and
-/// maps its pages at once; nothing for a block under kLargeBlock, or elsewhere. Only advice:
-/// the memory is the same, however the system answers.
+/// written whole: where large memory is mapped, maps its pages at once (one call instead of a
+/// page fault for each: 16 or more of them) and asks for the huge pages that fit inside it;
+/// nothing for a block under kPreparedFrom, or elsewhere. Only advice: the memory is the same,
+/// however the system answers.
 void prepareLarge(void* p, std::size_t bytes) noexcept;
 
 /// An allocator for containers whose storage is large (a screen of pixels).

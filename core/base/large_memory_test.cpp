@@ -30,7 +30,7 @@ TEST_CASE("large memory: small and screen-sized blocks are writable and aligned"
 TEST_CASE("large memory: preparing a heap block keeps what it holds", "[base]") {
   // prepareLarge is advice: whatever the system does with it (huge pages inside the block,
   // its pages mapped at once), bytes already written stay and the rest can be written.
-  for (size_t bytes : {size_t{100}, size_t{3} << 20, (size_t{5} << 20) + 12345}) {
+  for (size_t bytes : {size_t{100}, size_t{100} << 10, size_t{3} << 20, (size_t{5} << 20) + 12345}) {
     INFO(bytes << " bytes");
     std::vector<uint8_t> block(bytes);
     for (size_t i = 0; i < bytes / 2; ++i) block[i] = static_cast<uint8_t>(i * 7);
