@@ -86,16 +86,17 @@ std::optional<std::string> readLimited(std::istream& in, std::string* why, uintm
 
 std::optional<std::string> readFile(const std::string& path, std::string* why) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) {
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::is_directory(status)) {
     if (why) *why = "it is a folder";
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    if (why) *why = fs::exists(path, ec) ? "permission denied" : "no such file";
+    if (why) *why = fs::exists(status) ? "permission denied" : "no such file";
     return std::nullopt;
   }
-  uintmax_t size = fs::is_regular_file(path, ec) ? fs::file_size(path, ec) : 0;
+  uintmax_t size = fs::is_regular_file(status) ? fs::file_size(path, ec) : 0;
   return readLimited(in, why, ec ? 0 : size);
 }
 

@@ -25,7 +25,11 @@ std::size_t mappedSize(std::size_t bytes) { return (bytes + kHuge - 1) & ~(kHuge
 }  // namespace
 
 void* allocateLarge(std::size_t bytes) {
-  if (bytes < kLargeBlock) return ::operator new(bytes);
+  if (bytes < kLargeBlock) {
+    void* p = ::operator new(bytes);
+    prepareLarge(p, bytes);  // from kPreparedFrom: its pages at once
+    return p;
+  }
   const std::size_t size = mappedSize(bytes);
   // Map one huge page more than needed and give back what lies outside the aligned block.
   void* raw = mmap(nullptr, size + kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -36,12 +40,7 @@ void* allocateLarge(std::size_t bytes) {
   const std::uintptr_t end = start + size + kHuge;
   if (end > aligned + size) munmap(reinterpret_cast<void*>(aligned + size), end - (aligned + size));
   void* p = reinterpret_cast<void*>(aligned);
-#if defined(MADV_HUGEPAGE)
-  madvise(p, size, MADV_HUGEPAGE);  // refused where huge pages are off: small pages then
-#endif
-#if defined(MADV_POPULATE_WRITE)
-  madvise(p, size, MADV_POPULATE_WRITE);  // Linux 5.14+: the pages mapped in one call
-#endif
+  prepareLarge(p, size);  // aligned to huge pages and a whole number of them: all huge
   return p;
 }
 
@@ -51,11 +50,11 @@ void prepareLarge(void* p, std::size_t bytes) noexcept {
   const auto start = reinterpret_cast<std::uintptr_t>(p);
   const std::uintptr_t end = start + bytes;
   // Advice only: a range the kernel refuses is left as it was.
-#if defined(MADV_HUGEPAGE)
+#if defined(MADV_HUGEPAGE)  // refused where huge pages are off: small pages then
   const std::uintptr_t hugeStart = (start + kHuge - 1) & ~(kHuge - 1), hugeEnd = end & ~(kHuge - 1);
   if (hugeEnd > hugeStart) madvise(reinterpret_cast<void*>(hugeStart), hugeEnd - hugeStart, MADV_HUGEPAGE);
 #endif
-#if defined(MADV_POPULATE_WRITE)
+#if defined(MADV_POPULATE_WRITE)  // Linux 5.14+: the pages mapped in one call
   const std::uintptr_t pageStart = (start + kPage - 1) & ~(kPage - 1), pageEnd = end & ~(kPage - 1);
   if (pageEnd > pageStart) madvise(reinterpret_cast<void*>(pageStart), pageEnd - pageStart, MADV_POPULATE_WRITE);
 #endif

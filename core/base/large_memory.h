@@ -14,14 +14,14 @@ namespace rb {
 
 /// Blocks of at least this many bytes are the ones mapped in huge pages (where they are).
 inline constexpr std::size_t kLargeBlock = std::size_t{1} << 20;
+/// Blocks of at least this many bytes are the ones prepareLarge maps at once.
+inline constexpr std::size_t kPreparedFrom = std::size_t{64} << 10;
 
-/// At least `bytes` of memory, aligned for any fundamental type; throws std::bad_alloc.
+/// At least `bytes` of memory, aligned for any fundamental type; throws std::bad_alloc. A block
+/// under kLargeBlock is heap memory, prepared (prepareLarge) from kPreparedFrom.
 void* allocateLarge(std::size_t bytes);
 /// Gives back a block from allocateLarge of the same size.
 void freeLarge(void* p, std::size_t bytes) noexcept;
-
-/// Blocks of at least this many bytes are the ones prepareLarge maps at once.
-inline constexpr std::size_t kPreparedFrom = std::size_t{64} << 10;
 
 /// For a block of ordinary memory (a std::string's or std::vector's) that is about to be
 /// written whole: where large memory is mapped, maps its pages at once (one call instead of a

@@ -9,9 +9,10 @@
 using namespace rb;
 
 TEST_CASE("large memory: small and screen-sized blocks are writable and aligned", "[base]") {
-  // Below 1 MiB from the heap, above it mapped (on Linux outside the sanitizer builds): every
-  // byte of each can be written and read back, and blocks do not overlap.
-  for (size_t bytes : {size_t{16}, size_t{4096}, size_t{1} << 20, size_t{1920000}, size_t{5} << 20}) {
+  // Below 1 MiB from the heap (prepared from 64 KiB), above it mapped (on Linux outside the
+  // sanitizer builds): every byte of each can be written and read back, and blocks do not
+  // overlap.
+  for (size_t bytes : {size_t{16}, size_t{4096}, size_t{100} << 10, size_t{1} << 20, size_t{1920000}, size_t{5} << 20}) {
     INFO(bytes << " bytes");
     auto* a = static_cast<uint8_t*>(allocateLarge(bytes));
     auto* b = static_cast<uint8_t*>(allocateLarge(bytes));

@@ -283,11 +283,9 @@ void CompactStmts::add(const Stmt& s) {
   ++count_;
 }
 
-// Not zeroed: only the bytes written are read. A heap chunk of some size gets its pages at once
-// too (prepareLarge): the chunks double, so at least half of each but the last is written.
-CompactStmts::Chunk::Chunk(size_t capacity) : data(static_cast<uint8_t*>(allocateLarge(capacity))), cap(capacity) {
-  if (capacity < kLargeBlock) prepareLarge(data, capacity);
-}
+// Not zeroed: only the bytes written are read. Every chunk but the smallest gets its pages at
+// once (allocateLarge): the chunks double, so at least half of each but the last is written.
+CompactStmts::Chunk::Chunk(size_t capacity) : data(static_cast<uint8_t*>(allocateLarge(capacity))), cap(capacity) {}
 
 CompactStmts::Chunk::~Chunk() {
   if (data) freeLarge(data, cap);
