@@ -118,6 +118,17 @@ def status(screen, label):
     return m.group(1) if m else None
 
 
+def output_pane(screen):
+    """The output pane's text: the lines under its "-- output" rule, left of the side panels
+    (the source pane may show the program's own text, such as its // expect: comments)."""
+    lines = screen.split("\n")
+    top = next((i for i, l in enumerate(lines) if l.startswith("-- output")), None)
+    if top is None:
+        return ""
+    width = len(lines[top].rstrip(" |+").split(" |")[0])
+    return "\n".join(l[:width] for l in lines[top + 1:])
+
+
 def arena_lines(screen):
     """The arena's rows: the lines between the box's top and bottom edges, inside the box."""
     lines = screen.split("\n")
@@ -188,7 +199,7 @@ def test_keyboard(rb):
         check(status(t, "heading") == "90.0", "heading after d:\n" + t)
         s.keys("q")
         t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
-        check("bye at 420,260" in t, "output pane:\n" + t)
+        check("bye at 420,260" in output_pane(t), "output pane:\n" + t)
         s.keys("Enter")
         check(s.exit_code() == 0, "exit status")
     finally:
@@ -201,18 +212,22 @@ def test_mouse(rb):
     try:
         t = s.wait_for("the program", lambda t: status(t, "state") == "running")
         check("Stop" in "\n".join(arena_lines(t)), "the Stop button is not drawn:\n" + t)
-        # The arena's cells start at column 1, row 2; a 61 x 23 arena in a 100 x 30 terminal.
+        # The arena's cells start at column 1, row 2; the click lands in arena cell (15, 5),
+        # which shows the pixels from 15/cols to 16/cols of the width (and so for the height).
+        rows = arena_lines(t)
+        cols, nrows = len(rows[0]), len(rows)
         s.click(1 + 15, 2 + 5)
-        t = s.wait_text("left ")
-        m = re.search(r"left (\d+),(\d+)", t)
+        t = s.wait_for("the click", lambda t: "left " in output_pane(t))
+        m = re.search(r"left (\d+),(\d+)", output_pane(t))
         x, y = int(m.group(1)), int(m.group(2))
-        check(190 <= x <= 215 and 130 <= y <= 160, f"click mapped to {x},{y}")
+        check(15 * 800 // cols <= x < 16 * 800 // cols + 1 and 5 * 600 // nrows <= y < 6 * 600 // nrows + 1,
+              f"click on cell 15,5 of a {cols} x {nrows} arena mapped to {x},{y}")
         # The button is drawn on the cells that show its pixels; a click there presses it.
         stop = next(i for i, l in enumerate(t.split("\n")) if "Stop" in l[:62])
         col = t.split("\n")[stop].index("Stop") + 1
         s.click(col, stop)
         t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
-        check("end by 0 Stop" in t, "the button press did not end the program:\n" + t)
+        check("end by 0 Stop" in output_pane(t), "the button press did not end the program:\n" + t)
         s.keys("Enter")
         check(s.exit_code() == 0, "exit status")
     finally:
@@ -371,7 +386,7 @@ def test_break(rb):
         s.wait_for("the title's notice", lambda t: "breakpoint cleared on line 7" in t.split("\n")[0])
         s.keys("F2")
         t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
-        check("total 6" in t, "the output pane:\n" + t)
+        check("total 6" in output_pane(t), "the output pane:\n" + t)
         s.keys("Enter")
         check(s.exit_code() == 0, "exit status")
         after = s.wait_text("total 6")
