@@ -165,6 +165,11 @@ struct SubInfo {
   uint32_t paramCount = 0;
   uint32_t frameSize = 0;    ///< parameters + locals + temporaries
   uint32_t localCount = 0;   ///< parameters + locals (named slots)
+  /// Parameters from this one on are by-reference (&) parameters that the sub gives a value
+  /// on every path before it reads them or returns: calls do not copy the caller's variables in,
+  /// and the call empties these slots with the locals (see compiler_finish.cpp). paramCount
+  /// or more when there are none.
+  uint32_t outputsFrom = UINT32_MAX;
   std::vector<std::string> slotNames;  ///< names of the named frame slots
   std::vector<bool> byRef;
 };

@@ -61,7 +61,13 @@ class Dumper {
     for (uint32_t i = 0; i < s.localCount && i < s.slotNames.size(); ++i)
       out_ += (i ? ", " : " ") + s.slotNames[i];
     uint32_t temps = s.frameSize - s.localCount;
-    out_ += "; " + std::to_string(temps) + (temps == 1 ? " temporary)\n" : " temporaries)\n");
+    out_ += "; " + std::to_string(temps) + (temps == 1 ? " temporary)" : " temporaries)");
+    if (s.outputsFrom < s.paramCount) {
+      out_ += "; outputs, not copied in:";
+      for (uint32_t i = s.outputsFrom; i < s.paramCount && i < s.slotNames.size(); ++i)
+        out_ += " &" + s.slotNames[i];
+    }
+    out_ += "\n";
     lastLine_ = SourceLoc{};
   }
 

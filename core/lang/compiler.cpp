@@ -52,6 +52,7 @@ void Compiler::run() {
   finishScope(global_);
   p_.mainFrameSize = global_.maxTemp;
   resolveLabels();
+  if (options_.keepCode && options_.finish && !diags_.hasErrors()) finishCode();
   p_.globalCount = static_cast<uint32_t>(p_.globalNames.size());
   size_t slots = std::max({p_.globalNames.size(), p_.constants.size(), size_t(p_.mainFrameSize)});
   for (const SubInfo& s : p_.subs) slots = std::max<size_t>(slots, s.frameSize);

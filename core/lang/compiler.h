@@ -20,6 +20,9 @@ struct CompileOptions {
   /// generated (so every error is found) but none is stored, and the program returned (when
   /// there are no errors) has subs, labels and names but no code.
   bool keepCode = true;
+  /// Finish kept code (compiler_finish.cpp: by-reference outputs are not copied in, jumps to a
+  /// return become the return). Off only in tests that compare the finished code with the plain.
+  bool finish = true;
   /// Called with every statement of the program, in order, as the compiler reads it (with its
   /// index), so that other checks can walk the program in the same pass (see Linter).
   std::function<void(const ast::Stmt&, size_t)> onStatement;

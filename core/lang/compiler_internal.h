@@ -7,6 +7,7 @@
 //   compiler_expressions.cpp  values and conditions: expressions, and/or, branches on a test
 //   compiler_blocks.cpp       blocks and labels: if, loops, break/continue, goto/gosub, labels
 //   compiler_subs.cpp         subs and scopes: a sub's frame and locals, variables, calls, return
+//   compiler_finish.cpp       finishing the code: outputs not copied in, jumps to a return
 //
 // Every chapter is a part of one class, Compiler, declared here.
 
@@ -202,6 +203,12 @@ class Compiler {
   void callStmt(const Stmt& s);
   void returnStmt(const Stmt& s);
 
+  // ---- finishing the code (compiler_finish.cpp)
+  void finishCode();
+  uint32_t outputsFrom(const SubInfo& sub) const;
+  void removeInstructions(const std::vector<bool>& dead);
+  void threadJumps();
+
   const LoadedProgram& lp_;
   const BuiltinTable& builtins_;
   const CompileOptions& options_;
@@ -222,6 +229,13 @@ class Compiler {
   std::vector<Block> blocks_;
   std::map<std::string_view, LabelInfo> labels_;
   std::vector<LabelFixup> labelFixups_;
+  /// A Move that copies a caller's variable into a by-reference parameter before a call.
+  struct CopyIn {
+    uint32_t pc;
+    uint32_t sub;
+    uint32_t param;
+  };
+  std::vector<CopyIn> copyIns_;
   std::unordered_map<std::string_view, uint32_t> subIndex_;
   std::unordered_map<std::string_view, uint32_t> globals_;
   std::unordered_map<int64_t, uint32_t> intConsts_;     ///< the constant pool, by value

@@ -172,8 +172,11 @@ void Compiler::callSub(const SubInfo& sub, const std::vector<Expr*>& args, uint3
     }
     if (sub.byRef[i]) {
       // A by-reference argument may be an output: it need not have a value yet.
-      emit(Op::Move, first + i, variable(a->text), 0, a->loc);
-      if (options_.keepCode) p_.code.back().flags = kMoveMayBeUnassigned;
+      uint32_t pc = emit(Op::Move, first + i, variable(a->text), 0, a->loc);
+      if (options_.keepCode) {
+        p_.code.back().flags = kMoveMayBeUnassigned;
+        copyIns_.push_back({pc, static_cast<uint32_t>(&sub - p_.subs.data()), i});
+      }
     } else {
       exprInto(a, first + i);
     }

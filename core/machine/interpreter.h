@@ -121,7 +121,7 @@ class Interpreter {
   /// What a call of each sub needs, gathered from Program::subs when a run starts.
   struct SubEntry {
     const Instr* entry;
-    uint32_t paramCount;
+    uint32_t clearFrom;  ///< the call empties slots clearFrom..localCount-1: outputs and locals
     uint32_t localCount;
     uint32_t stackNeed;  ///< stack slots the call makes sure of past the new frame base
   };

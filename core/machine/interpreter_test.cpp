@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <memory>
 
 #include "base/diagnostic.h"
 #include "machine/test_support.h"
@@ -147,4 +149,113 @@ TEST_CASE("a host that stops the run inside a call ends it as Stopped", "[interp
   CHECK(r.status == RunStatus::Stopped);
   CHECK_FALSE(r.error);
   CHECK(out == "1\n");
+}
+
+namespace {
+
+/// The program compiled as runProgram compiles it (finished unless `finish` is false).
+std::unique_ptr<Program> compiled(const std::string& text, bool finish = true) {
+  DiagnosticList diags;
+  rb::test::MemoryReader reader;
+  reader.files["test.bas"] = text;
+  auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
+  CompileOptions options;
+  options.finish = finish;
+  return compileProgram(*loaded, options, diags);
+}
+
+/// The first parameter of `sub` that calls do not copy in (its paramCount when there is none).
+uint32_t outputsOf(const Program& p, const std::string& sub) {
+  for (const SubInfo& s : p.subs)
+    if (s.name == sub) return std::min(s.outputsFrom, s.paramCount);
+  FAIL("no sub " << sub);
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("finished code runs as the plain code does: output, errors and every step", "[interpreter]") {
+  const char* programs[] = {
+      // & outputs set on both branches, recursion (their slots are reused, call after call)
+      "call Fib(12, r)\nprint r\nend\nsub Fib(n, &r)\n  if n < 2\n    r = n\n  else\n"
+      "    call Fib(n - 1, a)\n    call Fib(n - 2, b)\n    r = a + b\n  endif\nreturn\n",
+      // set on one branch only: the caller's value must come back from the other
+      "r = 1\ncall Maybe(0, r)\nprint r\ncall Maybe(1, r)\nprint r\nend\n"
+      "sub Maybe(c, &r)\n  if c then r = 5\nreturn\n",
+      // read before it is set
+      "r = 10\ncall Acc(5, r)\nprint r\nend\nsub Acc(n, &r)\n  r = r + n\nreturn\n",
+      // an output before a by-value parameter, and one after
+      "call Mixed(p, 3, q)\nprint p, q\nend\nsub Mixed(&r, n, &s)\n  r = n\n  s = n * 2\nreturn\n",
+      // set only inside a loop that may not run
+      "r = 7\ncall Loop(0, r)\nprint r\ncall Loop(3, r)\nprint r\nend\n"
+      "sub Loop(n, &r)\n  for i = 1 to n\n    r = i\n  next\nreturn\n",
+      "r = 7\ncall W(0, r)\nprint r\nend\nsub W(n, &r)\n  while n > 0\n    r = n\n    n = n - 1\n"
+      "  wend\nreturn\n",
+      // an error inside the sub, with an output not yet set
+      "call E(r)\nprint r\nend\nsub E(&r)\n  r = q\nreturn\n",
+      // the same variable twice, a function with an output, a call among the arguments
+      "call Two(x, x)\nprint x\ny = F(3, r) + F(4, t)\nprint y, r, t\ncall P(F(1, z), w)\n"
+      "print z, w\nend\nsub Two(&a, &b)\n  a = 1\n  b = 2\nreturn\nsub F(n, &r)\n  r = n * 2\n"
+      "return n + 1\nsub P(v, &w)\n  w = v\nreturn\n",
+      // strings into outputs, over and over
+      "s = \"\"\nfor i = 1 to 5\n  call S(i, t)\n  s = s + t\nnext\nprint s\nend\n"
+      "sub S(i, &t)\n  t = \"<\" + i + \">\"\nreturn\n",
+      // returns from inside blocks, jumps to returns, an end inside a sub
+      "for i = 1 to 6\n  print Kind(i);\nnext\nprint\ncall Stop(2)\nprint \"not here\"\nend\n"
+      "sub Kind(n)\n  if n < 2\n    k = \"a\"\n  elseif n < 4\n    k = \"b\"\n  else\n"
+      "    return \"c\"\n  endif\nreturn k\nsub Stop(n)\n  if n = 2\n    print \"stop\"\n"
+      "    end\n  endif\nreturn\n",
+      // jumps to the end of the program
+      "for i = 1 to 3\n  if i <> 2\n    print \"no\"\n  else\n    print \"yes\"\n  endif\nnext\n"
+      "if i > 3\n  print \"done\"\nelse\n  print \"not done\"\nendif\n",
+      // a return reached by a jump, in the wrong place: its error names the return
+      "gosub Inside\nend\nsub F(n)\nInside:\n  if 1 < 2\n    k = 1\n  else\n    k = 2\n  endif\n"
+      "return 5\n",
+      // a gosub inside a sub, whose code sets the output
+      "call G(r)\nprint r\nend\nsub G(&r)\n  gosub Set\n  return\nSet:\n  r = 2\n  return\n",
+  };
+  for (const char* text : programs) {
+    INFO(text);
+    CompileOptions plainCode;
+    plainCode.finish = false;
+    auto finished = runProgram(text);
+    auto plain = runProgram(text, {}, {}, {}, plainCode);
+    REQUIRE(plain.loaded);
+    CHECK(finished.out == plain.out);
+    CHECK(finished.diagnostics == plain.diagnostics);
+    CHECK(finished.result.status == plain.result.status);
+    CHECK(finished.result.steps == plain.result.steps);
+    // Stopped after every number of steps, both stop at the same statement with the same output.
+    for (uint64_t limit = 1; limit < plain.result.steps; ++limit) {
+      RunLimits limits;
+      limits.maxSteps = limit;
+      auto a = runProgram(text, {}, {}, limits);
+      auto b = runProgram(text, {}, {}, limits, plainCode);
+      CHECK(a.out == b.out);
+      CHECK(a.diagnostics == b.diagnostics);
+      CHECK(a.result.steps == b.result.steps);
+    }
+  }
+}
+
+TEST_CASE("by-reference parameters set before every read and return are not copied in", "[interpreter]") {
+  auto p = compiled("sub Fib(n, &r)\n  if n < 2\n    r = n\n  else\n    call Fib(n - 1, a)\n"
+                    "    call Fib(n - 2, b)\n    r = a + b\n  endif\nreturn\n"
+                    "sub Maybe(c, &r)\n  if c then r = 5\nreturn\n"
+                    "sub Acc(n, &r)\n  r = r + n\nreturn\n"
+                    "sub Mixed(&r, n, &s)\n  r = n\n  s = n * 2\nreturn\n"
+                    "sub Two(&a, &b)\n  a = 1\n  b = 2\nreturn\n"
+                    "sub G(&r)\n  gosub Set\n  return\nSet:\n  r = 2\n  return\n");
+  REQUIRE(p);
+  CHECK(outputsOf(*p, "Fib") == 1);
+  CHECK(outputsOf(*p, "Maybe") == 2);  // not set when c is 0
+  CHECK(outputsOf(*p, "Acc") == 2);    // read first
+  CHECK(outputsOf(*p, "Mixed") == 2);    // s only: r is before a by-value parameter
+  CHECK(outputsOf(*p, "Two") == 0);
+  CHECK(outputsOf(*p, "G") == 1);      // a gosub: not followed
+  auto plain = compiled("call Two(x, y)\nend\nsub Two(&a, &b)\n  a = 1\n  b = 2\nreturn\n", false);
+  auto finished = compiled("call Two(x, y)\nend\nsub Two(&a, &b)\n  a = 1\n  b = 2\nreturn\n");
+  REQUIRE((plain && finished));
+  CHECK(finished->code.size() == plain->code.size() - 2);  // both copies in are gone
+  CHECK(outputsOf(*plain, "Two") == 2);
 }

@@ -54,12 +54,13 @@ struct Outcome {
 
 /// Loads `text` as "test.bas" (with `files` for includes), compiles and runs it.
 inline Outcome runProgram(const std::string& text, MemoryReader reader = {},
-                          std::deque<std::string> input = {}, RunLimits limits = {}) {
+                          std::deque<std::string> input = {}, RunLimits limits = {},
+                          const CompileOptions& compile = {}) {
   Outcome o;
   DiagnosticList diags;
   reader.files["test.bas"] = text;
   auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
-  auto program = compileProgram(*loaded, {}, diags);
+  auto program = compileProgram(*loaded, compile, diags);
   for (const Diagnostic& d : diags.all()) o.diagnostics += formatDiagnostic(loaded->sources, d);
   if (!program) return o;
   o.loaded = true;

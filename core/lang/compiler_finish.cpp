@@ -1,0 +1,248 @@
+// The compiler, chapter "finishing the code": once the whole program is compiled, and only when
+// its code is kept to run (not for rb check, nor in line-tracing mode, where the live view shows
+// every variable):
+//
+// - Outputs are not copied in. A by-reference parameter that the sub gives a value on every
+//   path before it reads it or returns is an output: the caller's value could never be seen, so
+//   calls skip the Move that copies it in, and the call empties the slot with the locals
+//   (SubInfo::outputsFrom). Only a run of such parameters at the end of the list qualifies,
+//   since the call empties one range of slots. `call Fib(n - 1, a)` with `sub Fib(n, &r)` that
+//   sets r on both branches saves an instruction per call.
+// - A jump to a return, an end or another jump becomes that instruction (with both step
+//   counts), which saves an instruction on paths like `if ... r = n else ... endif return`.
+//   Only where a --max-steps or --timeout stop is still reported at the same statement.
+//
+// Neither changes what a program does: the values it prints, its errors, its step counts.
+
+#include "lang/compiler_internal.h"
+
+namespace rb::compiler {
+
+namespace {
+
+/// Calls read(x) for every operand `in` reads, as it was before the instruction ran. `subs`
+/// gives a CallSub's parameter count.
+template <class Read>
+void forEachRead(const Instr& in, const std::vector<SubInfo>& subs, Read read) {
+  auto range = [&](uint32_t first, uint32_t n) {
+    for (uint32_t k = 0; k < n; ++k) read(first + k);
+  };
+  switch (in.op) {
+    case Op::Move: case Op::Neg: case Op::Not: case Op::BitNot:
+    case Op::JumpIfFalse: case Op::JumpIfTrue:
+      read(in.b);
+      break;
+    case Op::Inc: case Op::Dec:
+      read(in.a);
+      break;
+    case Op::ForPrep: case Op::ForLoop: case Op::ForLoop1:
+      read(in.a);
+      range(in.b, 2);
+      break;
+    case Op::Return:
+      if (in.c) read(in.b);
+      break;
+    case Op::CallSub:
+      range(operand(Base::Frame, in.b), in.a < subs.size() ? subs[in.a].paramCount : 0);
+      break;
+    case Op::CallBuiltin: case Op::Print: case Op::Format:
+      range(in.b, in.count);
+      break;
+    case Op::IndexGet:
+      read(in.b);
+      range(in.c, in.count);
+      break;
+    case Op::IndexSet:
+      read(in.a);
+      read(in.b);
+      range(in.c, in.count);
+      break;
+    case Op::IndexGet2:
+      read(in.b);
+      read(in.c);
+      break;
+    case Op::IndexSet2:
+      read(in.a);
+      read(in.b);
+      read(in.c);
+      break;
+    case Op::Dim:
+      range(in.c, in.count);
+      break;
+    case Op::DataAppend:
+      read(in.a);
+      read(in.b);
+      break;
+    case Op::Input:
+      if (in.c) read(in.b);
+      break;
+    case Op::Jump: case Op::Gosub: case Op::Steps: case Op::Line: case Op::End:
+      break;
+    default:  // R[a] = R[b] op R[c], compare-and-jump
+      read(in.b);
+      read(in.c);
+      break;
+  }
+}
+
+/// The operand an instruction surely gives a value (kNoOperand: none). An instruction that
+/// fails ends the run, so a write counts from the instruction on.
+uint32_t written(const Instr& in) {
+  switch (in.op) {
+    case Op::Move: case Op::Neg: case Op::Not: case Op::BitNot: case Op::Inc: case Op::Dec:
+    case Op::IndexGet: case Op::IndexGet2: case Op::Dim: case Op::DataAppend: case Op::Format:
+    case Op::Input:
+      return in.a;
+    case Op::CallSub: case Op::CallBuiltin:
+      return in.c;
+    default:
+      if (in.op >= Op::Add && in.op <= Op::Ge) return in.a;
+      return kNoOperand;
+  }
+}
+
+/// Where a jump goes (kNoOperand: it does not jump).
+uint32_t jumpTarget(const Instr& in) {
+  switch (in.op) {
+    case Op::Jump: case Op::JumpIfFalse: case Op::JumpIfTrue: case Op::Gosub:
+      return in.a;
+    case Op::ForPrep: case Op::ForLoop: case Op::ForLoop1:
+      return in.c;
+    default:
+      return isCompareJump(in.op) ? in.a : kNoOperand;
+  }
+}
+
+bool fallsThrough(Op op) { return op != Op::Jump && op != Op::Return && op != Op::End; }
+
+}  // namespace
+
+void Compiler::finishCode() {
+  if (options_.lineTracing) return;
+  for (SubInfo& s : p_.subs) s.outputsFrom = outputsFrom(s);
+  std::vector<bool> dead(p_.code.size(), false);
+  bool any = false;
+  for (const CopyIn& c : copyIns_) {
+    if (c.param >= p_.subs[c.sub].outputsFrom) {
+      dead[c.pc] = true;
+      any = true;
+    }
+  }
+  if (any) removeInstructions(dead);
+  threadJumps();
+}
+
+/// The first of the by-reference parameters at the end of `sub`'s list that the sub gives a
+/// value on every path before reading it or returning (paramCount: none). A forward "surely
+/// given a value" analysis over the sub's code, one bit per such parameter; code that leaves
+/// the sub's instructions (a gosub, a goto out) makes every parameter an input.
+uint32_t Compiler::outputsFrom(const SubInfo& sub) const {
+  uint32_t first = sub.paramCount;
+  while (first > 0 && sub.byRef[first - 1] && sub.paramCount - (first - 1) <= 64) --first;
+  if (first == sub.paramCount || sub.end <= sub.entry || sub.end > p_.code.size()) return sub.paramCount;
+  uint32_t count = sub.paramCount - first;
+  uint64_t all = count == 64 ? ~uint64_t(0) : (uint64_t(1) << count) - 1;
+  auto bit = [&](uint32_t x) -> uint64_t {  // the parameter's bit, or 0 for any other operand
+    if (operandBase(x) != Base::Frame) return 0;
+    uint32_t i = operandIndex(x);
+    return i >= first && i < sub.paramCount ? uint64_t(1) << (i - first) : 0;
+  };
+  uint64_t inputs = 0;  // parameters some path reads before giving them a value
+  std::vector<uint64_t> given(sub.end - sub.entry, 0);
+  std::vector<bool> seen(sub.end - sub.entry, false);
+  std::vector<uint32_t> work{sub.entry};
+  seen[0] = true;
+  auto flow = [&](uint32_t to, uint64_t state) {
+    if (to < sub.entry || to >= sub.end) {
+      inputs = all;
+      return;
+    }
+    uint32_t k = to - sub.entry;
+    if (!seen[k]) {
+      seen[k] = true;
+      given[k] = state;
+      work.push_back(to);
+    } else if ((given[k] & state) != given[k]) {
+      given[k] &= state;
+      work.push_back(to);
+    }
+  };
+  while (!work.empty() && inputs != all) {
+    uint32_t pc = work.back();
+    work.pop_back();
+    const Instr& in = p_.code[pc];
+    uint64_t state = given[pc - sub.entry];
+    if (in.op == Op::Gosub || in.op == Op::Line) {
+      inputs = all;
+      break;
+    }
+    forEachRead(in, p_.subs, [&](uint32_t x) { inputs |= bit(x) & ~state; });
+    if (in.op == Op::Return) inputs |= all & ~state;  // the call copies every & parameter out
+    state |= bit(written(in));
+    if (uint32_t t = jumpTarget(in); t != kNoOperand) flow(t, state);
+    if (fallsThrough(in.op)) flow(pc + 1, state);
+  }
+  // The outputs are the parameters after the last input.
+  uint32_t from = sub.paramCount;
+  while (from > first && !(inputs & (uint64_t(1) << (from - 1 - first)))) --from;
+  return from;
+}
+
+/// Removes the instructions marked dead, moving every address (jump targets, sub entries and
+/// ends, labels) to the instruction that took its place.
+void Compiler::removeInstructions(const std::vector<bool>& dead) {
+  size_t n = p_.code.size();
+  std::vector<uint32_t> moved(n + 1);
+  uint32_t next = 0;
+  for (size_t pc = 0; pc < n; ++pc) {
+    moved[pc] = next;
+    if (!dead[pc]) {
+      p_.code[next] = p_.code[pc];
+      p_.locs[next] = p_.locs[pc];
+      ++next;
+    }
+  }
+  moved[n] = next;
+  p_.code.resize(next);
+  p_.locs.resize(next);
+  for (Instr& in : p_.code) {
+    if (jumpTarget(in) == kNoOperand) continue;
+    if (in.op == Op::ForPrep || in.op == Op::ForLoop || in.op == Op::ForLoop1) in.c = moved[in.c];
+    else in.a = moved[in.a];
+  }
+  for (SubInfo& s : p_.subs) {
+    s.entry = moved[s.entry];
+    s.end = moved[s.end];
+  }
+  for (LabelEntry& l : p_.labels) l.pc = moved[l.pc];
+  codeSize_ = next;
+}
+
+/// Replaces a jump to a return, an end or another jump by that instruction, adding the
+/// statements both count, where a --max-steps or --timeout stop still falls at the statement
+/// it fell at before: a jump that counts no statements of its own (steps <= 0) stops only in
+/// its target, whose source position the new instruction takes (a return's errors name the
+/// return); a jump to an end or a jump that counts none stops only in the jump, and keeps its
+/// own.
+void Compiler::threadJumps() {
+  for (size_t pc = 0; pc < p_.code.size(); ++pc) {
+    Instr& in = p_.code[pc];
+    for (int hops = 0; hops < 8 && in.op == Op::Jump && in.a < p_.code.size(); ++hops) {
+      const Instr& to = p_.code[in.a];
+      if ((to.op != Op::Jump && to.op != Op::Return && to.op != Op::End) || &to == &in) break;
+      bool stopsInTarget = in.steps <= 0;
+      bool stopsInJump = to.op != Op::Return && to.steps == 0;
+      int steps = in.steps + to.steps;
+      if ((!stopsInTarget && !stopsInJump) || steps < INT16_MIN || steps > INT16_MAX) break;
+      if (!stopsInJump) p_.locs[pc] = p_.locs[in.a];
+      in.op = to.op;
+      in.flags = to.flags;
+      in.a = to.a;
+      in.b = to.b;
+      in.c = to.c;
+      in.steps = static_cast<int16_t>(steps);
+    }
+  }
+}
+
+}  // namespace rb::compiler
