@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/large_memory.h"  // LargeAllocator
 #include "base/number.h"  // formatNumber
 
 namespace rb {
@@ -26,7 +27,9 @@ struct StrObj {
 struct ArrObj {
   uint32_t refs = 1;
   std::vector<int64_t> dims;   ///< extent of each dimension
-  std::vector<Value> items;    ///< row-major
+  /// Row-major. A big array's storage is large memory (base/large_memory.h): `dim` of a
+  /// million elements maps its pages at once instead of faulting them in one by one.
+  std::vector<Value, LargeAllocator<Value>> items;
 };
 
 class Value {
