@@ -29,6 +29,9 @@ class BuiltinTable;
   X(Move)                                                                                    \
   /* R[a] = R[b] op R[c] */                                                                  \
   X(Add) X(Sub) X(Mul) X(Div) X(Mod) X(Pow) X(BitAnd) X(BitOr) X(Shl) X(Shr)                 \
+  /* R[a] = R[b] op R[c] where R[c] is a constant, a number (KNum) or an integer (KInt):  */  \
+  /* the handlers test R[b] only, and leave every other case to Add, Sub or Mul           */  \
+  X(AddKNum) X(SubKNum) X(MulKNum) X(AddKInt) X(SubKInt) X(MulKInt)                          \
   /* R[a] = (R[b] cmp R[c]) as 0 or 1; the three compare families list Cmp's order */         \
   X(Eq) X(Ne) X(Lt) X(Le) X(Gt) X(Ge)                                                        \
   /* R[a] = op R[b] */                                                                       \
@@ -108,6 +111,22 @@ constexpr Cmp compareOf(Op op) {
                                        : op >= Op::JumpIfEq ? Op::JumpIfEq : Op::JumpIfNotEq);
   return static_cast<Cmp>(i - first);
 }
+
+/// The general instruction of a specialized one (AddKNum -> Add), else `op` itself: what errors
+/// name, since a specialized handler leaves every case it does not take to the general one.
+constexpr Op generalOp(Op op) {
+  switch (op) {
+    case Op::AddKNum: case Op::AddKInt: return Op::Add;
+    case Op::SubKNum: case Op::SubKInt: return Op::Sub;
+    case Op::MulKNum: case Op::MulKInt: return Op::Mul;
+    default: return op;
+  }
+}
+
+static_assert(static_cast<int>(Op::MulKNum) - static_cast<int>(Op::AddKNum) == static_cast<int>(Op::Mul) - static_cast<int>(Op::Add) &&
+              static_cast<int>(Op::MulKInt) - static_cast<int>(Op::AddKInt) == static_cast<int>(Op::Mul) - static_cast<int>(Op::Add) &&
+              static_cast<int>(Op::Sub) - static_cast<int>(Op::Add) == 1,
+              "the K forms list Add, Sub and Mul in their order (specializeConstants)");
 
 constexpr uint8_t kMoveMayBeUnassigned = 1;
 

@@ -8,6 +8,8 @@
 //   (SubInfo::outputsFrom). Only a run of such parameters at the end of the list qualifies,
 //   since the call empties one range of slots. `call Fib(n - 1, a)` with `sub Fib(n, &r)` that
 //   sets r on both branches saves an instruction per call.
+// - +, - and * with a number constant on the right become their K forms (AddKNum, AddKInt..),
+//   whose handlers test only the left operand: `x = x + 0.5`, `n - 1`.
 // - A jump to a return, an end or another jump becomes that instruction (with both step
 //   counts), which saves an instruction on paths like `if ... r = n else ... endif return`.
 //   Only where a --max-steps or --timeout stop is still reported at the same statement.
@@ -130,6 +132,20 @@ void Compiler::finishCode() {
   }
   if (any) removeInstructions(dead);
   threadJumps();
+  specializeConstants();
+}
+
+/// +, - and * with a number constant on the right become AddKNum.. or AddKInt..: the constant's
+/// type is known here, so their handlers test only the left operand.
+void Compiler::specializeConstants() {
+  for (Instr& in : p_.code) {
+    if ((in.op != Op::Add && in.op != Op::Sub && in.op != Op::Mul) || operandBase(in.c) != Base::Const)
+      continue;
+    const Value& k = p_.constants[operandIndex(in.c)];
+    auto member = static_cast<uint8_t>(static_cast<uint8_t>(in.op) - static_cast<uint8_t>(Op::Add));
+    if (k.isNum()) in.op = static_cast<Op>(static_cast<uint8_t>(Op::AddKNum) + member);
+    else if (k.isInt()) in.op = static_cast<Op>(static_cast<uint8_t>(Op::AddKInt) + member);
+  }
 }
 
 /// The first of the by-reference parameters at the end of `sub`'s list that the sub gives a

@@ -7,7 +7,7 @@
 //   compiler_expressions.cpp  values and conditions: expressions, and/or, branches on a test
 //   compiler_blocks.cpp       blocks and labels: if, loops, break/continue, goto/gosub, labels
 //   compiler_subs.cpp         subs and scopes: a sub's frame and locals, variables, calls, return
-//   compiler_finish.cpp       finishing the code: outputs not copied in, jumps to a return
+//   compiler_finish.cpp       finishing the code: outputs not copied in, jumps to a return, K forms
 //
 // Every chapter is a part of one class, Compiler, declared here.
 
@@ -208,6 +208,7 @@ class Compiler {
   uint32_t outputsFrom(const SubInfo& sub) const;
   void removeInstructions(const std::vector<bool>& dead);
   void threadJumps();
+  void specializeConstants();
 
   const LoadedProgram& lp_;
   const BuiltinTable& builtins_;

@@ -196,7 +196,8 @@ RB_COLD std::vector<Diagnostic> Interpreter::callChain() const {
 /// value is named first ("variable 'x' is used before it is given a value"), then the
 /// instruction says what it needs ("'-' needs numbers, not a string").
 RB_COLD void Interpreter::operandError(const Instr& in) const {
-  switch (in.op) {
+  const Op op = generalOp(in.op);
+  switch (op) {
     case Op::Inc:
     case Op::Dec:
     case Op::ForPrep:
@@ -204,10 +205,10 @@ RB_COLD void Interpreter::operandError(const Instr& in) const {
     case Op::ForLoop1: {
       const Value& v = bases_(in.a);
       if (v.isUndef()) undefined(in.a);
-      if (in.op == Op::ForPrep) raise("for loop bounds must be numbers");
-      if (in.op == Op::ForLoop || in.op == Op::ForLoop1)
+      if (op == Op::ForPrep) raise("for loop bounds must be numbers");
+      if (op == Op::ForLoop || op == Op::ForLoop1)
         throw RuntimeError("the for loop variable '" + slotName(in.a) + "' no longer holds a number");
-      throw RuntimeError(std::string("'") + opSymbol(in.op) + "' needs a number, not " + typeName(v));
+      throw RuntimeError(std::string("'") + opSymbol(op) + "' needs a number, not " + typeName(v));
     }
     case Op::Move:
     case Op::Neg:
@@ -218,25 +219,25 @@ RB_COLD void Interpreter::operandError(const Instr& in) const {
     case Op::IndexSet:
     case Op::IndexSet2:
     case Op::DataAppend: {
-      const Value& v = bases_(in.op == Op::IndexSet2 ? in.a : in.b);
-      if (v.isUndef()) undefined(in.op == Op::IndexSet2 ? in.a : in.b);
-      if (in.op == Op::JumpIfFalse || in.op == Op::JumpIfTrue)
+      const Value& v = bases_(op == Op::IndexSet2 ? in.a : in.b);
+      if (v.isUndef()) undefined(op == Op::IndexSet2 ? in.a : in.b);
+      if (op == Op::JumpIfFalse || op == Op::JumpIfTrue)
         throw RuntimeError("a condition must be a number, not " + typeName(v));
-      if (in.op == Op::IndexSet || in.op == Op::IndexSet2 || in.op == Op::DataAppend)
+      if (op == Op::IndexSet || op == Op::IndexSet2 || op == Op::DataAppend)
         raise("an array cannot be stored in an array element");
-      throw RuntimeError(std::string("'") + opSymbol(in.op) + "' needs a number, not " + typeName(v));
+      throw RuntimeError(std::string("'") + opSymbol(op) + "' needs a number, not " + typeName(v));
     }
     default: {  // the binary operators and the comparisons: R[b] op R[c]
       const Value& a = bases_(in.b);
       const Value& b = bases_(in.c);
       if (a.isUndef()) undefined(in.b);
       if (b.isUndef()) undefined(in.c);
-      if (isCompareValue(in.op) || isCompareJump(in.op)) {
+      if (isCompareValue(op) || isCompareJump(op)) {
         if (a.isArr() || b.isArr()) raise("cannot compare an array");
         throw RuntimeError("cannot compare " + typeName(a) + " with " + typeName(b));
       }
-      if (in.op == Op::Add) throw RuntimeError("cannot add " + typeName(a) + " and " + typeName(b));
-      throw RuntimeError(std::string("'") + opSymbol(in.op) + "' needs numbers, not " +
+      if (op == Op::Add) throw RuntimeError("cannot add " + typeName(a) + " and " + typeName(b));
+      throw RuntimeError(std::string("'") + opSymbol(op) + "' needs numbers, not " +
                          typeName(a.isNumeric() ? b : a));
     }
   }
@@ -709,6 +710,45 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(Sub) { ARITHMETIC(__builtin_sub_overflow, -); }
     CASE(Mul) { ARITHMETIC(__builtin_mul_overflow, *); }
 #undef ARITHMETIC
+// The same with a constant on the right whose type the compiler knew: only the left operand is
+// tested; a string, an empty value or an overflow goes to the general handler.
+#define ARITHMETIC_KNUM(op, general)                                  \
+  const Instr& in = *ip;                                              \
+  const Value& a = B(in.b);                                           \
+  double k = B(in.c).d();                                             \
+  Value& d = B(in.a);                                                 \
+  if (a.isNum()) [[likely]] {                                         \
+    d.setNum(finite(a.d() op k));                                     \
+  } else if (a.isInt()) {                                             \
+    d.setNum(finite(static_cast<double>(a.i()) op k));                \
+  } else {                                                            \
+    goto general;                                                     \
+  }                                                                   \
+  ++ip;                                                               \
+  NEXT
+#define ARITHMETIC_KINT(overflows, op, general)                       \
+  const Instr& in = *ip;                                              \
+  const Value& a = B(in.b);                                           \
+  int64_t k = B(in.c).i();                                            \
+  Value& d = B(in.a);                                                 \
+  int64_t r;                                                          \
+  if (a.isInt() && !overflows(a.i(), k, &r)) [[likely]] {             \
+    d.setInt(r);                                                      \
+  } else if (a.isNum()) {                                             \
+    d.setNum(finite(a.d() op static_cast<double>(k)));                \
+  } else {                                                            \
+    goto general;                                                     \
+  }                                                                   \
+  ++ip;                                                               \
+  NEXT
+    CASE(AddKNum) { ARITHMETIC_KNUM(+, op_Add); }
+    CASE(SubKNum) { ARITHMETIC_KNUM(-, op_Sub); }
+    CASE(MulKNum) { ARITHMETIC_KNUM(*, op_Mul); }
+    CASE(AddKInt) { ARITHMETIC_KINT(__builtin_add_overflow, +, op_Add); }
+    CASE(SubKInt) { ARITHMETIC_KINT(__builtin_sub_overflow, -, op_Sub); }
+    CASE(MulKInt) { ARITHMETIC_KINT(__builtin_mul_overflow, *, op_Mul); }
+#undef ARITHMETIC_KNUM
+#undef ARITHMETIC_KINT
     CASE(Div) {
       const Instr& in = *ip;
       const Value& a = B(in.b);

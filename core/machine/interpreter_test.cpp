@@ -211,6 +211,16 @@ TEST_CASE("finished code runs as the plain code does: output, errors and every s
       // a return reached by a jump, in the wrong place: its error names the return
       "gosub Inside\nend\nsub F(n)\nInside:\n  if 1 < 2\n    k = 1\n  else\n    k = 2\n  endif\n"
       "return 5\n",
+      // +, - and * with a constant on the right (their K forms) and every case they leave to
+      // the general handlers: overflows, strings, a number over a string, errors
+      "x = 9223372036854775807\ny = x + 1\nprint y\nz = -x - 2\nprint z\nm = x * 2\nprint m\n"
+      "s = \"a\" + 1\nprint s\nt = \"b\"\nt = t + 2.5\nprint t\nu = 3\nu = u * 0.5\nprint u\n"
+      "v = 2.5\nv = v - 1\nprint v\nw = \"s\"\nw = 4 - 1\nprint w\nprint 7 - 0.5, 2 * 3, 2.5 * 2\n",
+      "s = \"a\"\nprint s - 1\n",
+      "s = \"a\"\nprint s * 2.5\n",
+      "print q + 1\n",
+      "x = 1e308\nprint x * 10.0\n",
+      "x = -1e308\nprint x - 1e308\n",
       // a gosub inside a sub, whose code sets the output
       "call G(r)\nprint r\nend\nsub G(&r)\n  gosub Set\n  return\nSet:\n  r = 2\n  return\n",
   };
