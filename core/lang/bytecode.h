@@ -129,10 +129,14 @@ static_assert(static_cast<int>(Op::MulKNum) - static_cast<int>(Op::AddKNum) == s
               "the K forms list Add, Sub and Mul in their order (specializeConstants)");
 
 constexpr uint8_t kMoveMayBeUnassigned = 1;
+/// Add (and its K forms): R[b] is a temporary that nothing reads after this instruction, so a
+/// string there may be taken over and appended to instead of copied.
+constexpr uint8_t kAddLeftDies = 1;
 
 struct Instr {
   Op op;
-  uint8_t flags = 0;  ///< Move: kMoveMayBeUnassigned; conditional transfers: steps given back when taken
+  uint8_t flags = 0;  ///< Move: kMoveMayBeUnassigned; Add: kAddLeftDies; conditional transfers:
+                      ///< steps given back when taken
   union {
     uint16_t count = 0;  ///< consecutive operands read (arguments, indices, items, extents);
                        ///< IndexGet2/IndexSet2: the array's global slot

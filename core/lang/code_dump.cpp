@@ -127,9 +127,10 @@ class Dumper {
     switch (in.op) {
       case Op::Move:
         return r(in.a) + ", " + r(in.b) + (in.flags & kMoveMayBeUnassigned ? "  (may be unassigned)" : "");
-      case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Mod: case Op::Pow:
-      case Op::AddKNum: case Op::SubKNum: case Op::MulKNum: case Op::AddKInt: case Op::SubKInt:
-      case Op::MulKInt:
+      case Op::Add: case Op::AddKNum: case Op::AddKInt:
+        return r(in.a) + ", " + r(in.b) + ", " + r(in.c) + (in.flags & kAddLeftDies ? "  (left dies)" : "");
+      case Op::Sub: case Op::Mul: case Op::Div: case Op::Mod: case Op::Pow:
+      case Op::SubKNum: case Op::MulKNum: case Op::SubKInt: case Op::MulKInt:
       case Op::BitAnd: case Op::BitOr: case Op::Shl: case Op::Shr:
       case Op::Eq: case Op::Ne: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge:
         return r(in.a) + ", " + r(in.b) + ", " + r(in.c);

@@ -108,8 +108,14 @@ uint32_t Compiler::expr(const Expr* e, uint32_t dest) {
       if (isLogical(e->op)) return logical(e, dest);
       uint32_t l = expr(e->args[0]);
       uint32_t r = expr(e->args[1]);
-      uint32_t d = dest != kNoOperand ? dest : temp();
+      // A temporary on the left is this expression's own: the result goes over it, so that
+      // `"step " + n + " of " + total` grows one string in place (concatenate) instead of
+      // copying it into a new one at every `+`.
+      bool leftIsTemp = operandBase(l) == Base::Frame && operandIndex(l) >= scope_->localCount;
+      uint32_t d = dest != kNoOperand ? dest : leftIsTemp ? l : temp();
       emit(binaryOp(e->op), d, l, r, e->loc);
+      // Into a variable or an argument: the string on the left is taken over, not copied.
+      if (leftIsTemp && d != l && binaryOp(e->op) == Op::Add && options_.keepCode) p_.code.back().flags = kAddLeftDies;
       return d;
     }
   }

@@ -38,21 +38,32 @@ constexpr size_t kMaxStringLength = 64u << 20;
 }
 
 /// `+` with a string: the printed forms joined. `s = s + x`, where no other value shares s,
-/// appends in place, so a string grown a piece at a time costs its length, not its square.
-void concatenate(Value& d, const Value& a, const Value& b) {
+/// appends in place, so a string grown a piece at a time costs its length, not its square; so
+/// does a temporary's string that the compiler says dies here (`leftDies`), moved into d first.
+void concatenate(Value& d, Value& a, const Value& b, bool leftDies) {
+  std::string* s = nullptr;  // d's string, when b can be appended to it in place
   if (&d == &a) {
-    if (std::string* s = d.uniqueStr()) {
-      std::string formatted;
-      const std::string& right = b.isStr() ? b.str() : (formatted = formatValue(b));
-      if (s->size() + right.size() > kMaxStringLength) stringTooLong();
-      s->append(right);  // also right when b is s itself
-      return;
-    }
+    s = d.uniqueStr();
+  } else if (leftDies && &d != &b && a.uniqueStr()) {
+    d = std::move(a);  // a temporary no one reads again (kAddLeftDies): its string goes on in d
+    s = d.uniqueStr();
   }
-  std::string left = formatValue(a), right = formatValue(b);
+  if (s) {
+    std::string formatted;
+    const std::string& right = b.isStr() ? b.str() : (formatted = formatValue(b));
+    if (s->size() + right.size() > kMaxStringLength) stringTooLong();
+    s->append(right);  // also right when b is s itself
+    return;
+  }
+  std::string formattedA, formattedB;
+  const std::string& left = a.isStr() ? a.str() : (formattedA = formatValue(a));
+  const std::string& right = b.isStr() ? b.str() : (formattedB = formatValue(b));
   if (left.size() + right.size() > kMaxStringLength) stringTooLong();
-  left += right;
-  d = Value::string(std::move(left));
+  std::string joined;
+  joined.reserve(left.size() + right.size());  // one allocation, not a copy and a growth
+  joined += left;
+  joined += right;
+  d = Value::string(std::move(joined));
 }
 
 std::string typeName(const Value& v) {
@@ -671,7 +682,7 @@ void Interpreter::execute(uint32_t& pcOut) {
     }
     CASE(Add) {
       const Instr& in = *ip;
-      const Value& a = B(in.b);
+      Value& a = B(in.b);
       const Value& b = B(in.c);
       Value& d = B(in.a);
       if (a.isInt() && b.isInt()) {
@@ -681,7 +692,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       } else if (a.isNumeric() && b.isNumeric()) {
         d.setNum(finite(a.asDouble() + b.asDouble()));
       } else if ((a.isStr() || a.isNumeric()) && (b.isStr() || b.isNumeric())) {
-        concatenate(d, a, b);
+        concatenate(d, a, b, in.flags & kAddLeftDies);
         m_.checkAlarms();
       } else {
         operandError(in);
