@@ -14,7 +14,7 @@
 //   counts), which saves an instruction on paths like `if ... r = n else ... endif return`.
 //   Only where a --max-steps or --timeout stop is still reported at the same statement.
 //
-// Neither changes what a program does: the values it prints, its errors, its step counts.
+// None changes what a program does: the values it prints, its errors, its step counts.
 
 #include "lang/compiler_internal.h"
 
