@@ -55,15 +55,10 @@ void concatenate(Value& d, Value& a, const Value& b, bool leftDies) {
     s->append(right);  // also right when b is s itself
     return;
   }
-  std::string formattedA, formattedB;
-  const std::string& left = a.isStr() ? a.str() : (formattedA = formatValue(a));
-  const std::string& right = b.isStr() ? b.str() : (formattedB = formatValue(b));
+  std::string left = formatValue(a), right = formatValue(b);
   if (left.size() + right.size() > kMaxStringLength) stringTooLong();
-  std::string joined;
-  joined.reserve(left.size() + right.size());  // one allocation, not a copy and a growth
-  joined += left;
-  joined += right;
-  d = Value::string(std::move(joined));
+  left += right;
+  d = Value::string(std::move(left));
 }
 
 std::string typeName(const Value& v) {
