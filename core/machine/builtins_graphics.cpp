@@ -232,7 +232,8 @@ void parseStyle(Args& a, int i, TextStyle& style) {
 Value xyText(Machine& m, Args& a) {
   TextStyle style;
   const Value& text = a[2];
-  std::string s = formatValue(text);
+  std::string formatted;  // a number's printed form; a string is drawn where it is
+  const std::string& s = text.isStr() ? text.str() : (formatted = formatValue(text));
   // Argument 3 names a font: Courier New, Arial, Times New Roman and their kin map to the
   // Liberation face with the same widths; "" (or a number) is the default face.
   if (a.has(3)) {
