@@ -38,6 +38,20 @@ Value Value::array(std::vector<int64_t> dims) {
   return r;
 }
 
+std::string_view printedForm(const Value& v, char (&room)[kNumberTextSize]) {
+  switch (v.type()) {
+    case VType::Int: {
+      auto r = std::to_chars(room, room + kNumberTextSize, v.i());
+      return {room, static_cast<std::size_t>(r.ptr - room)};
+    }
+    case VType::Num: return {room, formatNumberTo(v.d(), room)};
+    case VType::Str: return v.str();
+    case VType::Arr: return "<array>";
+    case VType::Undef: return "";
+  }
+  return "";
+}
+
 std::string formatValue(const Value& v) {
   switch (v.type()) {
     case VType::Int: return std::to_string(v.i());

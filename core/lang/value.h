@@ -143,6 +143,9 @@ class Value {
 
 /// A value as `print` shows it.
 std::string formatValue(const Value& v);
+/// formatValue's text without a copy: a string's own text, a number's written into `room`
+/// (valid while both live).
+std::string_view printedForm(const Value& v, char (&room)[kNumberTextSize]);
 /// Parses text the way `input` and toNumber() do: the whole text (spaces trimmed) must be a
 /// number. Returns false when it is not.
 bool parseNumber(std::string_view text, Value& out);

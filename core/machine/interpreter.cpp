@@ -133,8 +133,9 @@ RB_ALWAYS_INLINE bool holds(Cmp cmp, T x, T y) {
 std::string formatItems(const Value* items, uint32_t n, const std::vector<Tok>& seps, bool& newline) {
   std::string out;
   newline = true;
+  char room[kNumberTextSize];
   for (uint32_t i = 0; i < n; ++i) {
-    out += formatValue(items[i]);
+    out += printedForm(items[i], room);
     Tok sep = i < seps.size() ? seps[i] : Tok::Eof;
     if (sep == Tok::Semicolon && i + 1 < n) out += '\t';
     if (i + 1 == n && sep != Tok::Eof) {
