@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
 
 #include "base/diagnostic.h"
 #include "machine/test_support.h"
@@ -268,4 +273,76 @@ TEST_CASE("by-reference parameters set before every read and return are not copi
   REQUIRE((plain && finished));
   CHECK(finished->code.size() == plain->code.size() - 2);  // both copies in are gone
   CHECK(outputsOf(*plain, "Two") == 2);
+}
+
+namespace {
+
+/// Files on disk, for the golden programs and what they include.
+class DiskReader : public SourceReader {
+ public:
+  std::optional<std::string> find(const std::string& path) override {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+    return std::filesystem::weakly_canonical(path, ec).string();
+  }
+  std::optional<std::string> read(const std::string& canonical) override {
+    std::ifstream in(canonical, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+};
+
+/// A golden program run in-process as rb run runs it (seed 1, its // stdin: lines), its code
+/// finished or plain; nullopt when it does not load.
+std::optional<rb::test::Outcome> runFile(const std::string& path, const std::string& text, bool finish) {
+  DiskReader reader;
+  DiagnosticList diags;
+  auto loaded = loadProgram(path, text, reader, standardBuiltins(), {}, diags);
+  CompileOptions options;
+  options.finish = finish;
+  auto program = loaded ? compileProgram(*loaded, options, diags) : nullptr;
+  if (!program) return std::nullopt;
+  rb::test::Outcome o;
+  rb::test::TestHost host;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (auto at = line.find("// stdin: "); at != std::string::npos) host.input.push_back(line.substr(at + 10));
+  Machine machine(host, 1);
+  Interpreter interp(*program, machine);
+  RunLimits limits;
+  limits.maxSteps = 300'000;  // enough for nearly all; a longer one is compared up to there
+  o.result = interp.run(limits);
+  o.out = host.out;
+  if (o.result.error) o.diagnostics = formatDiagnostic(loaded->sources, *o.result.error);
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("every golden program runs the same with its code finished and plain", "[interpreter]") {
+  // rb test runs golden programs line-traced, that is with plain code; rb run finishes the
+  // code (compiler_finish.cpp). Here each runs both ways, in-process: the same output, error
+  // and statement count. Programs that need command-line options (// args:) are left out.
+  size_t compared = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(RB_TESTDATA_DIR)) {
+    if (entry.path().extension() != ".bas") continue;
+    std::string path = entry.path().string();
+    std::string text = *DiskReader().read(path);
+    if (text.rfind("// nontest", 0) == 0 || text.find("// args:") != std::string::npos ||
+        text.find("// skip:") != std::string::npos)
+      continue;
+    INFO(path);
+    auto finished = runFile(path, text, true);
+    auto plain = runFile(path, text, false);
+    REQUIRE(finished.has_value() == plain.has_value());
+    if (!plain) continue;
+    CHECK(finished->out == plain->out);
+    CHECK(finished->diagnostics == plain->diagnostics);
+    CHECK(finished->result.status == plain->result.status);
+    CHECK(finished->result.steps == plain->result.steps);
+    ++compared;
+  }
+  CHECK(compared > 150);
 }
