@@ -179,6 +179,20 @@ constexpr Base operandBase(uint32_t op) { return static_cast<Base>(op >> kBaseSh
 constexpr uint32_t operandIndex(uint32_t op) { return op & kIndexMask; }
 constexpr uint32_t kNoOperand = 0xffffffffu;
 
+/// Instructions that hold an address they may go to: the jumps, the for loops and Gosub.
+constexpr bool hasJumpTarget(Op op) {
+  return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfTrue || op == Op::Gosub ||
+         op == Op::ForPrep || op == Op::ForLoop || op == Op::ForLoop1 || isCompareJump(op);
+}
+constexpr bool isForLoop(Op op) { return op == Op::ForPrep || op == Op::ForLoop || op == Op::ForLoop1; }
+/// The field that holds that address: `c` of the for loops, `a` of the others.
+inline uint32_t& jumpTargetField(Instr& in) { return isForLoop(in.op) ? in.c : in.a; }
+/// The address an instruction may go to (kNoOperand: it holds none).
+inline uint32_t jumpTarget(const Instr& in) {
+  if (!hasJumpTarget(in.op)) return kNoOperand;
+  return isForLoop(in.op) ? in.c : in.a;
+}
+
 /// A `sub` after compilation.
 struct SubInfo {
   std::string name;

@@ -19,7 +19,8 @@ class Dumper {
     header();
     for (const SubInfo& s : p_.subs) subAt_[s.entry] = &s;
     for (const LabelEntry& l : p_.labels) labelsAt_.emplace(l.pc, l.name);
-    for (uint32_t pc = 0; pc < p_.code.size(); ++pc) collectTarget(p_.code[pc]);
+    for (const Instr& in : p_.code)
+      if (hasJumpTarget(in.op)) targets_.insert(jumpTarget(in));
     out_ += "\nmain\n";
     for (uint32_t pc = 0; pc < p_.code.size(); ++pc) {
       if (sub_ && pc >= sub_->end) {
@@ -88,25 +89,6 @@ class Dumper {
     size_t slash = name.find_last_of('/');
     if (slash != std::string::npos) name = name.substr(slash + 1);
     out_ += "            ; " + name + ":" + std::to_string(loc.line) + "  " + std::string(text) + "\n";
-  }
-
-  void collectTarget(const Instr& in) {
-    switch (in.op) {
-      case Op::Jump:
-      case Op::JumpIfFalse:
-      case Op::JumpIfTrue:
-      case Op::Gosub:
-        targets_.insert(in.a);
-        break;
-      case Op::ForPrep:
-      case Op::ForLoop:
-      case Op::ForLoop1:
-        targets_.insert(in.c);
-        break;
-      default:
-        if (isCompareJump(in.op)) targets_.insert(in.a);
-        break;
-    }
   }
 
   void instruction(uint32_t pc) {

@@ -222,8 +222,7 @@ void Compiler::flushSteps() {
 void Compiler::patch(uint32_t pc, Target t) {
   if (!options_.keepCode) return;
   Instr& in = p_.code[pc];
-  if (in.op == Op::ForPrep || in.op == Op::ForLoop || in.op == Op::ForLoop1) in.c = t.pc;
-  else in.a = t.pc;
+  jumpTargetField(in) = t.pc;
   if (isConditionalTransfer(in.op)) {
     // Both paths count `steps`; only the taken one skips the statements the fall-through path
     // counted before the target, so the interpreter takes them back (`flags`) when it jumps.

@@ -103,18 +103,6 @@ uint32_t written(const Instr& in) {
   }
 }
 
-/// Where a jump goes (kNoOperand: it does not jump).
-uint32_t jumpTarget(const Instr& in) {
-  switch (in.op) {
-    case Op::Jump: case Op::JumpIfFalse: case Op::JumpIfTrue: case Op::Gosub:
-      return in.a;
-    case Op::ForPrep: case Op::ForLoop: case Op::ForLoop1:
-      return in.c;
-    default:
-      return isCompareJump(in.op) ? in.a : kNoOperand;
-  }
-}
-
 bool fallsThrough(Op op) { return op != Op::Jump && op != Op::Return && op != Op::End; }
 
 }  // namespace
@@ -188,7 +176,7 @@ uint32_t Compiler::outputsFrom(const SubInfo& sub) const {
     work.pop_back();
     const Instr& in = p_.code[pc];
     uint64_t state = given[pc - sub.entry];
-    if (in.op == Op::Gosub || in.op == Op::Line) {
+    if (in.op == Op::Gosub) {
       inputs = all;
       break;
     }
@@ -221,11 +209,8 @@ void Compiler::removeInstructions(const std::vector<bool>& dead) {
   moved[n] = next;
   p_.code.resize(next);
   p_.locs.resize(next);
-  for (Instr& in : p_.code) {
-    if (jumpTarget(in) == kNoOperand) continue;
-    if (in.op == Op::ForPrep || in.op == Op::ForLoop || in.op == Op::ForLoop1) in.c = moved[in.c];
-    else in.a = moved[in.a];
-  }
+  for (Instr& in : p_.code)
+    if (hasJumpTarget(in.op)) jumpTargetField(in) = moved[jumpTargetField(in)];
   for (SubInfo& s : p_.subs) {
     s.entry = moved[s.entry];
     s.end = moved[s.end];

@@ -160,6 +160,7 @@ void Compiler::callSub(const SubInfo& sub, const std::vector<Expr*>& args, uint3
   }
   uint32_t n = static_cast<uint32_t>(args.size());
   uint32_t first = temps(n == 0 ? 1 : n);
+  const auto subIdx = static_cast<uint32_t>(&sub - p_.subs.data());
   for (uint32_t i = 0; i < n; ++i) {
     const Expr* a = args[i];
     if (sub.byRef[i]) {
@@ -175,13 +176,12 @@ void Compiler::callSub(const SubInfo& sub, const std::vector<Expr*>& args, uint3
       uint32_t pc = emit(Op::Move, first + i, variable(a->text), 0, a->loc);
       if (options_.keepCode) {
         p_.code.back().flags = kMoveMayBeUnassigned;
-        copyIns_.push_back({pc, static_cast<uint32_t>(&sub - p_.subs.data()), i});
+        copyIns_.push_back({pc, subIdx, i});
       }
     } else {
       exprInto(a, first + i);
     }
   }
-  uint32_t subIdx = static_cast<uint32_t>(&sub - p_.subs.data());
   emitTransfer(Op::CallSub, subIdx, operandIndex(first), dest, loc);
   for (uint32_t i = 0; i < n; ++i)
     if (sub.byRef[i]) emit(Op::Move, variable(args[i]->text), first + i, 0, args[i]->loc);

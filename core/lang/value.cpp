@@ -53,14 +53,8 @@ std::string_view printedForm(const Value& v, char (&room)[kNumberTextSize]) {
 }
 
 std::string formatValue(const Value& v) {
-  switch (v.type()) {
-    case VType::Int: return std::to_string(v.i());
-    case VType::Num: return formatNumber(v.d());
-    case VType::Str: return v.str();
-    case VType::Arr: return "<array>";
-    case VType::Undef: return "";
-  }
-  return "";
+  char room[kNumberTextSize];
+  return std::string(printedForm(v, room));
 }
 
 bool parseNumber(std::string_view text, Value& out) {

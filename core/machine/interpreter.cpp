@@ -49,6 +49,7 @@ void concatenate(Value& d, Value& a, const Value& b, bool leftDies) {
     s = d.uniqueStr();
   }
   if (s) {
+    // (printedForm here, without the copy, measured 10% slower calls through execute()'s layout.)
     std::string formatted;
     const std::string& right = b.isStr() ? b.str() : (formatted = formatValue(b));
     if (s->size() + right.size() > kMaxStringLength) stringTooLong();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -294,31 +295,6 @@ class DiskReader : public SourceReader {
   }
 };
 
-/// A golden program run in-process as rb run runs it (seed 1, its // stdin: lines), its code
-/// finished or plain; nullopt when it does not load.
-std::optional<rb::test::Outcome> runFile(const std::string& path, const std::string& text, bool finish) {
-  DiskReader reader;
-  DiagnosticList diags;
-  auto loaded = loadProgram(path, text, reader, standardBuiltins(), {}, diags);
-  CompileOptions options;
-  options.finish = finish;
-  auto program = loaded ? compileProgram(*loaded, options, diags) : nullptr;
-  if (!program) return std::nullopt;
-  rb::test::Outcome o;
-  rb::test::TestHost host;
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);)
-    if (auto at = line.find("// stdin: "); at != std::string::npos) host.input.push_back(line.substr(at + 10));
-  Machine machine(host, 1);
-  Interpreter interp(*program, machine);
-  RunLimits limits;
-  limits.maxSteps = 300'000;  // enough for nearly all; a longer one is compared up to there
-  o.result = interp.run(limits);
-  o.out = host.out;
-  if (o.result.error) o.diagnostics = formatDiagnostic(loaded->sources, *o.result.error);
-  return o;
-}
-
 }  // namespace
 
 TEST_CASE("every golden program runs the same with its code finished and plain", "[interpreter]") {
@@ -334,14 +310,24 @@ TEST_CASE("every golden program runs the same with its code finished and plain",
         text.find("// skip:") != std::string::npos)
       continue;
     INFO(path);
-    auto finished = runFile(path, text, true);
-    auto plain = runFile(path, text, false);
-    REQUIRE(finished.has_value() == plain.has_value());
-    if (!plain) continue;
-    CHECK(finished->out == plain->out);
-    CHECK(finished->diagnostics == plain->diagnostics);
-    CHECK(finished->result.status == plain->result.status);
-    CHECK(finished->result.steps == plain->result.steps);
+    // As rb test runs it: seed 1 (runSource's machine) and its // stdin: lines.
+    std::deque<std::string> input;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+      if (auto at = line.find("// stdin: "); at != std::string::npos) input.push_back(line.substr(at + 10));
+    RunLimits limits;
+    limits.maxSteps = 300'000;  // enough for nearly all; a longer one is compared up to there
+    CompileOptions plainCode;
+    plainCode.finish = false;
+    DiskReader reader;
+    auto finished = rb::test::runSource(path, text, reader, input, limits);
+    auto plain = rb::test::runSource(path, text, reader, input, limits, plainCode);
+    REQUIRE(finished.loaded == plain.loaded);
+    if (!plain.loaded) continue;
+    CHECK(finished.out == plain.out);
+    CHECK(finished.diagnostics == plain.diagnostics);
+    CHECK(finished.result.status == plain.result.status);
+    CHECK(finished.result.steps == plain.result.steps);
     ++compared;
   }
   CHECK(compared > 150);

@@ -52,14 +52,14 @@ struct Outcome {
   RunResult result;
 };
 
-/// Loads `text` as "test.bas" (with `files` for includes), compiles and runs it.
-inline Outcome runProgram(const std::string& text, MemoryReader reader = {},
-                          std::deque<std::string> input = {}, RunLimits limits = {},
-                          const CompileOptions& compile = {}) {
+/// Loads `text` as `name` (includes through `reader`), compiles and runs it; `loaded` is false
+/// when the program was rejected before running.
+inline Outcome runSource(const std::string& name, const std::string& text, SourceReader& reader,
+                         std::deque<std::string> input = {}, RunLimits limits = {},
+                         const CompileOptions& compile = {}) {
   Outcome o;
   DiagnosticList diags;
-  reader.files["test.bas"] = text;
-  auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
+  auto loaded = loadProgram(name, text, reader, standardBuiltins(), {}, diags);
   auto program = compileProgram(*loaded, compile, diags);
   for (const Diagnostic& d : diags.all()) o.diagnostics += formatDiagnostic(loaded->sources, d);
   if (!program) return o;
@@ -72,6 +72,14 @@ inline Outcome runProgram(const std::string& text, MemoryReader reader = {},
   o.out = host.out;
   if (o.result.error) o.diagnostics += formatDiagnostic(loaded->sources, *o.result.error);
   return o;
+}
+
+/// Loads `text` as "test.bas" (with `files` for includes), compiles and runs it.
+inline Outcome runProgram(const std::string& text, MemoryReader reader = {},
+                          std::deque<std::string> input = {}, RunLimits limits = {},
+                          const CompileOptions& compile = {}) {
+  reader.files["test.bas"] = text;
+  return runSource("test.bas", text, reader, std::move(input), limits, compile);
 }
 
 }  // namespace rb::test
