@@ -179,6 +179,53 @@ constexpr Base operandBase(uint32_t op) { return static_cast<Base>(op >> kBaseSh
 constexpr uint32_t operandIndex(uint32_t op) { return op & kIndexMask; }
 constexpr uint32_t kNoOperand = 0xffffffffu;
 
+/// Calls f(field) for every field of `in` that holds an operand (a slot of a base, or
+/// kNoOperand where an optional one is absent), whether the instruction reads it or writes it:
+/// what the interpreter re-encodes for its own copy of the code. The first of a run of
+/// consecutive operands (arguments, items, indices, extents) stands for the run.
+template <class F>
+void forEachOperandField(Instr& in, F f) {
+  switch (in.op) {
+    case Op::Jump: case Op::Gosub: case Op::Steps: case Op::Line: case Op::End:
+      break;
+    case Op::Inc: case Op::Dec:
+      f(in.a);
+      break;
+    case Op::JumpIfFalse: case Op::JumpIfTrue: case Op::Print:
+      f(in.b);
+      break;
+    case Op::Move: case Op::Neg: case Op::Not: case Op::BitNot: case Op::ForPrep:
+    case Op::ForLoop: case Op::ForLoop1: case Op::DataAppend: case Op::Format: case Op::Input:
+      f(in.a);
+      f(in.b);
+      break;
+    case Op::Return:
+      f(in.b);  // the result when c is 1
+      break;
+    case Op::CallSub:  // a: the sub, b: where its frame starts (a number of slots)
+      f(in.c);
+      break;
+    case Op::CallBuiltin:  // a: the built-in
+      f(in.b);
+      f(in.c);
+      break;
+    case Op::Dim:
+      f(in.a);
+      f(in.c);
+      break;
+    default:
+      if (isCompareJump(in.op)) {  // a: the target
+        f(in.b);
+        f(in.c);
+      } else {  // R[a] = R[b] op R[c], IndexGet/IndexSet and their 2-D forms
+        f(in.a);
+        f(in.b);
+        f(in.c);
+      }
+      break;
+  }
+}
+
 /// Instructions that hold an address they may go to: the jumps, the for loops and Gosub.
 constexpr bool hasJumpTarget(Op op) {
   return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfTrue || op == Op::Gosub ||

@@ -150,9 +150,9 @@ std::string formatItems(const Value* items, uint32_t n, const std::vector<Tok>& 
 Interpreter::Interpreter(const Program& program, Machine& machine) : prog_(program), m_(machine) {}
 
 std::string Interpreter::slotName(uint32_t op) const {
-  uint32_t idx = operandIndex(op);
-  if (operandBase(op) == Base::Global && idx < prog_.globalNames.size()) return prog_.globalNames[idx];
-  if (operandBase(op) == Base::Frame && sub_ >= 0) {
+  uint32_t idx = runIndex(op);
+  if (runBase(op) == Base::Global && idx < prog_.globalNames.size()) return prog_.globalNames[idx];
+  if (runBase(op) == Base::Frame && sub_ >= 0) {
     const SubInfo& s = prog_.subs[static_cast<size_t>(sub_)];
     if (idx < s.slotNames.size()) return s.slotNames[idx];
   }
@@ -191,7 +191,7 @@ RB_COLD std::vector<Diagnostic> Interpreter::callChain() const {
       notes.push_back({Severity::Note, SourceLoc{}, "... and " + std::to_string(k + 1) + " calls before"});
       break;
     }
-    auto callPc = static_cast<uint32_t>(f.ret - prog_.code.data()) - 1;
+    auto callPc = static_cast<uint32_t>(f.ret - code_.data()) - 1;
     if (callPc >= prog_.locs.size()) continue;
     std::string what = f.sub >= 0 ? "sub '" + prog_.subs[static_cast<size_t>(f.sub)].name + "'" : "the gosub";
     notes.push_back({Severity::Note, prog_.locs[callPc],
@@ -293,7 +293,7 @@ RB_ALWAYS_INLINE Value& Interpreter::element(const OperandBases& B, uint32_t arr
 /// The element G[in.count][R[in.b], R[in.c]] of IndexGet2 and IndexSet2: two in-range integer
 /// indices into a two-dimensional array here, everything else in element2Slow.
 RB_ALWAYS_INLINE Value& Interpreter::element2(const OperandBases& B, const Instr& in) {
-  Value& arr = B.at[static_cast<uint32_t>(Base::Global)][in.count];
+  Value& arr = B.global(in.count);
   const Value& x = B(in.b);
   const Value& y = B(in.c);
   if (arr.isArr() && x.isInt() && y.isInt()) [[likely]] {
@@ -310,7 +310,7 @@ RB_ALWAYS_INLINE Value& Interpreter::element2(const OperandBases& B, const Instr
 
 /// element2's other cases: the same conversions and errors as IndexGet/IndexSet with two indices.
 RB_COLD Value& Interpreter::element2Slow(const Instr& in) {
-  uint32_t arrOp = operand(Base::Global, in.count);
+  uint32_t arrOp = runOperand(operand(Base::Global, in.count));
   ArrObj& a = arrayOperand(arrOp).arr();
   if (bases_(in.b).isUndef()) undefined(in.b);
   if (bases_(in.c).isUndef()) undefined(in.c);
@@ -330,7 +330,7 @@ static RB_COLD void copyElement(Value& d, const Value& e) {
 __attribute__((noinline)) bool Interpreter::forLoopStep(const Instr& in) {
   Value& v = bases_(in.a);
   const Value& limit = bases_(in.b);
-  const Value& step = bases_(in.b + 1);
+  const Value& step = bases_(nextOperand(in.b));
   if (!v.isNumeric()) operandError(in);
   double x = v.asDouble() + step.asDouble();
   v.setNum(x);
@@ -392,19 +392,21 @@ size_t Interpreter::elementOffset(ArrObj& a, uint32_t arrOp, const Value* idx, u
 
 RunResult Interpreter::run(const RunLimits& limits) {
   limits_ = limits;
+  code_ = prog_.code;
+  for (Instr& in : code_) forEachOperandField(in, [](uint32_t& x) { x = runOperand(x); });
   globals_.assign(prog_.globalCount + 1, Value());
   stack_.assign(std::max<size_t>(1024, prog_.mainFrameSize + 16), Value());
   frames_.clear();
   depth_ = depthCap_ = 0;
   subEntries_.clear();
   for (const SubInfo& s : prog_.subs)
-    subEntries_.push_back({prog_.code.data() + s.entry, std::min(s.outputsFrom, s.paramCount), s.localCount,
+    subEntries_.push_back({code_.data() + s.entry, std::min(s.outputsFrom, s.paramCount), s.localCount,
                            s.frameSize + prog_.mainFrameSize + 64});
   base_ = 0;
   sub_ = -1;
-  bases_[Base::Global] = globals_.data();
-  bases_[Base::Frame] = stack_.data();
-  bases_[Base::Const] = const_cast<Value*>(prog_.constants.data());
+  bases_.set(Base::Global, globals_.data());
+  bases_.set(Base::Frame, stack_.data());
+  bases_.set(Base::Const, const_cast<Value*>(prog_.constants.data()));
   errorPc_ = kNoPc;
   stepsDone_ = 0;
   chunk_ = kCheckInterval;
@@ -523,7 +525,7 @@ RB_COLD void Interpreter::badReturn() {
   base_ = f.base;
   sub_ = f.callerSub;
   syncFrame();
-  errorPc_ = static_cast<uint32_t>(f.ret - prog_.code.data()) - 1;
+  errorPc_ = static_cast<uint32_t>(f.ret - code_.data()) - 1;
   throw RuntimeError("sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
                      "' returned no value (use return with a value)");
 }
@@ -545,9 +547,9 @@ void Interpreter::doDim(const Instr& in) {
   std::vector<int64_t> dims;
   uint64_t total = 1;
   for (uint32_t k = 0; k < in.count; ++k) {
-    const Value& e = bases_(in.c + k);
+    const Value& e = bases_(nextOperand(in.c, k));
     if (!e.isNumeric()) {
-      if (e.isUndef()) undefined(in.c + k);
+      if (e.isUndef()) undefined(nextOperand(in.c, k));
       throw RuntimeError("array size must be a number, not " + typeName(e));
     }
     int64_t n = toInteger(e);
@@ -627,7 +629,7 @@ void Interpreter::doInput(const Instr& in) {
     stepsLeft += (in).flags;   \
     ip = code + (target);      \
   } while (0)
-#define SYNC_FRAME() B[Base::Frame] = bases_[Base::Frame]
+#define SYNC_FRAME() B.at[static_cast<uint32_t>(Base::Frame)] = bases_.at[static_cast<uint32_t>(Base::Frame)]
 // After a call into the host that may block (a built-in, input, a traced line): a host that
 // was asked to end the run (the user quit a live view) has returned at once; stop here.
 #define STOP_IF_ASKED()                          \
@@ -653,7 +655,7 @@ void Interpreter::doInput(const Instr& in) {
 __attribute__((optimize("no-crossjumping")))
 #endif
 void Interpreter::execute(uint32_t& pcOut) {
-  const Instr* code = prog_.code.data();
+  const Instr* code = code_.data();
   const Instr* ip = code + pcOut;  // the instruction running
   int64_t stepsLeft = stepsLeft_;
   OperandBases B = bases_;
@@ -682,20 +684,37 @@ void Interpreter::execute(uint32_t& pcOut) {
       Value& a = B(in.b);
       const Value& b = B(in.c);
       Value& d = B(in.a);
-      if (a.isInt() && b.isInt()) {
-        int64_t r;
-        if (!__builtin_add_overflow(a.i(), b.i(), &r)) d.setInt(r);
-        else d.setNum(static_cast<double>(a.i()) + static_cast<double>(b.i()));
-      } else if (a.isNumeric() && b.isNumeric()) {
-        d.setNum(finite(a.asDouble() + b.asDouble()));
-      } else if ((a.isStr() || a.isNumeric()) && (b.isStr() || b.isNumeric())) {
-        concatenate(d, a, b, in.flags & kAddLeftDies);
-        m_.checkAlarms();
-      } else {
-        operandError(in);
-      }
+      // Each common case ends in its own dispatch, so that no path jumps to a shared tail;
+      // two doubles first, straight through, then two integers.
+      if (!a.isNum()) [[unlikely]] goto add_notDoubles;
+      if (!b.isNum()) [[unlikely]] goto add_notDoubles;
+      d.setNum(finite(a.d() + b.d()));
       ++ip;
       NEXT;
+    add_notDoubles:
+      if (a.isInt() && b.isInt()) [[likely]] {
+        int64_t r;
+        if (!__builtin_add_overflow(a.i(), b.i(), &r)) [[likely]] {
+          d.setInt(r);
+          ++ip;
+          NEXT;
+        }
+        d.setNum(static_cast<double>(a.i()) + static_cast<double>(b.i()));
+        ++ip;
+        NEXT;
+      }
+      if (a.isNumeric() && b.isNumeric()) {
+        d.setNum(finite(a.asDouble() + b.asDouble()));
+        ++ip;
+        NEXT;
+      }
+      if ((a.isStr() || a.isNumeric()) && (b.isStr() || b.isNumeric())) {
+        concatenate(d, a, b, in.flags & kAddLeftDies);
+        m_.checkAlarms();
+        ++ip;
+        NEXT;
+      }
+      operandError(in);
     }
 // - and *: integers while the result fits, else doubles. One handler each (no test of the
 // opcode inside).
@@ -725,15 +744,17 @@ void Interpreter::execute(uint32_t& pcOut) {
   const Value& a = B(in.b);                                           \
   double k = B(in.c).d();                                             \
   Value& d = B(in.a);                                                 \
-  if (a.isNum()) [[likely]] {                                         \
+  if (a.isNum()) {                                                    \
     d.setNum(finite(a.d() op k));                                     \
-  } else if (a.isInt()) {                                             \
-    d.setNum(finite(static_cast<double>(a.i()) op k));                \
-  } else {                                                            \
-    goto general;                                                     \
+    ++ip;                                                             \
+    NEXT;                                                             \
   }                                                                   \
-  ++ip;                                                               \
-  NEXT
+  if (a.isInt()) [[likely]] {                                         \
+    d.setNum(finite(static_cast<double>(a.i()) op k));                \
+    ++ip;                                                             \
+    NEXT;                                                             \
+  }                                                                   \
+  goto general
 #define ARITHMETIC_KINT(overflows, op, general)                       \
   const Instr& in = *ip;                                              \
   const Value& a = B(in.b);                                           \
@@ -945,7 +966,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       COUNT_STEPS(in);
       Value& v = B(in.a);
       const Value& limit = B(in.b);
-      const Value& step = B(in.b + 1);
+      const Value& step = B(nextOperand(in.b));
       if (!v.isNumeric() || !limit.isNumeric() || !step.isNumeric()) operandError(in);
       if (step.asDouble() == 0) raise("for loop step is zero (the loop would never end)");
       bool enter;
@@ -965,7 +986,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       COUNT_STEPS(in);
       Value& v = B(in.a);
       const Value& limit = B(in.b);
-      const Value& step = B(in.b + 1);
+      const Value& step = B(nextOperand(in.b));
       int64_t r;
       if (v.isInt() && limit.isInt() && step.isInt() && !__builtin_add_overflow(v.i(), step.i(), &r)) {
         v.setInt(r);
@@ -986,7 +1007,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       Value& v = B(in.a);
       const Value& limit = B(in.b);
       if (v.isInt() && limit.isInt()) [[likely]] {
-        if (v.i() < limit.i()) {  // so v + 1 <= limit, and no overflow
+        if (v.i() < limit.i()) [[likely]] {  // so v + 1 <= limit, and no overflow
           v.setInt(v.i() + 1);
           JUMP_TAKEN(in, in.c);
           NEXT;
@@ -1042,7 +1063,8 @@ void Interpreter::execute(uint32_t& pcOut) {
       for (uint32_t i = s.clearFrom; i < s.localCount; ++i) frame[i].clear();
       base_ = newBase;
       sub_ = static_cast<int32_t>(in.a);
-      B[Base::Frame] = bases_[Base::Frame] = frame;
+      bases_.set(Base::Frame, frame);
+      SYNC_FRAME();
       ip = s.entry;
       NEXT;
     }

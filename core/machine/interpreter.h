@@ -69,16 +69,30 @@ class Interpreter {
     int32_t callerSub;   ///< the sub the caller ran (-1: main code)
   };
 
-  /// Where operands point: operand x names bases[operandBase(x)][operandIndex(x)].
+  /// The interpreter runs its own copy of the program's code (code_) whose operands are
+  /// re-encoded: slot i of base s becomes i * 16 + s, the slot's byte offset with the base's
+  /// number in its low bits (a slot is 16 bytes, so they are free). Finding a slot is then a
+  /// mask, a load of the base and an add (runOperand makes one; kNoOperand stays itself).
+  static constexpr uint32_t runOperand(uint32_t op) {
+    return op == kNoOperand ? kNoOperand : (operandIndex(op) << 4) | static_cast<uint32_t>(operandBase(op));
+  }
+  static constexpr uint32_t runIndex(uint32_t x) { return x >> 4; }
+  static constexpr Base runBase(uint32_t x) { return static_cast<Base>(x & 3); }
+  /// The operand `count` slots after x (consecutive arguments, a for loop's step).
+  static constexpr uint32_t nextOperand(uint32_t x, uint32_t count = 1) { return x + (count << 4); }
+
+  /// Where operands point: each base less its own number, so that at[x & 3] + x is the slot.
   struct OperandBases {
-    Value* at[3] = {nullptr, nullptr, nullptr};
-    Value*& operator[](Base b) { return at[static_cast<uint32_t>(b)]; }
-    /// Slot i of a base is i * 16 bytes in: shifting in 32 bits drops the base bits (indices
-    /// stay below kMaxSlots), one instruction fewer than masking them.
+    char* at[4] = {nullptr, nullptr, nullptr, nullptr};
+    void set(Base b, Value* p) {
+      at[static_cast<uint32_t>(b)] = reinterpret_cast<char*>(p) - static_cast<uint32_t>(b);
+    }
     Value& operator()(uint32_t x) const {
       static_assert(sizeof(Value) == 16, "a slot is 16 bytes");
-      return *reinterpret_cast<Value*>(reinterpret_cast<char*>(at[x >> kBaseShift]) + static_cast<uint32_t>(x << 4));
+      return *reinterpret_cast<Value*>(at[x & 3] + x);
     }
+    /// Global slot i (IndexGet2's array).
+    Value& global(uint32_t i) const { return reinterpret_cast<Value*>(at[0])[i]; }
   };
 
   void execute(uint32_t& pc);
@@ -99,7 +113,7 @@ class Interpreter {
   }
   void growStack(size_t size);
   /// Points the frame base at the current frame (after a call, a return or a stack growth).
-  void syncFrame() { bases_[Base::Frame] = stack_.data() + base_; }
+  void syncFrame() { bases_.set(Base::Frame, stack_.data() + base_); }
   bool compare(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
   bool compareOthers(Cmp cmp, const Value& a, const Value& b, const Instr& in) const;
   Value& element(const OperandBases& B, uint32_t arrOp, uint32_t idxOp, uint16_t count);
@@ -116,6 +130,7 @@ class Interpreter {
 
   const Program& prog_;
   Machine& m_;
+  std::vector<Instr> code_;  ///< prog_.code with its operands re-encoded (runOperand)
   std::vector<Value> globals_;
   std::vector<Value> stack_;
   /// What a call of each sub needs, gathered from Program::subs when a run starts.
