@@ -251,9 +251,13 @@ struct SubInfo {
   uint32_t localCount = 0;   ///< parameters + locals (named slots)
   /// Parameters from this one on are by-reference (&) parameters that the sub gives a value
   /// on every path before it reads them or returns: calls do not copy the caller's variables in,
-  /// and the call empties these slots with the locals (see compiler_finish.cpp). paramCount
-  /// or more when there are none.
+  /// (see compiler_finish.cpp). paramCount or more when there are none.
   uint32_t outputsFrom = UINT32_MAX;
+  /// A call empties slots emptyFrom..emptyTo-1 so that no path sees what an earlier call left
+  /// there: all the locals, or, once the finisher has run, those that some path may read
+  /// before giving them a value (an output never is).
+  uint32_t emptyFrom = 0;
+  uint32_t emptyTo = 0;
   std::vector<std::string> slotNames;  ///< names of the named frame slots
   std::vector<bool> byRef;
 };

@@ -68,6 +68,11 @@ class Dumper {
       for (uint32_t i = s.outputsFrom; i < s.paramCount && i < s.slotNames.size(); ++i)
         out_ += " &" + s.slotNames[i];
     }
+    if (s.emptyFrom != s.paramCount || s.emptyTo != s.localCount) {
+      out_ += "; a call empties";
+      if (s.emptyFrom >= s.emptyTo) out_ += " none";
+      for (uint32_t i = s.emptyFrom; i < s.emptyTo && i < s.slotNames.size(); ++i) out_ += " " + s.slotNames[i];
+    }
     out_ += "\n";
     lastLine_ = SourceLoc{};
   }

@@ -4,10 +4,13 @@
 //
 // - Outputs are not copied in. A by-reference parameter that the sub gives a value on every
 //   path before it reads it or returns is an output: the caller's value could never be seen, so
-//   calls skip the Move that copies it in, and the call empties the slot with the locals
-//   (SubInfo::outputsFrom). Only a run of such parameters at the end of the list qualifies,
-//   since the call empties one range of slots. `call Fib(n - 1, a)` with `sub Fib(n, &r)` that
-//   sets r on both branches saves an instruction per call.
+//   calls skip the Move that copies it in (SubInfo::outputsFrom). Only a run of such
+//   parameters at the end of the list qualifies. `call Fib(n - 1, a)` with `sub Fib(n, &r)`
+//   that sets r on both branches saves an instruction per call.
+// - A call empties only the locals that some path may read before giving them a value
+//   (SubInfo::emptyFrom..emptyTo): a local the sub always writes first, or an output, may keep
+//   what an earlier call left in its slot, since nothing reads it. `sub Work(a, b, c)` whose
+//   `x = a + b` and `y = x * c` come first empties nothing.
 // - +, - and * with a number constant on the right become their K forms (AddKNum, AddKInt..),
 //   whose handlers test only the left operand: `x = x + 0.5`, `n - 1`.
 // - A jump to a return, an end or another jump becomes that instruction (with both step
@@ -119,6 +122,8 @@ void Compiler::finishCode() {
     }
   }
   if (any) removeInstructions(dead);
+  // After the copies-in of outputs are gone: they read the caller's variables.
+  for (SubInfo& s : p_.subs) narrowEmptied(s);
   threadJumps();
   specializeConstants();
 }
@@ -136,22 +141,21 @@ void Compiler::specializeConstants() {
   }
 }
 
-/// The first of the by-reference parameters at the end of `sub`'s list that the sub gives a
-/// value on every path before reading it or returning (paramCount: none). A forward "surely
-/// given a value" analysis over the sub's code, one bit per such parameter; code that leaves
-/// the sub's instructions (a gosub, a goto out) makes every parameter an input.
-uint32_t Compiler::outputsFrom(const SubInfo& sub) const {
-  uint32_t first = sub.paramCount;
-  while (first > 0 && sub.byRef[first - 1] && sub.paramCount - (first - 1) <= 64) --first;
-  if (first == sub.paramCount || sub.end <= sub.entry || sub.end > p_.code.size()) return sub.paramCount;
-  uint32_t count = sub.paramCount - first;
+/// The slots first..first+count-1 of `sub`'s frame (count <= 64) that some path through the
+/// sub reads before giving them a value, one bit each: a forward "surely given a value"
+/// analysis over the sub's code. With `returnReads`, a return reads them all (the call copies
+/// by-reference parameters out). Code that leaves the sub's instructions (a gosub, a goto out)
+/// makes every slot read.
+uint64_t Compiler::readBeforeGiven(const SubInfo& sub, uint32_t first, uint32_t count, bool returnReads) const {
   uint64_t all = count == 64 ? ~uint64_t(0) : (uint64_t(1) << count) - 1;
-  auto bit = [&](uint32_t x) -> uint64_t {  // the parameter's bit, or 0 for any other operand
+  if (count == 0) return 0;
+  if (count > 64 || sub.end <= sub.entry || sub.end > p_.code.size()) return all;
+  auto bit = [&](uint32_t x) -> uint64_t {  // the slot's bit, or 0 for any other operand
     if (operandBase(x) != Base::Frame) return 0;
     uint32_t i = operandIndex(x);
-    return i >= first && i < sub.paramCount ? uint64_t(1) << (i - first) : 0;
+    return i >= first && i - first < count ? uint64_t(1) << (i - first) : 0;
   };
-  uint64_t inputs = 0;  // parameters some path reads before giving them a value
+  uint64_t inputs = 0;  // slots some path reads before giving them a value
   std::vector<uint64_t> given(sub.end - sub.entry, 0);
   std::vector<bool> seen(sub.end - sub.entry, false);
   std::vector<uint32_t> work{sub.entry};
@@ -176,20 +180,50 @@ uint32_t Compiler::outputsFrom(const SubInfo& sub) const {
     work.pop_back();
     const Instr& in = p_.code[pc];
     uint64_t state = given[pc - sub.entry];
-    if (in.op == Op::Gosub) {
-      inputs = all;
-      break;
-    }
+    if (in.op == Op::Gosub) return all;
     forEachRead(in, p_.subs, [&](uint32_t x) { inputs |= bit(x) & ~state; });
-    if (in.op == Op::Return) inputs |= all & ~state;  // the call copies every & parameter out
+    if (in.op == Op::Return && returnReads) inputs |= all & ~state;
     state |= bit(written(in));
     if (uint32_t t = jumpTarget(in); t != kNoOperand) flow(t, state);
     if (fallsThrough(in.op)) flow(pc + 1, state);
   }
+  return inputs;
+}
+
+/// The first of the by-reference parameters at the end of `sub`'s list that the sub gives a
+/// value on every path before reading it or returning (paramCount: none).
+uint32_t Compiler::outputsFrom(const SubInfo& sub) const {
+  uint32_t first = sub.paramCount;
+  while (first > 0 && sub.byRef[first - 1] && sub.paramCount - (first - 1) <= 64) --first;
+  if (first == sub.paramCount) return sub.paramCount;
+  uint64_t inputs = readBeforeGiven(sub, first, sub.paramCount - first, true);
   // The outputs are the parameters after the last input.
   uint32_t from = sub.paramCount;
   while (from > first && !(inputs & (uint64_t(1) << (from - 1 - first)))) --from;
   return from;
+}
+
+/// Narrows the slots a call of `sub` empties (SubInfo::emptyFrom..emptyTo) to the locals that
+/// some path may read before giving them a value: a slot the sub always writes first can keep
+/// what an earlier call left there, since nothing sees it. Outputs are never read first.
+void Compiler::narrowEmptied(SubInfo& sub) const {
+  uint32_t from = sub.paramCount, to = sub.localCount;
+  if (to <= from) {
+    sub.emptyFrom = sub.emptyTo = from;
+    return;
+  }
+  if (to - from > 64) {
+    sub.emptyFrom = from;
+    sub.emptyTo = to;
+    return;
+  }
+  uint64_t inputs = readBeforeGiven(sub, from, to - from, false);
+  if (inputs == 0) {
+    sub.emptyFrom = sub.emptyTo = from;
+    return;
+  }
+  sub.emptyFrom = from + static_cast<uint32_t>(__builtin_ctzll(inputs));
+  sub.emptyTo = from + 64 - static_cast<uint32_t>(__builtin_clzll(inputs));
 }
 
 /// Removes the instructions marked dead, moving every address (jump targets, sub entries and

@@ -205,7 +205,9 @@ class Compiler {
 
   // ---- finishing the code (compiler_finish.cpp)
   void finishCode();
+  uint64_t readBeforeGiven(const SubInfo& sub, uint32_t first, uint32_t count, bool returnReads) const;
   uint32_t outputsFrom(const SubInfo& sub) const;
+  void narrowEmptied(SubInfo& sub) const;
   void removeInstructions(const std::vector<bool>& dead);
   void threadJumps();
   void specializeConstants();

@@ -71,6 +71,8 @@ void Compiler::endSub(SourceLoc loc) {
     SubInfo& info = p_.subs[static_cast<size_t>(subScope_.sub)];
     info.frameSize = subScope_.localCount + subScope_.maxTemp;
     info.end = codeSize_;
+    info.emptyFrom = info.paramCount;  // narrowed by the finisher (narrowEmptied)
+    info.emptyTo = info.localCount;
   }
   scope_ = &global_;
   patch(subSkip_, placeTarget());

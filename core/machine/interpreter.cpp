@@ -400,7 +400,7 @@ RunResult Interpreter::run(const RunLimits& limits) {
   depth_ = depthCap_ = 0;
   subEntries_.clear();
   for (const SubInfo& s : prog_.subs)
-    subEntries_.push_back({code_.data() + s.entry, std::min(s.outputsFrom, s.paramCount), s.localCount,
+    subEntries_.push_back({code_.data() + s.entry, s.emptyFrom, s.emptyTo,
                            s.frameSize + prog_.mainFrameSize + 64});
   base_ = 0;
   sub_ = -1;
@@ -1060,7 +1060,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       uint32_t newBase = base_ + in.b;
       ensureStack(size_t(newBase) + s.stackNeed);
       Value* frame = stack_.data() + newBase;
-      for (uint32_t i = s.clearFrom; i < s.localCount; ++i) frame[i].clear();
+      for (uint32_t i = s.emptyFrom; i < s.emptyTo; ++i) frame[i].clear();
       base_ = newBase;
       sub_ = static_cast<int32_t>(in.a);
       bases_.set(Base::Frame, frame);

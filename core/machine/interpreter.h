@@ -136,8 +136,8 @@ class Interpreter {
   /// What a call of each sub needs, gathered from Program::subs when a run starts.
   struct SubEntry {
     const Instr* entry;
-    uint32_t clearFrom;  ///< the call empties slots clearFrom..localCount-1: outputs and locals
-    uint32_t localCount;
+    uint32_t emptyFrom;  ///< the call empties slots emptyFrom..emptyTo-1 (SubInfo)
+    uint32_t emptyTo;
     uint32_t stackNeed;  ///< stack slots the call makes sure of past the new frame base
   };
   std::vector<SubEntry> subEntries_;
