@@ -337,10 +337,12 @@ __attribute__((noinline)) bool Interpreter::forLoopStep(const Instr& in) {
   return step.asDouble() > 0 ? x <= limit.asDouble() : x >= limit.asDouble();
 }
 
-/// Enters a gosub or a sub call; the one place that limits how deep calls nest.
-RB_ALWAYS_INLINE void Interpreter::pushFrame(const Frame& f) {
+/// Enters a gosub or a sub call: the new frame, for the caller to fill in field by field (a
+/// whole Frame built first went through vector registers); the one place that limits how
+/// deep calls nest.
+RB_ALWAYS_INLINE Interpreter::Frame& Interpreter::pushFrame() {
   if (depth_ >= depthCap_) [[unlikely]] growFrames();
-  frames_[depth_++] = f;
+  return frames_[depth_++];
 }
 
 RB_COLD void Interpreter::growFrames() {
@@ -353,6 +355,7 @@ RB_COLD void Interpreter::growFrames() {
 RB_COLD void Interpreter::growStack(size_t size) {
   size_t grown = stack_.size() * 2;
   stack_.resize(grown > size ? grown : size);
+  stackSize_ = stack_.size();
   syncFrame();
 }
 
@@ -396,6 +399,7 @@ RunResult Interpreter::run(const RunLimits& limits) {
   for (Instr& in : code_) forEachOperandField(in, [](uint32_t& x) { x = runOperand(x); });
   globals_.assign(prog_.globalCount + 1, Value());
   stack_.assign(std::max<size_t>(1024, prog_.mainFrameSize + 16), Value());
+  stackSize_ = stack_.size();
   frames_.clear();
   depth_ = depthCap_ = 0;
   subEntries_.clear();
@@ -651,8 +655,10 @@ void Interpreter::doInput(const Instr& in) {
 // GCC merges the handlers' identical tails (the fetch and jump of NEXT) into one shared
 // copy, which puts an extra jump in every handler and makes all of them share one
 // indirect-branch prediction; keeping the copies apart is the point of threaded dispatch.
+// GCC would also pack a call frame's 4-byte fields into vector registers before storing them
+// (the SLP vectorizer), which takes more instructions than storing each.
 #if defined(__GNUC__) && !defined(__clang__)
-__attribute__((optimize("no-crossjumping")))
+__attribute__((optimize("no-crossjumping", "no-tree-slp-vectorize")))
 #endif
 void Interpreter::execute(uint32_t& pcOut) {
   const Instr* code = code_.data();
@@ -1025,7 +1031,12 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(Gosub) {
       const Instr& in = *ip;
       COUNT_STEPS(in);
-      pushFrame({ip + 1, base_, kNoOperand, -1, sub_});
+      Frame& f = pushFrame();
+      f.ret = ip + 1;
+      f.base = base_;
+      f.dest = kNoOperand;
+      f.sub = -1;
+      f.callerSub = sub_;
       base_ += in.b;
       ensureStack(size_t(base_) + prog_.mainFrameSize + 64);
       syncFrame();
@@ -1045,7 +1056,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       if (fromSub ? (!in.c && f.dest != kNoOperand) : in.c != 0) [[unlikely]] badReturn();
       --depth_;
       base_ = f.base;
-      if (fromSub) sub_ = f.callerSub;
+      sub_ = f.callerSub;  // a gosub's frame keeps its caller's sub too
       syncFrame();
       SYNC_FRAME();
       ip = f.ret;
@@ -1055,7 +1066,12 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(CallSub) {
       const Instr& in = *ip;
       COUNT_STEPS(in);
-      pushFrame({ip + 1, base_, in.c, static_cast<int32_t>(in.a), sub_});
+      Frame& f = pushFrame();
+      f.ret = ip + 1;
+      f.base = base_;
+      f.dest = in.c;
+      f.sub = static_cast<int32_t>(in.a);
+      f.callerSub = sub_;
       const SubEntry& s = subEntries_[in.a];
       uint32_t newBase = base_ + in.b;
       ensureStack(size_t(newBase) + s.stackNeed);

@@ -104,12 +104,12 @@ class Interpreter {
   void doInput(const Instr& in);
   void doDataAppend(const Instr& in);
   bool checkpoint();
-  void pushFrame(const Frame& f);
+  Frame& pushFrame();
   void growFrames();
   bool forLoopStep(const Instr& in);
   /// Makes the stack hold at least `size` values (growing it moves the frame base).
   void ensureStack(size_t size) {
-    if (size > stack_.size()) growStack(size);
+    if (size > stackSize_) [[unlikely]] growStack(size);
   }
   void growStack(size_t size);
   /// Points the frame base at the current frame (after a call, a return or a stack growth).
@@ -133,6 +133,7 @@ class Interpreter {
   std::vector<Instr> code_;  ///< prog_.code with its operands re-encoded (runOperand)
   std::vector<Value> globals_;
   std::vector<Value> stack_;
+  size_t stackSize_ = 0;  ///< stack_.size(), kept for the calls' check
   /// What a call of each sub needs, gathered from Program::subs when a run starts.
   struct SubEntry {
     const Instr* entry;
