@@ -748,7 +748,7 @@ void Interpreter::execute(uint32_t& pcOut) {
 #define ARITHMETIC_KNUM(op, general)                                  \
   const Instr& in = *ip;                                              \
   const Value& a = B(in.b);                                           \
-  double k = B(in.c).d();                                             \
+  double k = B.constant(in.c).d();                                             \
   Value& d = B(in.a);                                                 \
   if (a.isNum()) {                                                    \
     d.setNum(finite(a.d() op k));                                     \
@@ -764,7 +764,7 @@ void Interpreter::execute(uint32_t& pcOut) {
 #define ARITHMETIC_KINT(overflows, op, general)                       \
   const Instr& in = *ip;                                              \
   const Value& a = B(in.b);                                           \
-  int64_t k = B(in.c).i();                                            \
+  int64_t k = B.constant(in.c).i();                                            \
   Value& d = B(in.a);                                                 \
   int64_t r;                                                          \
   if (a.isInt() && !overflows(a.i(), k, &r)) [[likely]] {             \

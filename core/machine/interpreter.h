@@ -91,6 +91,10 @@ class Interpreter {
       static_assert(sizeof(Value) == 16, "a slot is 16 bytes");
       return *reinterpret_cast<Value*>(at[x & 3] + x);
     }
+    /// Operand x that is known to be a constant: no need to look its base up.
+    const Value& constant(uint32_t x) const {
+      return *reinterpret_cast<const Value*>(at[static_cast<uint32_t>(Base::Const)] + x);
+    }
     /// Global slot i (IndexGet2's array).
     Value& global(uint32_t i) const { return reinterpret_cast<Value*>(at[0])[i]; }
   };
