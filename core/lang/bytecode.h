@@ -80,7 +80,12 @@ class BuiltinTable;
   /* statement boundary, emitted only in line-tracing mode */                                \
   X(Line)                                                                                    \
   /* stop the program (`steps` statements counted) */                                        \
-  X(End)
+  X(End)                                                                                     \
+  /* The interpreter's own forms, never compiled: it makes them in its copy of the code   */  \
+  /* from Add, AddKNum, AddKInt and SubKInt whose result replaces their left operand       */  \
+  /* (`x = x + y`, `n = n + 1`), where a test of that operand also tells that the result   */  \
+  /* replaces a number, and leaves every other case to the general form                    */  \
+  X(AddSelf) X(AddKNumSelf) X(AddKIntSelf) X(SubKIntSelf)
 
 enum class Op : uint8_t {
 #define RB_OPCODE_ENUM(name) name,
@@ -116,8 +121,9 @@ constexpr Cmp compareOf(Op op) {
 /// name, since a specialized handler leaves every case it does not take to the general one.
 constexpr Op generalOp(Op op) {
   switch (op) {
-    case Op::AddKNum: case Op::AddKInt: return Op::Add;
-    case Op::SubKNum: case Op::SubKInt: return Op::Sub;
+    case Op::AddKNum: case Op::AddKInt: case Op::AddSelf: case Op::AddKNumSelf: case Op::AddKIntSelf:
+      return Op::Add;
+    case Op::SubKNum: case Op::SubKInt: case Op::SubKIntSelf: return Op::Sub;
     case Op::MulKNum: case Op::MulKInt: return Op::Mul;
     default: return op;
   }

@@ -33,6 +33,18 @@ constexpr size_t kMaxStringLength = 64u << 20;
 
 [[noreturn]] RB_COLD void raise(const char* message) { throw RuntimeError(message); }
 
+/// The interpreter's own form of an instruction whose result replaces its left operand
+/// (RB_OPCODES' last group), or `op` itself.
+Op selfForm(Op op) {
+  switch (op) {
+    case Op::Add: return Op::AddSelf;
+    case Op::AddKNum: return Op::AddKNumSelf;
+    case Op::AddKInt: return Op::AddKIntSelf;
+    case Op::SubKInt: return Op::SubKIntSelf;
+    default: return op;
+  }
+}
+
 [[noreturn]] RB_COLD void stringTooLong() {
   throw RuntimeError("string too long (more than " + std::to_string(kMaxStringLength) + " characters)");
 }
@@ -396,7 +408,10 @@ size_t Interpreter::elementOffset(ArrObj& a, uint32_t arrOp, const Value* idx, u
 RunResult Interpreter::run(const RunLimits& limits) {
   limits_ = limits;
   code_ = prog_.code;
-  for (Instr& in : code_) forEachOperandField(in, [](uint32_t& x) { x = runOperand(x); });
+  for (Instr& in : code_) {
+    forEachOperandField(in, [](uint32_t& x) { x = runOperand(x); });
+    if (in.a == in.b) in.op = selfForm(in.op);
+  }
   globals_.assign(prog_.globalCount + 1, Value());
   stack_.assign(std::max<size_t>(1024, prog_.mainFrameSize + 16), Value());
   stackSize_ = stack_.size();
@@ -784,6 +799,63 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(MulKInt) { ARITHMETIC_KINT(__builtin_mul_overflow, *, op_Mul); }
 #undef ARITHMETIC_KNUM
 #undef ARITHMETIC_KINT
+    // The forms whose result replaces the left operand: the test of that operand's type also
+    // says that no string or array is being replaced, so the result is stored as it is.
+    CASE(AddSelf) {
+      const Instr& in = *ip;
+      Value& a = B(in.b);
+      const Value& b = B(in.c);
+      if (!a.isNum()) [[unlikely]] goto addSelf_notDoubles;
+      if (!b.isNum()) [[unlikely]] goto addSelf_notDoubles;
+      a.setNum(finite(a.d() + b.d()));
+      ++ip;
+      NEXT;
+    addSelf_notDoubles:
+      if (a.isInt() && b.isInt()) [[likely]] {
+        int64_t r;
+        if (!__builtin_add_overflow(a.i(), b.i(), &r)) [[likely]] {
+          a.setInt(r);
+          ++ip;
+          NEXT;
+        }
+      }
+      goto op_Add;
+    }
+    CASE(AddKNumSelf) {
+      const Instr& in = *ip;
+      Value& a = B(in.b);
+      double k = B.constant(in.c).d();
+      if (a.isNum()) [[likely]] {
+        a.setNum(finite(a.d() + k));
+        ++ip;
+        NEXT;
+      }
+      goto op_AddKNum;
+    }
+    CASE(AddKIntSelf) {
+      const Instr& in = *ip;
+      Value& a = B(in.b);
+      int64_t k = B.constant(in.c).i();
+      int64_t r;
+      if (a.isInt() && !__builtin_add_overflow(a.i(), k, &r)) [[likely]] {
+        a.setInt(r);
+        ++ip;
+        NEXT;
+      }
+      goto op_AddKInt;
+    }
+    CASE(SubKIntSelf) {
+      const Instr& in = *ip;
+      Value& a = B(in.b);
+      int64_t k = B.constant(in.c).i();
+      int64_t r;
+      if (a.isInt() && !__builtin_sub_overflow(a.i(), k, &r)) [[likely]] {
+        a.setInt(r);
+        ++ip;
+        NEXT;
+      }
+      goto op_SubKInt;
+    }
     CASE(Div) {
       const Instr& in = *ip;
       const Value& a = B(in.b);
