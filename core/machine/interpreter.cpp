@@ -671,9 +671,11 @@ void Interpreter::doInput(const Instr& in) {
 // copy, which puts an extra jump in every handler and makes all of them share one
 // indirect-branch prediction; keeping the copies apart is the point of threaded dispatch.
 // GCC would also pack a call frame's 4-byte fields into vector registers before storing them
-// (the SLP vectorizer), which takes more instructions than storing each.
+// (the SLP vectorizer), which takes more instructions than storing each, and its global common
+// subexpression elimination (as GCC's manual warns for computed gotos) keeps values such as the
+// constants' base in registers across every dispatch, which costs two instructions in each.
 #if defined(__GNUC__) && !defined(__clang__)
-__attribute__((optimize("no-crossjumping", "no-tree-slp-vectorize")))
+__attribute__((optimize("no-crossjumping", "no-tree-slp-vectorize", "no-gcse")))
 #endif
 void Interpreter::execute(uint32_t& pcOut) {
   const Instr* code = code_.data();
