@@ -178,6 +178,9 @@ constexpr uint32_t kIndexMask = (1u << kBaseShift) - 1;
 /// computed in 32 bits, which drops the base bits only while i stays below 2^26.
 constexpr uint32_t kMaxSlots = 1u << 26;
 enum class Base : uint32_t { Global = 0, Frame = 1, Const = 2 };
+/// Instructions a program may have: the interpreter finds a jump's target at byte offset
+/// target * 16, computed in 32 bits.
+constexpr uint32_t kMaxInstructions = 1u << 28;
 constexpr uint32_t operand(Base base, uint32_t index) {
   return (static_cast<uint32_t>(base) << kBaseShift) | index;
 }

@@ -60,6 +60,10 @@ void Compiler::run() {
     diags_.error(lastLoc(), "the program is too large (more than " + std::to_string(kMaxSlots) +
                                 " variables, constants or temporaries in one place)",
                  "rb-program-too-large");
+  if (codeSize_ >= kMaxInstructions)
+    diags_.error(lastLoc(), "the program is too large (more than " + std::to_string(kMaxInstructions) +
+                                " instructions)",
+                 "rb-program-too-large");
 }
 
 /// Pass 1: declares labels and subs before compiling, so that forward references resolve.

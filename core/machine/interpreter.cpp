@@ -411,6 +411,11 @@ RunResult Interpreter::run(const RunLimits& limits) {
   for (Instr& in : code_) {
     forEachOperandField(in, [](uint32_t& x) { x = runOperand(x); });
     if (in.a == in.b) in.op = selfForm(in.op);
+    // Jump targets become byte offsets (below kMaxInstructions * 16, checked by the compiler).
+    if (hasJumpTarget(in.op)) jumpTargetField(in) *= sizeof(Instr);
+    // ForLoop1 gives no statements back when it jumps (below); one that must is left to
+    // ForLoop, which reads the step of 1 from its slot.
+    if (in.op == Op::ForLoop1 && in.flags != 0) in.op = Op::ForLoop;
   }
   globals_.assign(prog_.globalCount + 1, Value());
   stack_.assign(std::max<size_t>(1024, prog_.mainFrameSize + 16), Value());
@@ -646,7 +651,7 @@ void Interpreter::doInput(const Instr& in) {
 #define JUMP_TAKEN(in, target) \
   do {                         \
     stepsLeft += (in).flags;   \
-    ip = code + (target);      \
+    ip = at(target);           \
   } while (0)
 #define SYNC_FRAME() B.at[static_cast<uint32_t>(Base::Frame)] = bases_.at[static_cast<uint32_t>(Base::Frame)]
 // After a call into the host that may block (a built-in, input, a traced line): a host that
@@ -680,6 +685,10 @@ __attribute__((optimize("no-crossjumping", "no-tree-slp-vectorize", "no-gcse")))
 void Interpreter::execute(uint32_t& pcOut) {
   const Instr* code = code_.data();
   const Instr* ip = code + pcOut;  // the instruction running
+  // The instruction a jump goes to: its target is a byte offset into the code (run()).
+  auto at = [code](uint32_t target) {
+    return reinterpret_cast<const Instr*>(reinterpret_cast<const char*>(code) + target);
+  };
   int64_t stepsLeft = stepsLeft_;
   OperandBases B = bases_;
   static const void* const kDispatch[] = {
@@ -1022,7 +1031,7 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(Jump) {
       const Instr& in = *ip;
       COUNT_STEPS(in);
-      ip = code + in.a;
+      ip = at(in.a);
       NEXT;
     }
     CASE(JumpIfFalse)
@@ -1089,7 +1098,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       if (v.isInt() && limit.isInt()) [[likely]] {
         if (v.i() < limit.i()) [[likely]] {  // so v + 1 <= limit, and no overflow
           v.setInt(v.i() + 1);
-          JUMP_TAKEN(in, in.c);
+          ip = at(in.c);  // JUMP_TAKEN without giving steps back: flags is 0 (run())
           NEXT;
         }
         if (v.i() < INT64_MAX) {
@@ -1115,7 +1124,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       ensureStack(size_t(base_) + prog_.mainFrameSize + 64);
       syncFrame();
       SYNC_FRAME();
-      ip = code + in.a;
+      ip = at(in.a);
       NEXT;
     }
     CASE(Return) {
