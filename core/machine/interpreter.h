@@ -85,7 +85,9 @@ class Interpreter {
   struct OperandBases {
     char* at[4] = {nullptr, nullptr, nullptr, nullptr};
     void set(Base b, Value* p) {
-      at[static_cast<uint32_t>(b)] = reinterpret_cast<char*>(p) - static_cast<uint32_t>(b);
+      // In integers: an empty base (no constants) is a null pointer, which may not be offset.
+      at[static_cast<uint32_t>(b)] =
+          reinterpret_cast<char*>(reinterpret_cast<uintptr_t>(p) - static_cast<uint32_t>(b));
     }
     Value& operator()(uint32_t x) const {
       static_assert(sizeof(Value) == 16, "a slot is 16 bytes");
