@@ -21,6 +21,7 @@ namespace rb {
 #if defined(RB_LARGE_MEMORY_MAPPED)
 namespace {
 constexpr std::size_t kHuge = std::size_t{2} << 20;  // the x86-64 and arm64 huge page
+constexpr std::size_t kHugeAdvisedUpTo = 2 * kHuge;  // blocks of more get small pages
 std::size_t mappedSize(std::size_t bytes) { return (bytes + kHuge - 1) & ~(kHuge - 1); }
 }  // namespace
 
@@ -51,8 +52,13 @@ void prepareLarge(void* p, std::size_t bytes) noexcept {
   const std::uintptr_t end = start + bytes;
   // Advice only: a range the kernel refuses is left as it was.
 #if defined(MADV_HUGEPAGE)  // refused where huge pages are off: small pages then
+  // Only a few huge pages: on a virtual machine a fresh huge page may be memory the host has
+  // not backed yet, and then costs what its 512 small pages' faults would (about 4 ms on the
+  // AMD VM of bench/README.md); a block of many (a 32 MB array) took twice its usual time in
+  // about half the runs, which small pages mapped at once never did.
   const std::uintptr_t hugeStart = (start + kHuge - 1) & ~(kHuge - 1), hugeEnd = end & ~(kHuge - 1);
-  if (hugeEnd > hugeStart) madvise(reinterpret_cast<void*>(hugeStart), hugeEnd - hugeStart, MADV_HUGEPAGE);
+  if (hugeEnd > hugeStart && hugeEnd - hugeStart <= kHugeAdvisedUpTo)
+    madvise(reinterpret_cast<void*>(hugeStart), hugeEnd - hugeStart, MADV_HUGEPAGE);
 #endif
 #if defined(MADV_POPULATE_WRITE)  // Linux 5.14+: the pages mapped in one call
   const std::uintptr_t pageStart = (start + kPage - 1) & ~(kPage - 1), pageEnd = end & ~(kPage - 1);

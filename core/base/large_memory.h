@@ -1,11 +1,12 @@
 #pragma once
 // Memory for large blocks that are filled soon after they are made: whole screens (the canvas,
 // its saveScr copy, a flipped frame: 480,000 pixels, 1.9 MB each) and the chunks of a big
-// program's compact statements (rb check). On Linux a block of 1 MiB or more is mapped in
-// 2 MiB huge pages where the kernel allows it (transparent huge pages in "madvise" or "always"
-// mode), with its pages mapped at once: a fresh screen then costs one page fault instead of
-// about 470, which on some virtual machines took longer than the rest of a short program's
-// run. Smaller blocks, every block elsewhere, and every block in the sanitizer builds (so that
+// program's compact statements (rb check). On Linux a block of 1 MiB or more is mapped with
+// its pages at once, in 2 MiB huge pages where the kernel allows it (transparent huge pages in
+// "madvise" or "always" mode) and the block needs at most two of them: a fresh screen then
+// costs one page fault instead of about 470, which on some virtual machines took longer than
+// the rest of a short program's run. Bigger blocks (a big array, a big program's text) get
+// small pages, mapped at once: see large_memory.cpp for why. Smaller blocks, every block elsewhere, and every block in the sanitizer builds (so that
 // AddressSanitizer still guards them) are ordinary heap memory.
 
 #include <cstddef>
