@@ -194,24 +194,39 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
   x1 = std::max(x1, 0);
   x2 = std::min(x2, kWidth - 1);
   if (x1 > x2) return;
-  // plot() for each pixel, with what is the same for the whole row worked out once: pixels
-  // that already have the colour cost one comparison.
+  // plot() for each pixel, in passes that each do one simple thing: the first and the last
+  // pixel that change, the first and the last that become or stop being an obstacle, then the
+  // fill between (which the compiler turns into wide stores).
   Colour* row = &materialize()[static_cast<size_t>(y) * kWidth];
+  int first = x1;
+  while (first <= x2 && row[first] == c) ++first;
+  if (first > x2) return;
+  int last = x2;
+  while (row[last] == c) --last;
   const bool obstacle = isObstacleColour(c);
-  int first = -1, last = -1;  // the first and last pixel that changed
   int firstFlip = -1, lastFlip = -1;  // ... that became or stopped being an obstacle
-  for (int x = x1; x <= x2; ++x) {
-    Colour& p = row[x];
-    if (p == c) continue;
-    if (isObstacleColour(p) != obstacle) {
-      if (firstFlip < 0) firstFlip = x;
-      lastFlip = x;
+  if (!invisible_.empty()) {
+    for (int x = first; x <= last; ++x) {
+      if (row[x] != c && isObstacleColour(row[x]) != obstacle) {
+        if (firstFlip < 0) firstFlip = x;
+        lastFlip = x;
+      }
     }
-    p = c;
-    if (first < 0) first = x;
-    last = x;
+  } else if (!obstacle) {
+    // c is the background: every pixel that changes was an obstacle.
+    firstFlip = first;
+    lastFlip = last;
+  } else {
+    // Only background pixels become obstacles.
+    int x = first;
+    while (x <= last && row[x] != background_) ++x;
+    if (x <= last) {
+      firstFlip = x;
+      lastFlip = last;
+      while (row[lastFlip] != background_) --lastFlip;
+    }
   }
-  if (first < 0) return;
+  std::fill(row + first, row + last + 1, c);
   ++version_;
   if (firstFlip >= 0) {
     ++obstacleVersion_;

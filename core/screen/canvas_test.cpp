@@ -472,3 +472,40 @@ TEST_CASE("canvas: a screen of pixels (large memory) copies, compares and grows 
   copy = screen;  // back to the screen's size, in the block it has
   CHECK(copy == screen);
 }
+
+TEST_CASE("canvas: a filled row reports every pixel that became or stopped being an obstacle",
+          "[canvas]") {
+  // Rows of random colours, some of them the background or an invisible colour, filled over
+  // and over: every pixel whose obstacle state a fill changed lies in a reported box, and the
+  // fill leaves exactly its pixels in its colour.
+  const Colour palette[] = {colours::kWhite, colours::kBlack, colours::kRed, colours::kGreen, colours::kBlue};
+  for (bool withInvisible : {false, true}) {
+    INFO("invisible colours: " << withInvisible);
+    Canvas canvas;
+    if (withInvisible) canvas.setInvisible({colours::kGreen});
+    uint32_t seed = 7;
+    auto next = [&](uint32_t n) {
+      seed = seed * 1103515245u + 12345u;
+      return (seed >> 8) % n;
+    };
+    for (int round = 0; round < 3000; ++round) {
+      const int y = static_cast<int>(next(4)) * 3 + 100;
+      int x1 = static_cast<int>(next(820)) - 10, x2 = x1 + static_cast<int>(next(200));
+      const Colour c = palette[next(5)];
+      std::vector<bool> before(Canvas::kWidth);
+      for (int x = 0; x < Canvas::kWidth; ++x) before[static_cast<size_t>(x)] = canvas.isObstacle(x, y);
+      (void)canvas.takeObstacleChanges();
+      canvas.rectangle({x1, y}, {x2, y}, 1, c, c);
+      ObstacleChanges changes = canvas.takeObstacleChanges();
+      for (int x = 0; x < Canvas::kWidth; ++x) {
+        INFO("round " << round << ", pixel " << x << "," << y);
+        if (x >= x1 && x <= x2) REQUIRE(canvas.at(x, y) == c);
+        if (canvas.isObstacle(x, y) == before[static_cast<size_t>(x)] || changes.all) continue;
+        bool reported = std::any_of(changes.boxes.begin(), changes.boxes.end(), [&](const PixelBox& b) {
+          return x >= b.x0 && x <= b.x1 && y >= b.y0 && y <= b.y1;
+        });
+        REQUIRE(reported);
+      }
+    }
+  }
+}
