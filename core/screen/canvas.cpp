@@ -227,12 +227,58 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
     }
   }
   std::fill(row + first, row + last + 1, c);
+  rowChanged(y, first, last, firstFlip, lastFlip);
+}
+
+void Canvas::rowChanged(int y, int first, int last, int firstFlip, int lastFlip) {
   ++version_;
   if (firstFlip >= 0) {
     ++obstacleVersion_;
     obstacleChanges_.addRow(y, firstFlip, lastFlip);
   }
   if (liveTraces_ != 0) forgetTraces(y, first, last);
+}
+
+void Canvas::writeRow(int y, int x, const Colour* px, int n) {
+  if (y < 0 || y >= kHeight) return;
+  int from = std::max(0, -x), to = std::min(n, kWidth - x);  // px[from..to-1] are on the screen
+  if (from >= to) return;
+  Colour* row = &materialize()[static_cast<size_t>(y) * kWidth + static_cast<size_t>(x)];
+  int first = -1, last = -1, firstFlip = -1, lastFlip = -1;
+  for (int i = from; i < to; ++i) {
+    if (row[i] == px[i]) continue;
+    if (isObstacleColour(row[i]) != isObstacleColour(px[i])) {
+      if (firstFlip < 0) firstFlip = x + i;
+      lastFlip = x + i;
+    }
+    row[i] = px[i];
+    if (first < 0) first = x + i;
+    last = x + i;
+  }
+  if (first >= 0) rowChanged(y, first, last, firstFlip, lastFlip);
+}
+
+void Canvas::paintCell(int x0, int w, int y0, int h, Colour background, const Glyph& g, int left, int top,
+                       Colour c) {
+  constexpr int kMaxCell = 256;
+  if (w > kMaxCell) {  // a character this wide: its background, then its glyph
+    for (int yy = 0; yy < h; ++yy) span(y0 + yy, x0, x0 + w - 1, background);
+    paintGlyph(g, left, top, c);
+    return;
+  }
+  Colour cell[kMaxCell];
+  for (int yy = 0; yy < h; ++yy) {
+    std::fill(cell, cell + w, background);
+    const int gy = y0 + yy - top;  // the glyph's bitmap row on this row of the cell
+    if (gy >= 0 && gy < g.height) {
+      const uint8_t* bits = &g.bits[static_cast<size_t>(gy) * static_cast<size_t>(g.width)];
+      for (int gx = 0; gx < g.width; ++gx) {
+        const int cx = left + gx - x0;
+        if (bits[gx] && cx >= 0 && cx < w) cell[cx] = c;
+      }
+    }
+    writeRow(y0 + yy, x0, cell, w);
+  }
 }
 
 void Canvas::paintGlyph(const Glyph& g, int left, int top, Colour c) {
@@ -510,7 +556,11 @@ int Canvas::text(int x, int y, const std::string& s, const TextStyle& style, Col
         penX += g.advance;
         continue;  // already there
       }
-      if (style.background && reuse) background(penX, penX + g.advance - 1);
+      if (style.background && reuse) {  // the glyph lies inside its cell (reuse)
+        paintCell(penX, g.advance, y, m.lineHeight, *style.background, g, left, top, c);
+        penX += g.advance;
+        continue;
+      }
     }
     paintGlyph(g, left, top, c);
     penX += g.advance;

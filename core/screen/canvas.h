@@ -244,6 +244,16 @@ class Canvas {
   void span(int y, int x1, int x2, Colour c);
   /// A glyph's pixels, its bitmap's top-left corner at (left, top).
   void paintGlyph(const Glyph& g, int left, int top, Colour c);
+  /// A character's cell x0..x0+w-1, rows y0..y0+h-1, painted with `background` and the glyph
+  /// (whose bitmap lies inside the cell) at left, top in c: only the pixels that differ from
+  /// what is there are written, so a digit that changed in a status line flips only the pixels
+  /// of its two glyphs.
+  void paintCell(int x0, int w, int y0, int h, Colour background, const Glyph& g, int left, int top, Colour c);
+  /// Writes pixels px[0..n-1] at x..x+n-1 of row y (clipped), each only where it differs.
+  void writeRow(int y, int x, const Colour* px, int n);
+  /// The bookkeeping of a row whose pixels first..last changed, those firstFlip..lastFlip
+  /// (firstFlip < 0: none) becoming or stopping being obstacles.
+  void rowChanged(int y, int first, int last, int firstFlip, int lastFlip);
   void drawLine(Point a, Point b, int width, Colour c);  ///< without recording it
   void scrollUp(int pixels);
   /// Records the operation `make()` builds, when the display list is kept.
