@@ -85,7 +85,11 @@ class BuiltinTable;
   /* from Add, AddKNum, AddKInt and SubKInt whose result replaces their left operand       */  \
   /* (`x = x + y`, `n = n + 1`), where a test of that operand also tells that the result   */  \
   /* replaces a number, and leaves every other case to the general form                    */  \
-  X(AddSelf) X(AddKNumSelf) X(AddKIntSelf) X(SubKIntSelf)
+  X(AddSelf) X(AddKNumSelf) X(AddKIntSelf) X(SubKIntSelf)                                    \
+  /* in place of a Mul (or its K forms) R[a] = R[b] * R[c] followed by the AddSelf        */  \
+  /* x = x + R[a] whose right operand dies (kAddRightDies): x += R[b] * R[c], both          */  \
+  /* instructions at once, without storing the product; any other case runs the two       */  \
+  X(MulAddSelf)
 
 enum class Op : uint8_t {
 #define RB_OPCODE_ENUM(name) name,
@@ -124,7 +128,7 @@ constexpr Op generalOp(Op op) {
     case Op::AddKNum: case Op::AddKInt: case Op::AddSelf: case Op::AddKNumSelf: case Op::AddKIntSelf:
       return Op::Add;
     case Op::SubKNum: case Op::SubKInt: case Op::SubKIntSelf: return Op::Sub;
-    case Op::MulKNum: case Op::MulKInt: return Op::Mul;
+    case Op::MulKNum: case Op::MulKInt: case Op::MulAddSelf: return Op::Mul;
     default: return op;
   }
 }
@@ -138,10 +142,14 @@ constexpr uint8_t kMoveMayBeUnassigned = 1;
 /// Add (and its K forms): R[b] is a temporary that nothing reads after this instruction, so a
 /// string there may be taken over and appended to instead of copied.
 constexpr uint8_t kAddLeftDies = 1;
+/// Add: R[c] is a temporary that nothing reads after this instruction (an operation's result
+/// computed for this `+` alone), so the interpreter may compute it without storing it
+/// (MulAddSelf).
+constexpr uint8_t kAddRightDies = 2;
 
 struct Instr {
   Op op;
-  uint8_t flags = 0;  ///< Move: kMoveMayBeUnassigned; Add: kAddLeftDies; conditional transfers:
+  uint8_t flags = 0;  ///< Move: kMoveMayBeUnassigned; Add: kAddLeftDies, kAddRightDies; conditional transfers:
                       ///< steps given back when taken
   union {
     uint16_t count = 0;  ///< consecutive operands read (arguments, indices, items, extents);
@@ -291,6 +299,9 @@ struct Program {
   std::vector<std::vector<Tok>> separatorLists;  ///< for Print/Format
   std::vector<LabelEntry> labels;      ///< in order of name
   bool lineTracing = false;
+  /// The finisher ran (compiler_finish.cpp): the interpreter may then make its own forms of
+  /// instructions too (RB_OPCODES' last group). Plain code runs as compiled.
+  bool finished = false;
 };
 
 }  // namespace rb

@@ -116,9 +116,11 @@ class Dumper {
         return r(in.a) + ", " + r(in.b) + (in.flags & kMoveMayBeUnassigned ? "  (may be unassigned)" : "");
       case Op::Add: case Op::AddKNum: case Op::AddKInt:
       case Op::AddSelf: case Op::AddKNumSelf: case Op::AddKIntSelf:  // never in compiled code
-        return r(in.a) + ", " + r(in.b) + ", " + r(in.c) + (in.flags & kAddLeftDies ? "  (left dies)" : "");
+        return r(in.a) + ", " + r(in.b) + ", " + r(in.c) + (in.flags & kAddLeftDies ? "  (left dies)" : "") +
+               (in.flags & kAddRightDies ? "  (right dies)" : "");
       case Op::Sub: case Op::Mul: case Op::Div: case Op::Mod: case Op::Pow:
       case Op::SubKNum: case Op::MulKNum: case Op::SubKInt: case Op::MulKInt: case Op::SubKIntSelf:
+      case Op::MulAddSelf:
       case Op::BitAnd: case Op::BitOr: case Op::Shl: case Op::Shr:
       case Op::Eq: case Op::Ne: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge:
         return r(in.a) + ", " + r(in.b) + ", " + r(in.c);

@@ -112,10 +112,15 @@ uint32_t Compiler::expr(const Expr* e, uint32_t dest) {
       // `"step " + n + " of " + total` grows one string in place (concatenate) instead of
       // copying it into a new one at every `+`.
       bool leftIsTemp = operandBase(l) == Base::Frame && operandIndex(l) >= scope_->localCount;
+      // A temporary on the right is this expression's own too, and read only here.
+      bool rightIsTemp = operandBase(r) == Base::Frame && operandIndex(r) >= scope_->localCount;
       uint32_t d = dest != kNoOperand ? dest : leftIsTemp ? l : temp();
       emit(binaryOp(e->op), d, l, r, e->loc);
       // Into a variable or an argument: the string on the left is taken over, not copied.
-      if (leftIsTemp && d != l && binaryOp(e->op) == Op::Add && options_.keepCode) p_.code.back().flags = kAddLeftDies;
+      if (binaryOp(e->op) == Op::Add && options_.keepCode) {
+        if (leftIsTemp && d != l) p_.code.back().flags |= kAddLeftDies;
+        if (rightIsTemp && d != r) p_.code.back().flags |= kAddRightDies;
+      }
       return d;
     }
   }

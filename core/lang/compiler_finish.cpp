@@ -112,6 +112,7 @@ bool fallsThrough(Op op) { return op != Op::Jump && op != Op::Return && op != Op
 
 void Compiler::finishCode() {
   if (options_.lineTracing) return;
+  p_.finished = true;
   for (SubInfo& s : p_.subs) s.outputsFrom = outputsFrom(s);
   std::vector<bool> dead(p_.code.size(), false);
   bool any = false;

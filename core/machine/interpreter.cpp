@@ -126,6 +126,8 @@ RB_ALWAYS_INLINE double finite(double r) {
   if (std::fabs(r) > std::numeric_limits<double>::max()) [[unlikely]] raise("the result is too large");
   return r;
 }
+/// finite()'s test without the error, for a fast path that leaves the error to the general one.
+RB_ALWAYS_INLINE bool overflowed(double r) { return std::fabs(r) > std::numeric_limits<double>::max(); }
 
 /// x `cmp` y.
 template <typename T>
@@ -410,7 +412,10 @@ RunResult Interpreter::run(const RunLimits& limits) {
   code_ = prog_.code;
   for (Instr& in : code_) {
     forEachOperandField(in, [](uint32_t& x) { x = runOperand(x); });
-    if (in.a == in.b) in.op = selfForm(in.op);
+    if (prog_.finished && in.a == in.b) in.op = selfForm(in.op);
+  }
+  if (prog_.finished) fuseMultiplyAdds();
+  for (Instr& in : code_) {
     // Jump targets become byte offsets (below kMaxInstructions * 16, checked by the compiler).
     if (hasJumpTarget(in.op)) jumpTargetField(in) *= sizeof(Instr);
     // ForLoop1 gives no statements back when it jumps (below); one that must is left to
@@ -552,6 +557,24 @@ RB_COLD void Interpreter::badReturn() {
   errorPc_ = static_cast<uint32_t>(f.ret - code_.data()) - 1;
   throw RuntimeError("sub '" + prog_.subs[static_cast<size_t>(f.sub)].name +
                      "' returned no value (use return with a value)");
+}
+
+/// A Mul (or its K forms) whose product only the next instruction reads, an AddSelf that adds
+/// it to a variable (`x = x + i * 0.5`, `c = c + a[i, k] * b[k, j]`), becomes MulAddSelf, which
+/// runs both. Not where something jumps to the AddSelf: the product would not be there.
+void Interpreter::fuseMultiplyAdds() {
+  std::vector<bool> entered(code_.size(), false);  // instructions run other than after the one before
+  for (const Instr& in : code_)
+    if (uint32_t t = jumpTarget(in); t < entered.size()) entered[t] = true;
+  for (const SubInfo& s : prog_.subs)
+    if (s.entry < entered.size()) entered[s.entry] = true;
+  for (size_t k = 0; k + 1 < code_.size(); ++k) {
+    Instr& mul = code_[k];
+    const Instr& add = code_[k + 1];
+    if ((mul.op == Op::Mul || mul.op == Op::MulKNum || mul.op == Op::MulKInt) && add.op == Op::AddSelf &&
+        (add.flags & kAddRightDies) && add.c == mul.a && add.a != mul.a && !entered[k + 1])
+      mul.op = Op::MulAddSelf;
+  }
 }
 
 void Interpreter::doCallBuiltin(const Instr& in, uint32_t pc) {
@@ -831,6 +854,39 @@ void Interpreter::execute(uint32_t& pcOut) {
         }
       }
       goto op_Add;
+    }
+    // x = x + R[b] * R[c] for the Mul here and the AddSelf after it (fuseMultiplyAdds): the
+    // same operations in the same order as the two would do; any other case, and any error,
+    // runs them one after the other (the Mul through the general handler).
+    CASE(MulAddSelf) {
+      const Instr& in = *ip;
+      const Value& b = B(in.b);
+      const Value& c = B(in.c);
+      Value& x = B(ip[1].a);
+      if (x.isNum()) [[likely]] {
+        double p;
+        if (b.isNum() && c.isNum()) [[likely]] {
+          p = b.d() * c.d();
+        } else if (b.isInt() && c.isNum()) {
+          p = static_cast<double>(b.i()) * c.d();
+        } else {
+          goto op_Mul;
+        }
+        double s = x.d() + p;
+        if (overflowed(p) || overflowed(s)) [[unlikely]] goto op_Mul;
+        x.setNum(s);
+        ip += 2;
+        NEXT;
+      }
+      if (x.isInt() && b.isInt() && c.isInt()) {
+        int64_t p, s;
+        if (!__builtin_mul_overflow(b.i(), c.i(), &p) && !__builtin_add_overflow(x.i(), p, &s)) [[likely]] {
+          x.setInt(s);
+          ip += 2;
+          NEXT;
+        }
+      }
+      goto op_Mul;
     }
     CASE(AddKNumSelf) {
       const Instr& in = *ip;

@@ -104,6 +104,7 @@ class Interpreter {
   void execute(uint32_t& pc);
   [[noreturn]] void badReturn();
   void doCallBuiltin(const Instr& in, uint32_t pc);
+  void fuseMultiplyAdds();
   void doDim(const Instr& in);
   void doPrint(const Instr& in);
   void doFormat(const Instr& in);

@@ -229,6 +229,21 @@ TEST_CASE("finished code runs as the plain code does: output, errors and every s
       "x = -1e308\nprint x - 1e308\n",
       // a gosub inside a sub, whose code sets the output
       "call G(r)\nprint r\nend\nsub G(&r)\n  gosub Set\n  return\nSet:\n  r = 2\n  return\n",
+      // the interpreter's in-place forms (x = x + y, n = n + 1, n = n - 1, x = x + 0.5) on
+      // every kind of value, and x = x + b * c run as one (MulAddSelf), with every case it
+      // leaves to the Mul and the AddSelf run one after the other
+      "x = 0.5\nt = 0\nfor i = 1 to 5\n  x = x + i * 0.5\n  t = t + i * i\n  t = t + i\nnext\n"
+      "print x, t\nm = 1\nm = m + 2.5 * 2\ny = 1.5\ny = y + 3 * 4\ny = y + 1.5 * 2\nprint m, y\n"
+      "n = 9223372036854775807\nn = n + 1\nk = 3\nk = k + n * 2\nprint n, k\n"
+      "j = 9223372036854775800\nj = j + 3 * 4\nprint j\ns = \"a\"\ns = s + 2 * 3\ns = s + 1\nprint s\n"
+      "w = -9223372036854775807\nw = w - 1\nw = w - 1\nprint w\nf = 2\nf = f + 0.25\nprint f\n",
+      "z = 1.0\nz = z + 1e308 * 10.0\n",
+      "z = 1e308\nz = z + 1e308 * 1.0\n",
+      "z = 1e308\nz = z + 1e308\n",
+      "x = x + 2 * 3\n",
+      "x = 1.5\nx = x + y * 2\n",
+      "t = 1\nt = t + \"b\" * 2\n",
+      "u = 1\nu = u + 1\nv = v + 1\n",
   };
   for (const char* text : programs) {
     INFO(text);
