@@ -1205,19 +1205,21 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(CallSub) {
       const Instr& in = *ip;
       COUNT_STEPS(in);
+      const SubEntry& s = subEntries_[in.a];
+      const uint32_t caller = base_;
+      const uint32_t newBase = caller + in.b;
+      ensureStack(size_t(newBase) + s.stackNeed);
       Frame& f = pushFrame();
       f.ret = ip + 1;
-      f.base = base_;
+      f.base = caller;
       f.dest = in.c;
       f.sub = static_cast<int32_t>(in.a);
       f.callerSub = sub_;
-      const SubEntry& s = subEntries_[in.a];
-      uint32_t newBase = base_ + in.b;
-      ensureStack(size_t(newBase) + s.stackNeed);
-      Value* frame = stack_.data() + newBase;
-      for (uint32_t i = s.emptyFrom; i < s.emptyTo; ++i) frame[i].clear();
       base_ = newBase;
       sub_ = static_cast<int32_t>(in.a);
+      Value* frame = stack_.data() + newBase;
+      if (s.emptyFrom < s.emptyTo) [[unlikely]]
+        for (uint32_t i = s.emptyFrom; i < s.emptyTo; ++i) frame[i].clear();
       bases_.set(Base::Frame, frame);
       SYNC_FRAME();
       ip = s.entry;
