@@ -899,30 +899,21 @@ void Interpreter::execute(uint32_t& pcOut) {
       }
       goto op_AddKNum;
     }
-    CASE(AddKIntSelf) {
-      const Instr& in = *ip;
-      Value& a = B(in.b);
-      int64_t k = B.constant(in.c).i();
-      int64_t r;
-      if (a.isInt() && !__builtin_add_overflow(a.i(), k, &r)) [[likely]] {
-        a.setInt(r);
-        ++ip;
-        NEXT;
-      }
-      goto op_AddKInt;
-    }
-    CASE(SubKIntSelf) {
-      const Instr& in = *ip;
-      Value& a = B(in.b);
-      int64_t k = B.constant(in.c).i();
-      int64_t r;
-      if (a.isInt() && !__builtin_sub_overflow(a.i(), k, &r)) [[likely]] {
-        a.setInt(r);
-        ++ip;
-        NEXT;
-      }
-      goto op_SubKInt;
-    }
+// n = n + 1, n = n - 1: an integer that stays one, else the K form.
+#define ARITHMETIC_KINT_SELF(overflows, general)                      \
+  const Instr& in = *ip;                                              \
+  Value& a = B(in.b);                                                 \
+  int64_t k = B.constant(in.c).i();                                   \
+  int64_t r;                                                          \
+  if (a.isInt() && !overflows(a.i(), k, &r)) [[likely]] {             \
+    a.setInt(r);                                                      \
+    ++ip;                                                             \
+    NEXT;                                                             \
+  }                                                                   \
+  goto general
+    CASE(AddKIntSelf) { ARITHMETIC_KINT_SELF(__builtin_add_overflow, op_AddKInt); }
+    CASE(SubKIntSelf) { ARITHMETIC_KINT_SELF(__builtin_sub_overflow, op_SubKInt); }
+#undef ARITHMETIC_KINT_SELF
     CASE(Div) {
       const Instr& in = *ip;
       const Value& a = B(in.b);
