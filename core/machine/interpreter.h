@@ -137,7 +137,9 @@ class Interpreter {
 
   const Program& prog_;
   Machine& m_;
-  std::vector<Instr> code_;  ///< prog_.code with its operands re-encoded (runOperand)
+  /// prog_.code made ready to run (run()): operands re-encoded (runOperand), jump targets as
+  /// byte offsets, and in finished code the interpreter's own forms (RB_OPCODES' last group).
+  std::vector<Instr> code_;
   std::vector<Value> globals_;
   std::vector<Value> stack_;
   size_t stackSize_ = 0;  ///< stack_.size(), kept for the calls' check
