@@ -122,12 +122,11 @@ double checked(double r) {
 /// The result of +, -, * or / on two numbers: never one that is not a number, since every value
 /// is finite and division by zero is refused first; only an overflow to infinity is an error.
 /// (One comparison where checked() needs two.)
+RB_ALWAYS_INLINE bool overflowed(double r) { return std::fabs(r) > std::numeric_limits<double>::max(); }
 RB_ALWAYS_INLINE double finite(double r) {
-  if (std::fabs(r) > std::numeric_limits<double>::max()) [[unlikely]] raise("the result is too large");
+  if (overflowed(r)) [[unlikely]] raise("the result is too large");
   return r;
 }
-/// finite()'s test without the error, for a fast path that leaves the error to the general one.
-RB_ALWAYS_INLINE bool overflowed(double r) { return std::fabs(r) > std::numeric_limits<double>::max(); }
 
 /// x `cmp` y.
 template <typename T>
@@ -734,26 +733,32 @@ void Interpreter::execute(uint32_t& pcOut) {
       ++ip;
       NEXT;
     }
+// Add's two common cases, each running straight to its own dispatch so that no path jumps to
+// a shared tail: two doubles first, then two integers whose sum fits; else on to `other`.
+#define ADD_FAST_PATHS(dest, other)                                  \
+  if (!a.isNum()) [[unlikely]] goto other##_ints;                    \
+  if (!b.isNum()) [[unlikely]] goto other##_ints;                    \
+  dest.setNum(finite(a.d() + b.d()));                                \
+  ++ip;                                                              \
+  NEXT;                                                              \
+  other##_ints:                                                      \
+  if (a.isInt() && b.isInt()) [[likely]] {                           \
+    int64_t r;                                                       \
+    if (!__builtin_add_overflow(a.i(), b.i(), &r)) [[likely]] {      \
+      dest.setInt(r);                                                \
+      ++ip;                                                          \
+      NEXT;                                                          \
+    }                                                                \
+  }                                                                  \
+  goto other
     CASE(Add) {
       const Instr& in = *ip;
       Value& a = B(in.b);
       const Value& b = B(in.c);
       Value& d = B(in.a);
-      // Each common case ends in its own dispatch, so that no path jumps to a shared tail;
-      // two doubles first, straight through, then two integers.
-      if (!a.isNum()) [[unlikely]] goto add_notDoubles;
-      if (!b.isNum()) [[unlikely]] goto add_notDoubles;
-      d.setNum(finite(a.d() + b.d()));
-      ++ip;
-      NEXT;
-    add_notDoubles:
-      if (a.isInt() && b.isInt()) [[likely]] {
-        int64_t r;
-        if (!__builtin_add_overflow(a.i(), b.i(), &r)) [[likely]] {
-          d.setInt(r);
-          ++ip;
-          NEXT;
-        }
+      ADD_FAST_PATHS(d, add_others);
+    add_others:
+      if (a.isInt() && b.isInt()) {  // an integer overflow
         d.setNum(static_cast<double>(a.i()) + static_cast<double>(b.i()));
         ++ip;
         NEXT;
@@ -839,22 +844,9 @@ void Interpreter::execute(uint32_t& pcOut) {
       const Instr& in = *ip;
       Value& a = B(in.b);
       const Value& b = B(in.c);
-      if (!a.isNum()) [[unlikely]] goto addSelf_notDoubles;
-      if (!b.isNum()) [[unlikely]] goto addSelf_notDoubles;
-      a.setNum(finite(a.d() + b.d()));
-      ++ip;
-      NEXT;
-    addSelf_notDoubles:
-      if (a.isInt() && b.isInt()) [[likely]] {
-        int64_t r;
-        if (!__builtin_add_overflow(a.i(), b.i(), &r)) [[likely]] {
-          a.setInt(r);
-          ++ip;
-          NEXT;
-        }
-      }
-      goto op_Add;
+      ADD_FAST_PATHS(a, op_Add);
     }
+#undef ADD_FAST_PATHS
     // x = x + R[b] * R[c] for the Mul here and the AddSelf after it (fuseMultiplyAdds): the
     // same operations in the same order as the two would do; any other case, and any error,
     // runs them one after the other (the Mul through the general handler).
