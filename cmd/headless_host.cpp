@@ -53,6 +53,7 @@ void HeadlessHost::disarmWatchdog() {
 void HeadlessHost::attachMachine(Machine& machine) { script_.useControls(&machine.controls); }
 
 void HeadlessHost::output(std::string_view text) {
+  written_ += text.size();
   if (outputHook) {
     outputHook(text);
     return;
@@ -81,7 +82,22 @@ void HeadlessHost::flush() {
 }
 
 std::optional<std::string> HeadlessHost::inputLine(std::string_view prompt) {
+  InputSpan span;
+  span.start = written_;
   output(prompt);
+  span.promptEnd = written_;
+  std::optional<std::string> line = readInput();
+  if (!line) return line;
+  if (echoInput || script_.given()) {
+    output(*line);
+    output("\n");
+  }
+  span.end = written_;
+  if (inputHook) inputHook(span);
+  return line;
+}
+
+std::optional<std::string> HeadlessHost::readInput() {
   if (script_.given()) return script_.inputLine("input");
   flush();
   if (inputFd >= 0) return readLineFromFd();

@@ -38,6 +38,17 @@ class HeadlessHost : public Host {
   /// When >= 0, `input` reads this file descriptor itself (instead of the stream), waiting with
   /// poll() so that --timeout ends a run that waits for a line nobody types.
   int inputFd = -1;
+  /// Whether `input` writes the line it read and a line end after the prompt, as the screen
+  /// shows it (docs/language.md): on when the line comes from a pipe, a file or a script; off
+  /// when a terminal already echoed what the user typed.
+  bool echoInput = true;
+  /// Where one `input` left its mark in the output, as byte offsets from the output's start:
+  /// the prompt from `start` to `promptEnd`, then the echo of the line read up to `end`.
+  struct InputSpan {
+    uint64_t start = 0, promptEnd = 0, end = 0;
+  };
+  /// Called after each `input` that read a line.
+  std::function<void(const InputSpan&)> inputHook;
   int64_t heldKey(std::string_view who) override { return script_.heldKey(who); }
   int64_t waitKey(std::string_view who) override { return script_.waitKey(who); }
   MouseState mouse(std::string_view who) override { return script_.mouse(who); }
@@ -71,10 +82,12 @@ class HeadlessHost : public Host {
   std::FILE* out_;
   std::istream& in_;
   std::string buffer_;
+  uint64_t written_ = 0;  ///< bytes of output so far (to the stream or the hook)
   int writeError_ = 0;
   double virtualMs_ = 0;
   ScriptedInput script_;  ///< plays on virtualMs_
   std::chrono::steady_clock::time_point start_;
+  std::optional<std::string> readInput();
   std::optional<std::string> readLineFromFd();
   std::string fdBuffer_;    ///< bytes read from inputFd past the last line returned
   bool fdEnded_ = false;

@@ -64,6 +64,9 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
 
   auto host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
   host->inputFd = STDIN_FILENO;
+  // A terminal shows what the user typed; a pipe or a file shows nothing, so rb writes it.
+  host->echoInput = !::isatty(STDIN_FILENO);
+  host->inputHook = run.onInput;
   host->lineHook = std::move(onLine);
   host->outputHook = std::move(onOutput);
   host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };

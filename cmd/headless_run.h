@@ -14,6 +14,8 @@ namespace rb::cli {
 /// A headless run: its host is a HeadlessHost.
 struct HeadlessRun : ProgramRun {
   HeadlessHost& headlessHost() { return static_cast<HeadlessHost&>(*host); }
+  /// Given to the host before the run: where each `input` left its mark in the output.
+  std::function<void(const HeadlessHost::InputSpan&)> onInput;
 };
 
 /// Builds the scripted input that --events and --keys give (script.given is false when neither

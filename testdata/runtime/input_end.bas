@@ -1,3 +1,3 @@
 // stdin: only
-input a
+input a // expect: only
 input b // expect-runtime-error: input: no more input to read (end of input)

@@ -30,7 +30,7 @@ class Failure(Exception):
 class Session:
     """One `rb run --tui` in its own tmux server."""
 
-    def __init__(self, rb, program, env=None, cols=COLS, rows=ROWS, args=""):
+    def __init__(self, rb, program, env=None, cols=COLS, rows=ROWS, args="", tui=True):
         self.dir = tempfile.mkdtemp(prefix="rbtui-")
         self.socket = os.path.join(self.dir, "tmux")  # removed with the folder
         self.code_file = os.path.join(self.dir, "code")
@@ -39,7 +39,8 @@ class Session:
         settings.update(env or {})
         envs = " ".join(f"{k}={v}" for k, v in settings.items())
         # After rb exits the pane stays (sleep): the normal screen shows what rb printed there.
-        command = (f"cd {HERE} && env {envs} {rb} run --tui {args} {program} 2>{self.err_file}; "
+        mode = "--tui" if tui else ""
+        command = (f"cd {HERE} && env {envs} {rb} run {mode} {args} {program} 2>{self.err_file}; "
                    f"echo $? >{self.code_file}.tmp; mv {self.code_file}.tmp {self.code_file}; "
                    f"sleep 600")
         self.tmux("new-session", "-d", "-s", "main", "-x", str(cols), "-y", str(rows), command)
@@ -437,6 +438,23 @@ def test_dumb(rb):
         s.close()
 
 
+def test_input_terminal(rb):
+    """Headless `input` on a terminal: the terminal shows what was typed, so rb writes it no
+    second time (from a pipe rb writes it: the conformance program input_echo)."""
+    s = Session(rb, "input.bas", tui=False)
+    try:
+        s.wait_text("How many sides?")
+        s.keys("6", "Enter")
+        s.wait_text("Name?")
+        s.keys("robot", "Enter")
+        code = s.exit_code()
+        check(code == 0, f"exit status {code}")
+        lines = [l.rstrip() for l in s.screen().splitlines() if l.strip()]
+        check(lines == ["How many sides? 6", "sides: 6", "Name? robot", "hello robot"],
+              "the terminal shows:\n" + s.screen())
+    finally:
+        s.close()
+
 
 def test_real(rb):
     """With --real the status shows the link: the port, the commands sent, the last reply."""
@@ -558,6 +576,7 @@ TESTS = {
     "dumb": test_dumb,
     "real": test_real,
     "pixels": test_pixels,
+    "input_terminal": test_input_terminal,
     "sixel": test_sixel,
 }
 
