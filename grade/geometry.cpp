@@ -167,12 +167,108 @@ HausdorffDistance hausdorff(const Polylines& a, const Polylines& b, double step)
   return {ba.distance, ba.worst, false};
 }
 
+namespace {
+/// Even-odd rule: a ray to the right crosses the outline an odd number of times.
+bool insidePolygon(const std::vector<P2>& pts, P2 p) {
+  bool in = false;
+  for (size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++) {
+    const P2 &a = pts[i], &b = pts[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
+std::vector<P2> outline(const Region& g) {
+  switch (g.kind) {
+    case Region::Rect: return {{g.x1, g.y1}, {g.x2, g.y1}, {g.x2, g.y2}, {g.x1, g.y2}};
+    case Region::Circle: {
+      std::vector<P2> out;
+      for (int d = 0; d < 360; ++d) {
+        double a = d * 3.14159265358979323846 / 180;
+        out.push_back({g.cx + g.r * std::cos(a), g.cy + g.r * std::sin(a)});
+      }
+      return out;
+    }
+    case Region::Polygon: return g.points;
+  }
+  return {};
+}
+}  // namespace
+
 double outside(const Region& region, P2 p) {
   if (region.kind == Region::Circle)
     return std::max(0.0, distance(p, {region.cx, region.cy}) - region.r);
+  if (region.kind == Region::Polygon) {
+    const std::vector<P2>& pts = region.points;
+    if (pts.empty()) return kInf;
+    if (pts.size() >= 3 && insidePolygon(pts, p)) return 0;
+    double best = kInf;
+    for (size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++)
+      best = std::min(best, distanceToSegment(p, pts[j], pts[i]));
+    return best;
+  }
   double dx = std::max({region.x1 - p.x, 0.0, p.x - region.x2});
   double dy = std::max({region.y1 - p.y, 0.0, p.y - region.y2});
   return std::hypot(dx, dy);
+}
+
+P2 labelPoint(const Region& g) {
+  switch (g.kind) {
+    case Region::Rect: return {(g.x1 + g.x2) / 2, (g.y1 + g.y2) / 2};
+    case Region::Circle: return {g.cx, g.cy};
+    case Region::Polygon: {
+      P2 mean;
+      for (const P2& p : g.points) {
+        mean.x += p.x / static_cast<double>(g.points.size());
+        mean.y += p.y / static_cast<double>(g.points.size());
+      }
+      if (g.points.empty() || outside(g, mean) == 0) return mean;
+      // A concave polygon's mean can lie outside: the first corner, nudged toward the mean.
+      P2 c = g.points[0];
+      for (double t = 0.05; t <= 1; t += 0.05) {
+        P2 q = lerp(c, mean, t);
+        if (outside(g, q) == 0) return q;
+      }
+      return c;
+    }
+  }
+  return {};
+}
+
+bool regionInside(const Region& inner, const Region& outer) {
+  for (const P2& p : outline(inner))
+    if (outside(outer, p) > 1e-9) return false;
+  return true;
+}
+
+Reach firstReach(const Polylines& path, const Region& region, double radius, double step) {
+  Reach r;
+  r.closest = kInf;
+  if (step <= 0) step = 0.5;
+  auto test = [&](P2 p, size_t line, size_t point) {
+    double d = outside(region, p);
+    r.closest = std::min(r.closest, d - radius);
+    if (d <= radius) {
+      r.reached = true;
+      r.at = p;
+      r.line = line;
+      r.point = point;
+    }
+    return r.reached;
+  };
+  for (size_t l = 0; l < path.size(); ++l) {
+    const Polyline& pl = path[l];
+    if (pl.empty()) continue;
+    if (test(pl[0], l, 0)) return r;
+    for (size_t i = 1; i < pl.size(); ++i) {
+      double len = distance(pl[i - 1], pl[i]);
+      int n = static_cast<int>(std::min(std::ceil(len / step), 1e7));
+      for (int k = 1; k <= n; ++k)
+        if (test(lerp(pl[i - 1], pl[i], static_cast<double>(k) / n), l, i)) return r;
+    }
+  }
+  r.closest = std::max(0.0, r.closest);
+  return r;
 }
 
 VisitResult visitInOrder(const Polylines& path, const std::vector<P2>& targets, double tolerance) {

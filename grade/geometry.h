@@ -48,14 +48,34 @@ struct HausdorffDistance {
 };
 HausdorffDistance hausdorff(const Polylines& a, const Polylines& b, double step = 0.5);
 
-/// An axis-aligned rectangle (corners inclusive) or a circle.
+/// An axis-aligned rectangle (corners inclusive), a circle or a polygon (its inside by the
+/// even-odd rule, edges included).
 struct Region {
-  enum Kind { Rect, Circle } kind = Rect;
+  enum Kind { Rect, Circle, Polygon } kind = Rect;
   double x1 = 0, y1 = 0, x2 = 0, y2 = 0;  ///< Rect: corners, x1 <= x2 and y1 <= y2
   double cx = 0, cy = 0, r = 0;           ///< Circle: centre and radius
+  std::vector<P2> points;                 ///< Polygon: corners in order (3 or more)
 };
 /// How far `p` is outside the region (0 when inside or on its edge).
 double outside(const Region& region, P2 p);
+/// A point inside the region (its centre, or a polygon's corners' mean pulled inside): where a
+/// picture writes its label.
+P2 labelPoint(const Region& region);
+/// True when every point of `inner` lies inside `outer` (tested on inner's outline; a circle
+/// outline is sampled every degree).
+bool regionInside(const Region& inner, const Region& outer);
+
+/// The first moment a disc of `radius` moving along `path` overlaps the region (its centre
+/// within `radius` of it), found on points at most `step` apart. `line`/`point` index the
+/// polyline and the point that ends the segment where it happens (0 for a path's first point).
+/// When never: `closest` is how near the disc's rim came (the centre's distance minus radius).
+struct Reach {
+  bool reached = false;
+  P2 at;
+  size_t line = 0, point = 0;
+  double closest = 0;
+};
+Reach firstReach(const Polylines& path, const Region& region, double radius, double step = 0.5);
 
 /// Visiting points in order: for each target, the first moment the path comes within
 /// `tolerance` of it, searched from where the previous target was reached. Returns the index of

@@ -1,29 +1,52 @@
 #pragma once
-// Feedback pictures: a student's pen trail drawn over the solution's, as a PNG.
+// Feedback pictures: what a student's robot did, drawn over what was asked, as a PNG with a
+// legend. The teacher's picture shows the solution's trail and final screen; a student's
+// picture (--student) never shows the solution's drawing, only the student's own work and what
+// the assignment asked for (waypoints, regions to reach or avoid).
 
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "geometry.h"
 #include "png_writer.h"
 
 namespace rb::grade {
 
+/// A region the assignment names, drawn with its label.
+struct PictureRegion {
+  enum Role { Goal, Avoid } role = Goal;  ///< ends-in / touch (green) or avoid (red)
+  Region region;
+  std::string label;  ///< the check's name
+};
+
 struct PictureInput {
   Polylines student;                          ///< the student's trail
   Polylines reference;                        ///< the solution's trail (or the trail check's)
   std::optional<render::RgbImage> background; ///< the solution's final screen, shown faded
+  std::optional<render::RgbImage> studentScreen; ///< the student's final screen (student view)
   std::optional<P2> studentEnd;               ///< where the student's robot ended
   std::optional<P2> referenceEnd;
   double robotRadius = 20;
+  /// A picture for the student: no solution (reference, background, referenceEnd are not
+  /// drawn even when given); the student's own final screen faded behind their trail.
+  bool studentView = false;
+  std::vector<P2> waypoints;                  ///< numbered in order (the visits checks)
+  std::vector<PictureRegion> regions;
+  std::string title;                          ///< the program's name, written at the top
 };
 
-/// An 800 x 600 picture: the solution's screen faded (or white), the reference trail as a wide
-/// light green band, the student's trail as a thin red line on top, and the robots' final
-/// positions as circles in the same colours.
+/// An 800 x 600 picture and a legend strip below it naming every colour used: the reference
+/// trail as a wide light green band ("the solution's trail"), the student's trail as a thin red
+/// line on top ("your trail"), the robots' final positions as circles in the same colours,
+/// waypoints as numbered blue markers, regions outlined (goals green, areas to avoid red).
 render::RgbImage feedbackPicture(const PictureInput& input);
 
 /// Colours of the picture (0xRRGGBB), for the documentation and tests.
 constexpr uint32_t kReferenceColour = 0x8FD98F;
 constexpr uint32_t kStudentColour = 0xD01818;
+constexpr uint32_t kWaypointColour = 0x1F5FD0;
+constexpr uint32_t kGoalColour = 0x2E9E2E;
+constexpr uint32_t kAvoidColour = 0xE05A00;
 
 }  // namespace rb::grade

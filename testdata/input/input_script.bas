@@ -6,5 +6,7 @@ print "Hello, ", name
 input "Number? ", n
 print n * 2
 input more // expect-runtime-error: input: waiting for a line of input (input TEXT, or keys ending with {enter}), but the next scripted event is 'click 1 2 left' (input_script.events line 3)
-// expect: Name? Hello, Bob Smith
-// expect: Number? 84
+// expect: Name? Bob Smith
+// expect: Hello, Bob Smith
+// expect: Number? 42
+// expect: 84

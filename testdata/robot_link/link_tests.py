@@ -248,6 +248,8 @@ def case_busy_then_released(tmp):
             holder.stdin.write(b"x\n")
             holder.stdin.flush()
             line = holder.stdout.readline().decode()
+            expect(line == "x\n", "the echo of the line input read", line)
+            line = holder.stdout.readline().decode()
             expect(line == "released\n", "after rCommPort 0", line)
             code, _, err, _ = rb("run", "--real", "--port", robot.link, "square.bas")
             expect(code == 0, f"after rCommPort 0 the port is free: exit {code}", err)
