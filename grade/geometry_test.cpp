@@ -101,7 +101,8 @@ TEST_CASE("Hausdorff distance of a trail retraced lap after lap is that of one l
 }
 
 TEST_CASE("regions", "[grade][geometry]") {
-  Region rect{Region::Rect, 380, 280, 420, 320};
+  Region rect;
+  rect.x1 = 380, rect.y1 = 280, rect.x2 = 420, rect.y2 = 320;
   CHECK(outside(rect, {400, 300}) == 0);
   CHECK(outside(rect, {420, 320}) == 0);  // the edge counts as inside
   CHECK(outside(rect, {430, 300}) == Approx(10));
@@ -147,4 +148,42 @@ TEST_CASE("visiting points in order", "[grade][geometry]") {
     REQUIRE(v.missed);
     CHECK(*v.missed == 1);
   }
+}
+
+TEST_CASE("polygon regions and reaching a region along a path", "[grade][geometry]") {
+  Region tri;
+  tri.kind = Region::Polygon;
+  tri.points = {{100, 100}, {200, 100}, {100, 200}};
+  CHECK(outside(tri, {120, 120}) == 0);
+  CHECK(outside(tri, {100, 150}) == 0);  // on an edge
+  CHECK(outside(tri, {200, 200}) == Approx(std::sqrt(2.0) * 50));  // to the long edge's middle
+  CHECK(outside(tri, {50, 150}) == Approx(50));
+  CHECK(outside(tri, labelPoint(tri)) == 0);
+  Region concave;  // an L: its corners' mean lies outside
+  concave.kind = Region::Polygon;
+  concave.points = {{0, 0}, {100, 0}, {100, 10}, {10, 10}, {10, 100}, {0, 100}};
+  CHECK(outside(concave, labelPoint(concave)) == 0);
+
+  Region box;
+  box.x1 = 300, box.y1 = 100, box.x2 = 400, box.y2 = 200;
+  Polylines path{{{100, 150}, {250, 150}, {250, 400}}};
+  Reach centre = firstReach(path, box, 0);
+  CHECK_FALSE(centre.reached);
+  CHECK(centre.closest == Approx(50));
+  Reach disc = firstReach(path, box, 60);  // a disc of radius 60 reaches it at x = 240
+  REQUIRE(disc.reached);
+  CHECK(disc.at.x == Approx(240).margin(0.5));
+  CHECK(disc.line == 0);
+  CHECK(disc.point == 1);  // on the segment that ends at the path's point 1
+  Polylines through{{{350, 400}, {350, 0}}};
+  Reach in = firstReach(through, box, 0);
+  REQUIRE(in.reached);
+  CHECK(in.at.y == Approx(200).margin(0.5));
+
+  Region small, big;
+  small.kind = big.kind = Region::Circle;
+  small.cx = big.cx = 400, small.cy = big.cy = 300, small.r = 10, big.r = 30;
+  CHECK(regionInside(small, big));
+  CHECK_FALSE(regionInside(big, small));
+  CHECK(regionInside(small, box) == false);
 }
