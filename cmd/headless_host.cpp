@@ -53,11 +53,12 @@ void HeadlessHost::disarmWatchdog() {
 void HeadlessHost::attachMachine(Machine& machine) { script_.useControls(&machine.controls); }
 
 void HeadlessHost::output(std::string_view text) {
-  written_ += text.size();
   if (outputHook) {
     outputHook(text);
     return;
   }
+  written_ += text.size();
+  if (copyHook) copyHook(text);
   buffer_ += text;
   if (buffer_.size() >= kFlushAt) flush();
   // Output that cannot be written stops the program at once (runHeadless reports it, exit 74).
@@ -86,6 +87,7 @@ std::optional<std::string> HeadlessHost::inputLine(std::string_view prompt) {
   span.start = written_;
   output(prompt);
   span.promptEnd = written_;
+  if (inputSource) return inputSource();
   std::optional<std::string> line = readInput();
   if (!line) return line;
   if (echoInput || script_.given()) {

@@ -49,6 +49,9 @@ class HeadlessHost : public Host {
   };
   /// Called after each `input` that read a line.
   std::function<void(const InputSpan&)> inputHook;
+  /// When set, `input` reads its lines from here (no echo): a grader's program reading what
+  /// the student's printed.
+  std::function<std::optional<std::string>()> inputSource;
   int64_t heldKey(std::string_view who) override { return script_.heldKey(who); }
   int64_t waitKey(std::string_view who) override { return script_.waitKey(who); }
   MouseState mouse(std::string_view who) override { return script_.mouse(who); }
@@ -75,6 +78,8 @@ class HeadlessHost : public Host {
   std::function<void(SourceLoc)> lineHook;
   /// When set, program output goes here instead of the output stream (rb trace's events).
   std::function<void(std::string_view)> outputHook;
+  /// When set, also sees the output that goes to the stream.
+  std::function<void(std::string_view)> copyHook;
   /// Opens a real robot's port for rCommPort.
   std::function<std::unique_ptr<RobotLink>(int64_t)> robotOpener;
 
@@ -82,7 +87,7 @@ class HeadlessHost : public Host {
   std::FILE* out_;
   std::istream& in_;
   std::string buffer_;
-  uint64_t written_ = 0;  ///< bytes of output so far (to the stream or the hook)
+  uint64_t written_ = 0;  ///< bytes of output written to the stream so far
   int writeError_ = 0;
   double virtualMs_ = 0;
   ScriptedInput script_;  ///< plays on virtualMs_

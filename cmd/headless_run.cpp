@@ -67,6 +67,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   // A terminal shows what the user typed; a pipe or a file shows nothing, so rb writes it.
   host->echoInput = !::isatty(STDIN_FILENO);
   host->inputHook = run.onInput;
+  host->copyHook = run.onCopy;
   host->lineHook = std::move(onLine);
   host->outputHook = std::move(onOutput);
   host->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
@@ -74,7 +75,15 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
     std::fprintf(stderr, "%s: %s\n", command, why.c_str());
     return exitcode::kIoError;
   }
+  if (run.beforeRun) {
+    if (std::string why = run.beforeRun(run); !why.empty()) {
+      run.headlessHost().flush();
+      std::fprintf(stderr, "%s: %s\n", command, why.c_str());
+      return exitcode::kRuntime;
+    }
+  }
   run.run(opts);
+  if (run.afterRun) run.afterRun(run);
   run.headlessHost().flush();
   if (int err = run.headlessHost().writeError()) {
     std::fprintf(stderr, "%s: cannot write the program's output: %s\n", command, std::strerror(err));

@@ -16,6 +16,13 @@ struct HeadlessRun : ProgramRun {
   HeadlessHost& headlessHost() { return static_cast<HeadlessHost&>(*host); }
   /// Given to the host before the run: where each `input` left its mark in the output.
   std::function<void(const HeadlessHost::InputSpan&)> onInput;
+  /// Given to the host before the run: sees the output that goes to the stream.
+  std::function<void(std::string_view)> onCopy;
+  /// Called once the machine is built, before the program runs: "" to go on, else why it may
+  /// not run (printed after the command's name; rb then exits 70 and the program never runs).
+  std::function<std::string(HeadlessRun&)> beforeRun;
+  /// Called after the program ran, whatever its end, before its output is flushed.
+  std::function<void(HeadlessRun&)> afterRun;
 };
 
 /// Builds the scripted input that --events and --keys give (script.given is false when neither

@@ -3,11 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "exit_codes.h"
+#include "program_loader.h"
 #include "grader.h"
 #include "png_writer.h"
 #include "report.h"
@@ -26,9 +28,51 @@ struct TestOptions {
   std::optional<uint64_t> maxSteps;
   std::optional<double> timeout;
   std::string format = "text";
-  std::string junit, csv, pictures;
+  std::string junit, csv, pictures, feedback;
+  std::vector<std::string> include;
+  std::string roster;
+  bool student = false;
+  bool trustComments = false;
   bool quiet = false;
 };
+
+/// A teacher's program (world, post) as rb check sees it: its first error, or "".
+std::string firstError(const std::string& file) {
+  LoadedFile loaded = loadFile(file, CompileOptions{}, false);
+  if (loaded.exitCode == exitcode::kNoInput) return file + ": cannot read it: " + loaded.readError;
+  if (loaded.compiled) return "";
+  for (const Diagnostic& d : loaded.diags.all()) {
+    if (d.severity != Severity::Error) continue;
+    const SourceSet& sources = loaded.program->sources;
+    std::string name = d.loc.valid() && d.loc.file < sources.size() ? sources.file(d.loc.file).name() : file;
+    return name + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.col) + ": " + d.message;
+  }
+  return file + ": does not compile";
+}
+
+/// One feedback file per program for its student: DIR/NAME.txt.
+bool writeFeedback(const std::string& dir, const grade::ClassResult& result) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    std::fprintf(stderr, "rb test: cannot make the feedback folder %s: %s\n", dir.c_str(), ec.message().c_str());
+    return false;
+  }
+  bool ok = true;
+  for (const grade::ProgramResult& p : result.programs) {
+    std::string name = p.program;
+    while (name.rfind("./", 0) == 0 || name.rfind("../", 0) == 0) name = name.substr(name.find('/') + 1);
+    while (!name.empty() && name[0] == '/') name.erase(0, 1);
+    std::replace(name.begin(), name.end(), '/', '_');
+    std::string text = grade::studentFeedback(p, result), error;
+    std::string path = (std::filesystem::path(dir) / (name + ".txt")).string();
+    if (!render::writeFileBytes(path, text.data(), text.size(), error)) {
+      std::fprintf(stderr, "rb test: %s\n", error.c_str());
+      ok = false;
+    }
+  }
+  return ok;
+}
 
 /// "K/N" with 1 <= K <= N; false when it is not that.
 bool parseShard(const std::string& text, int& k, int& n) {
@@ -64,6 +108,15 @@ int executeTest(const TestOptions& opts) {
   g.maxSteps = opts.maxSteps;
   g.timeout = opts.timeout;
   g.picturesDir = opts.pictures;
+  g.studentPictures = opts.student;
+  g.include = opts.include;
+  g.roster = opts.roster;
+  g.trustComments = opts.trustComments;
+  g.compileProgram = firstError;
+  if ((!opts.include.empty() || !opts.roster.empty()) && opts.assignment.empty()) {
+    std::fprintf(stderr, "rb test: --include and --roster grade a class folder against an assignment (-a FILE)\n");
+    return exitcode::kUsage;
+  }
   std::error_code ec;
   std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) {
@@ -84,7 +137,9 @@ int executeTest(const TestOptions& opts) {
     std::fprintf(stderr, "rb test: %s\n", result.fatal.c_str());
     return result.fatalCode;
   }
+  result.studentView = opts.student;
   bool written = true;
+  if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result) && written;
   if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
   if (!opts.csv.empty()) written = writeReport(opts.csv, grade::csvReport(result)) && written;
   std::string out = opts.format == "json" ? grade::jsonReport(result) : grade::textReport(result, !opts.quiet);
@@ -93,7 +148,7 @@ int executeTest(const TestOptions& opts) {
     return exitcode::kIoError;
   }
   if (!written) return exitcode::kIoError;
-  return result.failed + result.errors == 0 ? exitcode::kOk : 1;
+  return result.failed + result.errors + result.missing == 0 ? exitcode::kOk : 1;
 }
 
 }  // namespace
@@ -131,6 +186,24 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
   test->add_option("--pictures", opts->pictures,
                    "Write one PNG per program into DIR: its trail (red) over the solution's (green)")
       ->type_name("DIR");
+  test->add_option("--feedback", opts->feedback,
+                   "Write one text file per program into DIR for its student: every check with its "
+                   "points and hints, hidden checks only as 'a hidden check failed'")
+      ->type_name("DIR");
+  test->add_flag("--student", opts->student,
+                 "Reports and pictures for students: hidden checks say only that they failed; "
+                 "pictures never show the solution's drawing");
+  test->add_option("--include", opts->include,
+                   "Also grade files whose name matches GLOB as programs (like '*.bas.txt'); "
+                   "repeatable; other files of the class folder are listed as not graded")
+      ->type_name("GLOB");
+  test->add_option("--roster", opts->roster,
+                   "A CSV of students (student,file or folder): names in every report, students "
+                   "with no submission listed as missing (overrides the assignment's roster)")
+      ->type_name("FILE");
+  test->add_flag("--trust-comments", opts->trustComments,
+                 "Let // args: grant what only the person running rb may (--allow-files, "
+                 "--allow-spawn, --port, --real) and // timeout: go past 30 s");
   test->add_flag("-q,--quiet", opts->quiet, "Only the table: no details of failed checks, no progress");
   test->footer(
       "Each program runs in a child process of its own (rb itself), with a time and memory "

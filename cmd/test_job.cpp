@@ -1,6 +1,7 @@
 #include "test_job.h"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <string>
 
 #include "exit_codes.h"
@@ -20,6 +21,9 @@ struct JobOptions {
   std::string record;       ///< where the JSON record goes
   std::string screen;       ///< where the final screen goes ("": not wanted)
   std::string checkTarget;  ///< "rb9": also rb check --target rb9's warnings
+  std::string world;        ///< a program run before the student's, on the same screen
+  std::vector<std::string> posts;      ///< programs run after it, on the final state
+  std::vector<std::string> watch;      ///< colours (RRGGBB hex) the robot must avoid or touch
 };
 
 grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
@@ -50,21 +54,247 @@ void recordCheck(const JobOptions& opts, grade::RunRecord& rec) {
   rec.checkExit = checked.diags.hasErrors() ? exitcode::kRejected : exitcode::kOk;
 }
 
+bool writeRecord(const JobOptions& opts, const grade::RunRecord& rec) {
+  std::string json = grade::recordToJson(rec), error;
+  if (render::writeFileBytes(opts.record, json.data(), json.size(), error)) return true;
+  std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
+  return false;
+}
+
+/// The innermost loop of the main file around `at`: for/next, while/wend, repeat/until, or a
+/// label with a later goto back to it. {0, 0} when none.
+std::pair<uint32_t, uint32_t> loopAround(const LoadedProgram& program, SourceLoc at) {
+  std::pair<uint32_t, uint32_t> best{0, 0};
+  if (!at.valid() || at.file != 0) return best;
+  auto consider = [&](uint32_t first, uint32_t last) {
+    if (first <= at.line && at.line <= last &&
+        (best.first == 0 || last - first < best.second - best.first))
+      best = {first, last};
+  };
+  std::vector<uint32_t> open;
+  std::vector<std::pair<std::string_view, uint32_t>> labels;
+  auto jumpBack = [&](const ast::Stmt& s) {
+    if (s.kind != ast::StmtKind::Goto) return;
+    for (const auto& [name, line] : labels)
+      if (name == s.name && line <= s.loc.line) consider(line, s.loc.line);
+  };
+  ast::Arena scratch;
+  ast::StmtCursor cursor = program.cursor(scratch);
+  while (!cursor.done()) {
+    const ast::Stmt* s = cursor.next();
+    if (!s || s->loc.file != 0) continue;
+    switch (s->kind) {
+      case ast::StmtKind::For:
+      case ast::StmtKind::While:
+      case ast::StmtKind::Repeat: open.push_back(s->loc.line); break;
+      case ast::StmtKind::Next:
+      case ast::StmtKind::Wend:
+      case ast::StmtKind::Until:
+        if (!open.empty()) {
+          consider(open.back(), s->loc.line);
+          open.pop_back();
+        }
+        break;
+      case ast::StmtKind::Label: labels.push_back({s->name, s->loc.line}); break;
+      case ast::StmtKind::Goto: jumpBack(*s); break;
+      case ast::StmtKind::IfLine:
+        for (const ast::Stmt* b : s->body)
+          if (b) jumpBack(*b);
+        break;
+      default: break;
+    }
+  }
+  return best;
+}
+
+/// Watches what the robot's disc covers as it moves, for the colours a grader asks about, and
+/// passes every event on to the path recorder.
+class JobObserver : public RobotObserver {
+ public:
+  JobObserver(const std::vector<uint32_t>& colours, const Machine& machine) : machine_(machine) {
+    for (uint32_t rgb : colours) touches.push_back({rgb, false, {}, 0});
+  }
+
+  void robotEvent(const RobotEvent& e) override {
+    if (!touches.empty() && (e.kind == RobotEvent::Locate || e.kind == RobotEvent::Move ||
+                             e.kind == RobotEvent::Crash))
+      sweep(e);
+    recorder.robotEvent(e);
+  }
+
+  /// Where the robot is when the student's program starts (a world program may have placed it):
+  /// the path starts there, without counting as the student's move.
+  void startAt(const Robot& robot) {
+    if (!robot.located()) return;
+    RobotEvent e{RobotEvent::Locate, "rLocate", {}, "", robot.pose(), robot.penDown(), std::nullopt};
+    recorder.robotEvent(e);
+    recorder.moves = 0;
+    last_ = {e.pose.pos.x(), e.pose.pos.y()};
+    placed_ = true;
+  }
+
+  grade::PathRecorder recorder;
+  std::vector<grade::RunRecord::Touch> touches;
+
+ private:
+  /// The disc from the last position to this one, on points at most 1 px apart.
+  void sweep(const RobotEvent& e) {
+    grade::P2 to{e.pose.pos.x(), e.pose.pos.y()};
+    grade::P2 from = e.kind == RobotEvent::Locate || !placed_ ? to : last_;
+    last_ = to;
+    placed_ = true;
+    const Canvas& canvas = machine_.canvas();
+    double r = machine_.robot().radius();
+    // The robot's own trail under it is not something it touched.
+    std::optional<uint32_t> own;
+    if (e.pen) own = colourToRgb(canvas.trailColour());
+    double len = grade::distance(from, to);
+    int n = std::max(1, static_cast<int>(std::ceil(len)));
+    uint32_t line = e.loc.file == 0 ? e.loc.line : 0;
+    for (int k = 0; k <= n; ++k) {
+      double t = static_cast<double>(k) / n;
+      grade::P2 c{from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t};
+      int x0 = static_cast<int>(std::floor(c.x - r)), x1 = static_cast<int>(std::ceil(c.x + r));
+      int y0 = static_cast<int>(std::floor(c.y - r)), y1 = static_cast<int>(std::ceil(c.y + r));
+      for (int y = std::max(0, y0); y <= std::min(Canvas::kHeight - 1, y1); ++y)
+        for (int x = std::max(0, x0); x <= std::min(Canvas::kWidth - 1, x1); ++x) {
+          if ((x - c.x) * (x - c.x) + (y - c.y) * (y - c.y) > r * r) continue;
+          uint32_t rgb = colourToRgb(canvas.at(x, y));
+          if (own && rgb == *own) continue;
+          for (grade::RunRecord::Touch& t2 : touches)
+            if (!t2.touched && t2.rgb == rgb) {
+              t2.touched = true;
+              t2.at = c;
+              t2.line = line;
+            }
+        }
+    }
+  }
+
+  const Machine& machine_;
+  grade::P2 last_;
+  bool placed_ = false;
+};
+
+/// A teacher's program (world or post) compiled for running on the student's machine.
+struct TeacherProgram {
+  LoadedFile loaded;
+  std::string problem;  ///< why it cannot run
+};
+
+TeacherProgram loadTeacherProgram(const std::string& file) {
+  TeacherProgram p;
+  p.loaded = loadFile(file, CompileOptions{}, false);
+  if (p.loaded.exitCode == exitcode::kNoInput) {
+    p.problem = "cannot read " + file + ": " + p.loaded.readError;
+  } else if (!p.loaded.compiled) {
+    for (const Diagnostic& d : p.loaded.diags.all())
+      if (d.severity == Severity::Error) {
+        grade::DiagRecord r = diagRecord(&p.loaded.program->sources, d);
+        p.problem = r.file + ":" + std::to_string(r.line) + ":" + std::to_string(r.col) + ": " + r.message;
+        break;
+      }
+  }
+  return p;
+}
+
+/// Runs a teacher's program on the run's machine with the run's limits. Returns its result.
+RunResult runTeacherProgram(const TeacherProgram& p, HeadlessRun& run, const RunOptions& opts) {
+  Interpreter interpreter(*p.loaded.compiled, *run.machine);
+  return interpreter.run(runLimits(opts));
+}
+
 int executeJob(JobOptions opts) {
   opts.run.quiet = true;  // rb check's part of the record has the warnings
   grade::RunRecord rec;
   recordCheck(opts, rec);
+  // Written now and again at the end: a run killed at its time limit keeps rb check's part.
+  rec.complete = false;
+  if (!writeRecord(opts, rec)) return exitcode::kIoError;
+  rec.complete = true;
   int code = exitcode::kOk;
   if (opts.run.tui) {
     code = runTui(opts.run);  // a job has no terminal: this reports why, as rb run --tui would
   } else {
-    grade::PathRecorder recorder;
+    std::vector<uint32_t> colours;
+    for (const std::string& hex : opts.watch) colours.push_back(static_cast<uint32_t>(std::stoul(hex, nullptr, 16)));
+    std::optional<JobObserver> observer;
     HeadlessRun run;
+    std::string output;  // the student's output as it goes to stdout, for the post programs
+    run.onInput = [&rec](const HeadlessHost::InputSpan& s) {
+      if (rec.inputs.size() < 100000) rec.inputs.push_back({s.start, s.promptEnd, s.end});
+    };
+    std::optional<TeacherProgram> world;
+    std::vector<TeacherProgram> posts;
+    if (!opts.world.empty()) world = loadTeacherProgram(opts.world);
+    for (const std::string& p : opts.posts) posts.push_back(loadTeacherProgram(p));
+    if (!opts.posts.empty())
+      run.onCopy = [&output](std::string_view text) {
+        if (output.size() < (1u << 20)) output.append(text.substr(0, (1u << 20) - output.size()));
+      };
+    run.beforeRun = [&](HeadlessRun& r) -> std::string {
+      observer.emplace(colours, *r.machine);
+      if (world) {
+        if (!world->problem.empty()) return rec.worldError = "the world program " + world->problem;
+        r.machine->setObserver(nullptr);
+        HeadlessHost& host = r.headlessHost();
+        auto saved = std::move(host.outputHook);
+        host.outputHook = [](std::string_view) {};  // the world's prints are not the student's
+        RunResult w = runTeacherProgram(*world, r, opts.run);
+        host.outputHook = std::move(saved);
+        if (w.error) {
+          grade::DiagRecord d = diagRecord(&world->loaded.program->sources, *w.error);
+          return rec.worldError = "the world program " + d.file + " stopped at line " +
+                                  std::to_string(d.line) + ": " + d.message;
+        }
+        observer->startAt(r.machine->robot());
+      }
+      r.machine->setObserver(&*observer);
+      return "";
+    };
+    run.afterRun = [&](HeadlessRun& r) {
+      r.machine->setObserver(nullptr);
+      if (posts.empty()) return;
+      HeadlessHost& host = r.headlessHost();
+      host.flush();
+      // What the student printed, as the post programs' input.
+      host.copyHook = nullptr;
+      std::vector<std::string> lines;
+      std::string printed = grade::printedOutput(output, rec.inputs);
+      for (size_t at = 0; at < printed.size();) {
+        size_t nl = std::min(printed.find('\n', at), printed.size());
+        lines.push_back(printed.substr(at, nl - at));
+        at = nl + 1;
+      }
+      for (size_t i = 0; i < posts.size(); ++i) {
+        grade::RunRecord::Post result;
+        result.file = opts.posts[i];
+        if (!posts[i].problem.empty()) {
+          result.error = grade::DiagRecord{opts.posts[i], 0, 0, "error", posts[i].problem};
+          rec.posts.push_back(std::move(result));
+          continue;
+        }
+        size_t next = 0;
+        host.inputSource = [&]() -> std::optional<std::string> {
+          return next < lines.size() ? lines[next++] : std::string();
+        };
+        host.outputHook = [&](std::string_view text) {
+          if (result.output.size() < (64u << 10)) result.output += text;
+        };
+        RunResult p = runTeacherProgram(posts[i], r, opts.run);
+        host.outputHook = nullptr;
+        host.inputSource = nullptr;
+        result.ran = true;
+        if (p.error) result.error = diagRecord(&posts[i].loaded.program->sources, *p.error);
+        rec.posts.push_back(std::move(result));
+      }
+    };
     CompileOptions compile;
     compile.lineTracing = true;  // to count the statements exactly, up to a runtime error
     uint64_t started = 0;
-    code = runHeadless("rb run", opts.run, compile, stdout, &recorder, run, [&](SourceLoc) { ++started; });
+    code = runHeadless("rb run", opts.run, compile, stdout, nullptr, run, [&](SourceLoc) { ++started; });
     const SourceSet* sources = run.loaded.program ? &run.loaded.program->sources : nullptr;
+    if (run.loaded.program) rec.statements = run.loaded.program->stmtCount();
     if (run.loaded.program && !run.loaded.compiled) {
       rec.status = "rejected";
       for (const Diagnostic& d : run.loaded.diags.all())
@@ -72,7 +302,14 @@ int executeJob(JobOptions opts) {
     } else if (run.ran) {
       rec.status = grade::statusName(run.result.status);
       rec.limit = grade::limitName(run.result.status);
-      if (run.result.error) rec.error = diagRecord(sources, *run.result.error);
+      if (run.result.error) {
+        rec.error = diagRecord(sources, *run.result.error);
+        if (!rec.limit.empty()) {
+          auto [first, last] = loopAround(*run.loaded.program, run.result.error->loc);
+          rec.loopFirst = first;
+          rec.loopLast = last;
+        }
+      }
       rec.steps = countedSteps(run.result, started);
       rec.seed = run.seed;
       rec.located = run.machine->robot().located();
@@ -80,10 +317,17 @@ int executeJob(JobOptions opts) {
       rec.pos = {pose.pos.x(), pose.pos.y()};
       rec.heading = pose.heading;
       rec.penDown = run.machine->robot().penDown();
-      rec.crashed = recorder.crashed;
-      rec.path = std::move(recorder.path);
-      rec.trail = std::move(recorder.trail);
-      rec.truncated = recorder.truncated;
+      rec.radius = run.machine->robot().radius();
+      if (observer) {
+        grade::PathRecorder& recorder = observer->recorder;
+        rec.crashed = recorder.crashed;
+        rec.moves = recorder.moves;
+        rec.path = std::move(recorder.path);
+        rec.pathLines = std::move(recorder.pathLines);
+        rec.trail = std::move(recorder.trail);
+        rec.truncated = recorder.truncated;
+        rec.touches = observer->touches;
+      }
       if (!opts.screen.empty()) {
         const Machine& m = *run.machine;
         std::string error;
@@ -94,11 +338,7 @@ int executeJob(JobOptions opts) {
     }
   }
   rec.exitCode = code;
-  std::string json = grade::recordToJson(rec), error;
-  if (!render::writeFileBytes(opts.record, json.data(), json.size(), error)) {
-    std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
-    return exitcode::kIoError;
-  }
+  if (!writeRecord(opts, rec)) return exitcode::kIoError;
   return code;
 }
 
@@ -117,6 +357,9 @@ void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
   job->add_option("--screen", opts->screen, "Where to write the final screen (binary PPM)");
   job->add_option("--check-target", opts->checkTarget, "Also record rb check --target's warnings")
       ->check(CLI::IsMember({"rb9"}));
+  job->add_option("--world", opts->world, "A program run first, on the same screen");
+  job->add_option("--post", opts->posts, "A program run after, on the final state; repeatable");
+  job->add_option("--watch-colour", opts->watch, "A colour (RRGGBB) to record touches of; repeatable");
   job->callback([opts, &exitCode] { exitCode = executeJob(*opts); });
 }
 

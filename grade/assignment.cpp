@@ -1,11 +1,16 @@
 #include "assignment.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <toml++/toml.h>
 
+#include "lang/builtins.h"
 #include "lang/suggest.h"
+#include "machine/builtins.h"
+#include "screen/canvas.h"
 
 namespace rb::grade {
 
@@ -22,25 +27,37 @@ struct Bad {
 struct KindInfo {
   Check::Kind kind;
   const char* name;
-  std::vector<std::string_view> keys;  ///< keys besides kind, name and points
+  std::vector<std::string_view> keys;  ///< keys besides the ones every check takes
 };
 
 const std::vector<KindInfo>& kinds() {
   static const std::vector<KindInfo> table = {
-      {Check::Output, "output", {"text", "regex"}},
+      {Check::Output, "output", {"text", "regex", "prompts"}},
       {Check::NoError, "no-error", {}},
       {Check::NoCrash, "no-crash", {}},
       {Check::Clean, "check", {"warnings", "target"}},
-      {Check::EndsIn, "ends-in", {"rect", "circle"}},
+      {Check::EndsIn, "ends-in", {"rect", "circle", "polygon"}},
       {Check::Visits, "visits", {"waypoints", "tolerance", "in-order"}},
       {Check::Trail, "trail", {"path", "paths", "tolerance"}},
       {Check::Screen, "screen", {"reference", "tolerance"}},
-      {Check::SolutionOutput, "solution-output", {}},
+      {Check::SolutionOutput, "solution-output", {"prompts"}},
       {Check::SolutionTrail, "solution-trail", {"tolerance"}},
       {Check::SolutionScreen, "solution-screen", {"tolerance"}},
+      {Check::Avoid, "avoid", {"rect", "circle", "polygon", "colour", "color"}},
+      {Check::Touch, "touch", {"rect", "circle", "polygon", "colour", "color"}},
+      {Check::Post, "post", {"post", "program"}},
+      {Check::Efficiency, "efficiency", {"measure", "tiers"}},
+      {Check::AnyOf, "any-of", {"of"}},
+      {Check::AllOf, "all-of", {"of"}},
   };
   return table;
 }
+
+/// Keys every check takes.
+const std::vector<std::string_view> kCommonKeys = {"kind", "name", "points", "required", "after", "hint",
+                                                   "hidden", "max-statements", "max-moves", "max-distance"};
+/// Keys a check inside a group may not have: the group scores, depends and hides as one.
+const std::vector<std::string_view> kGroupOnlyKeys = {"points", "required", "after", "hidden"};
 
 std::string inQuotes(std::string_view s) { return "'" + std::string(s) + "'"; }
 
@@ -123,39 +140,184 @@ double tolerance(const toml::table& t, double fallback, bool share, const std::s
   return v;
 }
 
-Check readCheck(const toml::table& t, const fs::path& dir) {
+/// A colour: a name RobotBASIC knows ("red", any case), a colour number (4, or what rgb()
+/// gives), [r, g, b], or "#RRGGBB". 0xRRGGBB.
+uint32_t colour(const toml::node& node, std::string& name) {
+  if (std::optional<std::string> s = node.value<std::string>()) {
+    name = *s;
+    if (s->size() == 7 && (*s)[0] == '#') {
+      try {
+        size_t used = 0;
+        unsigned long v = std::stoul(s->substr(1), &used, 16);
+        if (used == 6) return static_cast<uint32_t>(v);
+      } catch (const std::exception&) {
+      }
+    }
+    const BuiltinTable& table = standardBuiltins();
+    if (const Builtin* b = table.find(*s, BuiltinKind::Constant); b && b->group == "colour")
+      return colourToRgb(static_cast<Colour>(b->constant));
+    std::vector<std::string_view> names;
+    for (const Builtin& b : table.rows())
+      if (b.kind == BuiltinKind::Constant && b.group == "colour") names.push_back(b.name);
+    std::string message = "unknown colour " + inQuotes(*s);
+    std::string near = closestMatch(*s, names, false);
+    if (!near.empty()) message += "; did you mean " + inQuotes(near) + "?";
+    throw Bad{message + " (a colour is a name like \"red\", a number, [r, g, b] or \"#RRGGBB\")", node.source()};
+  }
+  if (node.is_integer()) {
+    int64_t v = *node.value<int64_t>();
+    if (v < 0 || v > 0xFFFFFFFF) throw Bad{"a colour number must be 0 or more", node.source()};
+    name = "colour " + std::to_string(v);
+    return colourToRgb(static_cast<Colour>(v));
+  }
+  if (const toml::array* arr = node.as_array(); arr && arr->size() == 3) {
+    std::vector<double> v = numbers(node, 3, "a colour [r, g, b]");
+    for (double c : v)
+      if (c < 0 || c > 255 || c != std::floor(c))
+        throw Bad{"a colour's [r, g, b] are whole numbers from 0 to 255", node.source()};
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "[%d, %d, %d]", static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]));
+    name = buf;
+    return static_cast<uint32_t>(v[0]) << 16 | static_cast<uint32_t>(v[1]) << 8 | static_cast<uint32_t>(v[2]);
+  }
+  throw Bad{"a colour is a name like \"red\", a number, [r, g, b] or \"#RRGGBB\"", node.source()};
+}
+
+/// True when the node is a list whose first entry is a list: several of a thing.
+bool listOfLists(const toml::node& node, int depth) {
+  const toml::node* n = &node;
+  for (int i = 0; i < depth; ++i) {
+    const toml::array* arr = n->as_array();
+    if (!arr || arr->empty()) return false;
+    n = arr->get(0);
+  }
+  return n->is_array();
+}
+
+Region rectRegion(const toml::node& n) {
+  std::vector<double> v = numbers(n, 4, "rect");
+  Region g;
+  g.kind = Region::Rect;
+  g.x1 = std::min(v[0], v[2]);
+  g.x2 = std::max(v[0], v[2]);
+  g.y1 = std::min(v[1], v[3]);
+  g.y2 = std::max(v[1], v[3]);
+  return g;
+}
+
+Region circleRegion(const toml::node& n) {
+  std::vector<double> v = numbers(n, 3, "circle");
+  if (v[2] < 0) throw Bad{"the circle's radius must not be negative", n.source()};
+  Region g;
+  g.kind = Region::Circle;
+  g.cx = v[0];
+  g.cy = v[1];
+  g.r = v[2];
+  return g;
+}
+
+Region polygonRegion(const toml::node& n) {
+  Region g;
+  g.kind = Region::Polygon;
+  g.points = points(n, "polygon");
+  if (g.points.size() < 3) throw Bad{"a polygon needs at least 3 corners", n.source()};
+  return g;
+}
+
+/// rect, circle and polygon: one each, or a list of them.
+std::vector<Region> regions(const toml::table& t) {
+  std::vector<Region> out;
+  if (const toml::node* n = t.get("rect")) {
+    if (listOfLists(*n, 1))
+      for (const toml::node& r : *n->as_array()) out.push_back(rectRegion(r));
+    else
+      out.push_back(rectRegion(*n));
+  }
+  if (const toml::node* n = t.get("circle")) {
+    if (listOfLists(*n, 1))
+      for (const toml::node& r : *n->as_array()) out.push_back(circleRegion(r));
+    else
+      out.push_back(circleRegion(*n));
+  }
+  if (const toml::node* n = t.get("polygon")) {
+    if (listOfLists(*n, 2))
+      for (const toml::node& r : *n->as_array()) out.push_back(polygonRegion(r));
+    else
+      out.push_back(polygonRegion(*n));
+  }
+  return out;
+}
+
+double positiveLimit(const toml::node& n, const std::string& what) {
+  double v = number(n, what);
+  if (!(v > 0)) throw Bad{what + " must be above 0", n.source()};
+  return v;
+}
+
+Check readCheck(const toml::table& t, const fs::path& dir, bool inGroup) {
   Check c;
   c.line = t.source().begin.line;
+  c.column = t.source().begin.column;
   const toml::node* kindNode = t.get("kind");
-  if (!kindNode) throw Bad{"a [[check]] needs a kind (output, no-error, no-crash, check, ends-in, visits, trail, screen, solution-output, solution-trail or solution-screen)", t.source()};
-  std::string kind = text(*kindNode, "kind");
+  if (!kindNode && (t.get("post") || t.get("program"))) {
+    c.kind = Check::Post;
+  } else {
+    if (!kindNode) {
+      std::string list;
+      for (const KindInfo& k : kinds()) list += std::string(list.empty() ? "" : ", ") + k.name;
+      throw Bad{"a check needs a kind (" + list + ")", t.source()};
+    }
+    std::string kind = text(*kindNode, "kind");
+    const KindInfo* found = nullptr;
+    for (const KindInfo& k : kinds())
+      if (kind == k.name) found = &k;
+    if (!found) {
+      std::vector<std::string_view> names;
+      for (const KindInfo& k : kinds()) names.push_back(k.name);
+      std::string message = "unknown check kind " + inQuotes(kind);
+      std::string near = closestMatch(kind, names, true);
+      if (!near.empty()) message += "; did you mean " + inQuotes(near) + "?";
+      throw Bad{message, kindNode->source()};
+    }
+    c.kind = found->kind;
+  }
   const KindInfo* info = nullptr;
   for (const KindInfo& k : kinds())
-    if (kind == k.name) info = &k;
-  if (!info) {
-    std::vector<std::string_view> names;
-    for (const KindInfo& k : kinds()) names.push_back(k.name);
-    std::string message = "unknown check kind " + inQuotes(kind);
-    std::string near = closestMatch(kind, names, true);
-    if (!near.empty()) message += "; did you mean " + inQuotes(near) + "?";
-    throw Bad{message, kindNode->source()};
-  }
-  c.kind = info->kind;
+    if (k.kind == c.kind) info = &k;
   c.name = info->name;
   std::vector<std::string_view> allowed = info->keys;
-  allowed.insert(allowed.end(), {"kind", "name", "points"});
-  std::string where = "in check " + inQuotes(kind);
+  allowed.insert(allowed.end(), kCommonKeys.begin(), kCommonKeys.end());
+  std::string where = "in check " + inQuotes(info->name);
   onlyKeys(t, allowed, where);
-  if (const toml::node* n = t.get("name")) c.name = text(*n, "name");
+  if (inGroup)
+    for (std::string_view k : kGroupOnlyKeys)
+      if (const toml::node* n = t.get(k))
+        throw Bad{"a check inside any-of or all-of has no " + std::string(k) + " of its own: the group has it", n->source()};
+  if (const toml::node* n = t.get("name")) {
+    c.name = text(*n, "name");
+    c.named = true;
+    if (c.name.empty()) throw Bad{"a check's name must not be empty", n->source()};
+  }
   if (const toml::node* n = t.get("points")) {
     c.points = number(*n, "points");
     if (c.points < 0) throw Bad{"points must not be negative", n->source()};
   }
+  if (const toml::node* n = t.get("required")) c.required = boolean(*n, "required");
+  if (const toml::node* n = t.get("hidden")) c.hidden = boolean(*n, "hidden");
+  if (const toml::node* n = t.get("hint")) c.hint = text(*n, "hint");
+  if (const toml::node* n = t.get("after")) {
+    c.after = text(*n, "after");
+    if (c.after.empty()) throw Bad{"after names the check that must pass first", n->source()};
+  }
+  if (const toml::node* n = t.get("max-statements")) c.maxStatements = positiveLimit(*n, "max-statements");
+  if (const toml::node* n = t.get("max-moves")) c.maxMoves = positiveLimit(*n, "max-moves");
+  if (const toml::node* n = t.get("max-distance")) c.maxDistance = positiveLimit(*n, "max-distance");
 
   switch (c.kind) {
     case Check::Output: {
       const toml::node* textNode = t.get("text");
       const toml::node* regexNode = t.get("regex");
+      if (const toml::node* n = t.get("prompts")) c.prompts = boolean(*n, "prompts");
       if (!!textNode == !!regexNode)
         throw Bad{"an output check needs either text (the exact output) or regex (patterns, one per line)", t.source()};
       if (textNode) {
@@ -178,6 +340,9 @@ Check readCheck(const toml::table& t, const fs::path& dir) {
       }
       break;
     }
+    case Check::SolutionOutput:
+      if (const toml::node* n = t.get("prompts")) c.prompts = boolean(*n, "prompts");
+      break;
     case Check::Clean:
       if (const toml::node* n = t.get("warnings")) c.allowWarnings = boolean(*n, "warnings");
       if (const toml::node* n = t.get("target")) {
@@ -186,25 +351,35 @@ Check readCheck(const toml::table& t, const fs::path& dir) {
       }
       break;
     case Check::EndsIn: {
-      const toml::node* rect = t.get("rect");
-      const toml::node* circle = t.get("circle");
-      if (!!rect == !!circle)
-        throw Bad{"an ends-in check needs either rect = [x1, y1, x2, y2] or circle = [x, y, radius]", t.source()};
-      if (rect) {
-        std::vector<double> v = numbers(*rect, 4, "rect");
-        c.region.kind = Region::Rect;
-        c.region.x1 = std::min(v[0], v[2]);
-        c.region.x2 = std::max(v[0], v[2]);
-        c.region.y1 = std::min(v[1], v[3]);
-        c.region.y2 = std::max(v[1], v[3]);
-      } else {
-        std::vector<double> v = numbers(*circle, 3, "circle");
-        if (v[2] < 0) throw Bad{"the circle's radius must not be negative", circle->source()};
-        c.region.kind = Region::Circle;
-        c.region.cx = v[0];
-        c.region.cy = v[1];
-        c.region.r = v[2];
+      c.regions = regions(t);
+      if (c.regions.size() != 1)
+        throw Bad{"an ends-in check needs one region: rect = [x1, y1, x2, y2], circle = [x, y, radius] or polygon = [[x, y], ...]", t.source()};
+      break;
+    }
+    case Check::Avoid:
+    case Check::Touch: {
+      c.regions = regions(t);
+      const toml::node* colourNode = t.get("colour");
+      if (const toml::node* alt = t.get("color")) {
+        if (colourNode) throw Bad{"colour and color are the same key: give one", alt->source()};
+        colourNode = alt;
       }
+      if (colourNode) {
+        std::string name;
+        if (const toml::array* arr = colourNode->as_array(); arr && !(arr->size() == 3 && (*arr)[0].is_number())) {
+          for (const toml::node& n : *arr) {
+            c.colours.push_back(colour(n, name));
+            c.colourNames.push_back(name);
+          }
+        } else {
+          c.colours.push_back(colour(*colourNode, name));
+          c.colourNames.push_back(name);
+        }
+      }
+      if (c.regions.empty() && c.colours.empty())
+        throw Bad{std::string("an ") + (c.kind == Check::Avoid ? "avoid" : "touch") +
+                      " check needs a region (rect, circle, polygon) or a colour",
+                  t.source()};
       break;
     }
     case Check::Visits: {
@@ -243,12 +418,143 @@ Check readCheck(const toml::table& t, const fs::path& dir) {
     case Check::SolutionScreen:
       c.tolerance = tolerance(t, 0.01, true, where);
       break;
+    case Check::Post: {
+      const toml::node* a = t.get("post");
+      const toml::node* b = t.get("program");
+      if (!!a == !!b) throw Bad{"a post check needs post = \"goal.bas\": the teacher's program run after the student's", t.source()};
+      c.program = requireFile(dir, a ? *a : *b, "post");
+      if (!t.get("name")) c.name = fs::path(c.program).stem().string();
+      break;
+    }
+    case Check::Efficiency: {
+      const toml::node* m = t.get("measure");
+      if (!m) throw Bad{"an efficiency check needs measure = \"statements\", \"moves\" or \"distance\"", t.source()};
+      std::string measure = text(*m, "measure");
+      if (measure == "statements") c.measure = Check::Statements;
+      else if (measure == "moves") c.measure = Check::Moves;
+      else if (measure == "distance") c.measure = Check::Distance;
+      else throw Bad{"measure must be \"statements\", \"moves\" or \"distance\", not " + inQuotes(measure), m->source()};
+      const toml::node* tiers = t.get("tiers");
+      const toml::array* arr = tiers ? tiers->as_array() : nullptr;
+      if (!arr || arr->empty())
+        throw Bad{"an efficiency check needs tiers = [[at most, points], ...], like [[40, 10], [60, 5]]", tiers ? tiers->source() : t.source()};
+      for (const toml::node& n : *arr) {
+        std::vector<double> v = numbers(n, 2, "each tier [at most, points]");
+        if (v[0] < 0 || v[1] < 0) throw Bad{"a tier's limit and points must not be negative", n.source()};
+        c.tiers.push_back({v[0], v[1]});
+      }
+      std::sort(c.tiers.begin(), c.tiers.end());
+      for (size_t i = 1; i < c.tiers.size(); ++i) {
+        if (c.tiers[i].first == c.tiers[i - 1].first)
+          throw Bad{"two tiers have the same limit " + std::to_string(c.tiers[i].first), tiers->source()};
+        if (c.tiers[i].second >= c.tiers[i - 1].second)
+          throw Bad{"tiers contradict each other: a looser limit must earn fewer points than a stricter one", tiers->source()};
+      }
+      if (t.get("points")) throw Bad{"an efficiency check's points are its tiers' (the best tier's points)", t.get("points")->source()};
+      c.points = c.tiers.front().second;
+      break;
+    }
+    case Check::AnyOf:
+    case Check::AllOf: {
+      const toml::node* n = t.get("of");
+      const toml::array* arr = n ? n->as_array() : nullptr;
+      if (!arr || arr->empty())
+        throw Bad{std::string("an ") + info->name + " group needs its checks: [[check.of]] tables after it", t.source()};
+      for (const toml::node& m : *arr) {
+        const toml::table* mt = m.as_table();
+        if (!mt) throw Bad{"the checks of a group are written [[check.of]], one table each", m.source()};
+        c.of.push_back(readCheck(*mt, dir, true));
+      }
+      break;
+    }
     case Check::NoError:
     case Check::NoCrash:
-    case Check::SolutionOutput:
       break;
   }
   return c;
+}
+
+std::string regionWords(const Region& g) {
+  char buf[160];
+  switch (g.kind) {
+    case Region::Rect:
+      std::snprintf(buf, sizeof buf, "the rectangle (%g, %g)-(%g, %g)", g.x1, g.y1, g.x2, g.y2);
+      break;
+    case Region::Circle: std::snprintf(buf, sizeof buf, "the circle of radius %g around (%g, %g)", g.r, g.cx, g.cy); break;
+    case Region::Polygon: std::snprintf(buf, sizeof buf, "the polygon of %zu corners", g.points.size()); break;
+  }
+  return buf;
+}
+
+/// Checks that cannot all pass, and names that do not resolve.
+void contradictions(const std::vector<Check>& checks) {
+  auto at = [](const Check& c) {
+    toml::source_region r;
+    r.begin.line = c.line;
+    r.begin.column = c.column;
+    return r;
+  };
+  std::vector<const Check*> flat;
+  for (const Check& c : checks) {
+    flat.push_back(&c);
+    for (const Check& m : c.of) flat.push_back(&m);
+  }
+  for (size_t i = 0; i < checks.size(); ++i) {
+    const Check& c = checks[i];
+    for (size_t j = 0; j < i; ++j)
+      if (checks[j].name == c.name && c.named)
+        throw Bad{"two checks are named " + inQuotes(c.name) + " (line " + std::to_string(checks[j].line) +
+                      " and here): give one a name = \"...\" of its own",
+                  at(c)};
+    if (!c.after.empty()) {
+      bool before = false;
+      for (size_t j = 0; j < i; ++j) before = before || checks[j].name == c.after;
+      if (!before) {
+        bool later = false;
+        for (size_t j = i; j < checks.size(); ++j) later = later || checks[j].name == c.after;
+        throw Bad{"after = " + inQuotes(c.after) + " names " +
+                      (c.after == c.name ? std::string("this check itself")
+                       : later           ? std::string("a check that comes later: put it before this one")
+                                         : std::string("no check")),
+                  at(c)};
+      }
+    }
+  }
+  for (const Check* a : flat) {
+    if (a->kind != Check::Avoid) continue;
+    for (const Check* b : flat) {
+      if (b == a) continue;
+      if (b->kind == Check::Touch)
+        for (uint32_t col : b->colours)
+          for (size_t k = 0; k < a->colours.size(); ++k)
+            if (a->colours[k] == col)
+              throw Bad{"checks contradict each other: " + inQuotes(b->name) + " must touch " + a->colourNames[k] +
+                            ", which " + inQuotes(a->name) + " must avoid",
+                        at(*b)};
+      for (const Region& avoid : a->regions) {
+        if ((b->kind == Check::EndsIn || b->kind == Check::Touch) && !b->regions.empty()) {
+          bool all = true;
+          for (const Region& g : b->regions) all = all && regionInside(g, avoid);
+          if (all)
+            throw Bad{"checks contradict each other: " + inQuotes(b->name) + "'s " + regionWords(b->regions[0]) +
+                          " lies inside " + regionWords(avoid) + ", which " + inQuotes(a->name) + " must avoid",
+                      at(*b)};
+        }
+        if (b->kind == Check::Visits)
+          for (size_t k = 0; k < b->targets.size(); ++k) {
+            Region dot;
+            dot.kind = Region::Circle;
+            dot.cx = b->targets[k].x;
+            dot.cy = b->targets[k].y;
+            dot.r = b->tolerance;
+            if (regionInside(dot, avoid))
+              throw Bad{"checks contradict each other: " + inQuotes(b->name) + "'s waypoint " + std::to_string(k + 1) +
+                            " lies inside " + regionWords(avoid) + ", which " + inQuotes(a->name) + " must avoid",
+                        at(*b)};
+          }
+      }
+    }
+  }
 }
 
 void readRun(const toml::table& run, const fs::path& dir, Assignment& a) {
@@ -267,10 +573,12 @@ void readRun(const toml::table& run, const fs::path& dir, Assignment& a) {
     std::optional<int64_t> v = n->value<int64_t>();
     if (!v || !n->is_integer() || *v < 0) throw Bad{"max-steps must be a whole number (0: no limit)", n->source()};
     a.maxSteps = static_cast<uint64_t>(*v);
+    a.maxStepsSet = true;
   }
   if (const toml::node* n = run.get("timeout")) {
     a.timeout = number(*n, "timeout");
     if (!(a.timeout > 0) || a.timeout > 86400) throw Bad{"timeout must be a number of seconds above 0", n->source()};
+    a.timeoutSet = true;
   }
   if (const toml::node* n = run.get("memory")) {
     std::optional<int64_t> v = n->value<int64_t>();
@@ -294,16 +602,34 @@ const char* kindName(Check::Kind kind) {
   return "check";
 }
 
+const char* measureName(Check::Measure measure) {
+  switch (measure) {
+    case Check::Statements: return "statements";
+    case Check::Moves: return "moves";
+    case Check::Distance: return "distance";
+  }
+  return "statements";
+}
+
+std::vector<const Check*> allChecks(const Assignment& a) {
+  std::vector<const Check*> out;
+  for (const Check& c : a.checks) {
+    out.push_back(&c);
+    for (const Check& m : c.of) out.push_back(&m);
+  }
+  return out;
+}
+
 bool Assignment::needsSolution() const {
-  for (const Check& c : checks)
-    if (c.kind == Check::SolutionOutput || c.kind == Check::SolutionTrail || c.kind == Check::SolutionScreen)
+  for (const Check* c : allChecks(*this))
+    if (c->kind == Check::SolutionOutput || c->kind == Check::SolutionTrail || c->kind == Check::SolutionScreen)
       return true;
   return false;
 }
 
 bool Assignment::needsScreen() const {
-  for (const Check& c : checks)
-    if (c.kind == Check::Screen || c.kind == Check::SolutionScreen) return true;
+  for (const Check* c : allChecks(*this))
+    if (c->kind == Check::Screen || c->kind == Check::SolutionScreen) return true;
   return false;
 }
 
@@ -311,6 +637,41 @@ double Assignment::maxPoints() const {
   double total = 0;
   for (const Check& c : checks) total += c.points;
   return total;
+}
+
+std::vector<std::string> Assignment::posts() const {
+  std::vector<std::string> out;
+  for (const Check* c : allChecks(*this))
+    if (c->kind == Check::Post) out.push_back(c->program);
+  return out;
+}
+
+std::vector<uint32_t> Assignment::watchedColours() const {
+  std::vector<uint32_t> out;
+  for (const Check* c : allChecks(*this))
+    for (uint32_t col : c->colours)
+      if (std::find(out.begin(), out.end(), col) == out.end()) out.push_back(col);
+  return out;
+}
+
+bool Assignment::robotChecks() const {
+  for (const Check* c : allChecks(*this)) {
+    switch (c->kind) {
+      case Check::NoCrash:
+      case Check::EndsIn:
+      case Check::Visits:
+      case Check::Trail:
+      case Check::SolutionTrail:
+      case Check::Avoid:
+      case Check::Touch: return true;
+      case Check::Efficiency:
+        if (c->measure != Check::Statements) return true;
+        break;
+      default: break;
+    }
+    if (c->maxMoves || c->maxDistance) return true;
+  }
+  return false;
 }
 
 std::optional<Assignment> loadAssignment(const std::string& path, std::string& error) {
@@ -324,10 +685,13 @@ std::optional<Assignment> loadAssignment(const std::string& path, std::string& e
   a.path = path;
   try {
     toml::table root = toml::parse_file(path);
-    onlyKeys(root, {"title", "solution", "run", "check"}, "at the top of the assignment");
+    onlyKeys(root, {"title", "solution", "world", "roster", "robot", "run", "check"}, "at the top of the assignment");
     a.title = fs::path(path).stem().string();
     if (const toml::node* n = root.get("title")) a.title = text(*n, "title");
     if (const toml::node* n = root.get("solution")) a.solution = requireFile(dir, *n, "solution");
+    if (const toml::node* n = root.get("world")) a.world = requireFile(dir, *n, "world");
+    if (const toml::node* n = root.get("roster")) a.roster = requireFile(dir, *n, "roster");
+    if (const toml::node* n = root.get("robot")) a.aboutRobot = boolean(*n, "robot");
     if (const toml::node* n = root.get("run")) {
       const toml::table* run = n->as_table();
       if (!run) throw Bad{"run must be a table: [run]", n->source()};
@@ -339,7 +703,7 @@ std::optional<Assignment> loadAssignment(const std::string& path, std::string& e
       for (const toml::node& c : *arr) {
         const toml::table* t = c.as_table();
         if (!t) throw Bad{"checks are written [[check]], one table per check", c.source()};
-        a.checks.push_back(readCheck(*t, dir));
+        a.checks.push_back(readCheck(*t, dir, false));
       }
     }
     if (a.checks.empty()) {
@@ -347,6 +711,25 @@ std::optional<Assignment> loadAssignment(const std::string& path, std::string& e
       c.kind = Check::NoError;
       c.name = kindName(c.kind);
       a.checks.push_back(c);
+    }
+    // Unnamed checks of one kind are told apart by a number: "ends-in", "ends-in 2".
+    for (size_t i = 0; i < a.checks.size(); ++i) {
+      Check& c = a.checks[i];
+      if (c.named) continue;
+      std::string base = c.name;
+      for (int k = 2;; ++k) {
+        bool taken = false;
+        for (size_t j = 0; j < a.checks.size(); ++j) taken = taken || (j != i && a.checks[j].name == c.name && (j < i || a.checks[j].named));
+        if (!taken) break;
+        c.name = base + " " + std::to_string(k);
+      }
+    }
+    contradictions(a.checks);
+    size_t posts = 0;
+    for (Check& c : a.checks) {
+      if (c.kind == Check::Post) c.postIndex = posts++;
+      for (Check& m : c.of)
+        if (m.kind == Check::Post) m.postIndex = posts++;
     }
     if (a.needsSolution() && !a.solution)
       throw Bad{"the solution-* checks need the reference solution: solution = \"solution.bas\"", root.source()};

@@ -100,9 +100,9 @@ tolerance = 0.02
   CHECK(std::regex_match("Area: 42", a->checks[1].regexes[0]));
   CHECK(a->checks[4].allowWarnings);
   CHECK(a->checks[4].target == "rb9");
-  CHECK(a->checks[5].region.x1 == 380);  // corners in any order
-  CHECK(a->checks[5].region.y2 == 320);
-  CHECK(a->checks[6].region.kind == Region::Circle);
+  CHECK(a->checks[5].regions[0].x1 == 380);  // corners in any order
+  CHECK(a->checks[5].regions[0].y2 == 320);
+  CHECK(a->checks[6].regions[0].kind == Region::Circle);
   CHECK_FALSE(a->checks[7].inOrder);
   CHECK(a->checks[8].reference.size() == 2);
   CHECK(a->checks[8].tolerance == 2);

@@ -158,7 +158,7 @@ std::string unrunnable(const RunOutcome& run) {
   return "";
 }
 
-std::string stopDescription(const RunRecord& r) {
+std::string stopDescription(const RunRecord& r, const LimitNames& limits) {
   std::string steps = " after " + std::to_string(r.steps) + " step" + (r.steps == 1 ? "" : "s");
   std::string at = r.error ? " at " + where(*r.error) : "";
   std::string message = r.error ? r.error->message : "";
@@ -166,16 +166,41 @@ std::string stopDescription(const RunRecord& r) {
     if (r.crashed) return "the robot crashed" + at + steps + ": " + message;
     return "runtime error" + at + steps + ": " + message;
   }
-  if (r.status == "limit") return "did not finish: " + message + at;
+  if (r.status == "limit") {
+    std::string loop = r.loopFirst ? ", in the loop of lines " + std::to_string(r.loopFirst) + "-" +
+                                         std::to_string(r.loopLast) + " (does it ever end?)"
+                                   : "";
+    if (r.limit == "max-steps")
+      return "did not finish: stopped" + at + steps + ", the step limit (" + limits.steps + ")" + loop;
+    return "did not finish: stopped" + at + steps + ", the time limit (" + limits.time + ")" + loop;
+  }
   if (r.status == "stopped") return "stopped" + at + steps;
   return "";
 }
 
-std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome& run) {
+std::string comparedOutput(const RunOutcome& run, bool prompts) {
+  if (prompts || !run.record || run.record->inputs.empty()) return run.output;
+  return printedOutput(run.output, run.record->inputs);
+}
+
+std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome& run, const LimitNames& limits) {
   std::vector<CheckResult> results;
   auto fail = [&](const std::string& name, const std::string& message) {
-    results.push_back({name, false, message, 1});
+    CheckResult c;
+    c.name = name;
+    c.message = message;
+    results.push_back(c);
   };
+  auto pass = [&](const std::string& name, const std::string& message) {
+    CheckResult c;
+    c.name = name;
+    c.passed = true;
+    c.message = message;
+    c.earned = 1;
+    results.push_back(c);
+  };
+  // A child killed at its time limit still wrote rb check's part of the record.
+  bool checkKnown = run.record.has_value();
   std::string process = run.process.kind != JobOutcome::Exited ? run.processText
                         : !run.record ? unrunnable(run)
                                       : "";
@@ -183,7 +208,7 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
 
   // 1. rb check: exactly the expected errors and warnings, and its exit status.
   size_t before = results.size();
-  if (!process.empty()) {
+  if (!checkKnown) {
     fail("check", "rb check: " + process);
   } else {
     const RunRecord& r = *run.record;
@@ -203,12 +228,14 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
     if (r.checkExit != want)
       fail("check", "rb check: exit status " + std::to_string(r.checkExit) + ", expected " + std::to_string(want));
   }
-  if (results.size() == before) results.push_back({"check", true, "rb check reports what the comments expect", 1});
+  if (results.size() == before) pass("check", "rb check reports what the comments expect");
 
   // 2. The run: standard output, the runtime error, standard error and the exit status.
   before = results.size();
   if (!process.empty()) {
     fail("run", process);
+  } else if (!run.record->complete) {
+    fail("run", "the run did not end: " + run.processText);
   } else {
     const RunRecord& r = *run.record;
     int want = 0;
@@ -233,21 +260,20 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
         if (r.error) got = Expected{baseName(r.error->file), r.error->line, r.error->message};
         if (got != utf8(*spec.runtime))
           fail("runtime error", "runtime error " + (got ? expectedText(*got) : std::string("none")) +
-                                    ", expected " + expectedText(utf8(*spec.runtime)) +
-                                    (run.errors.empty() ? "" : "\n" + run.errors));
+                                    ", expected " + expectedText(utf8(*spec.runtime)));
       } else if (!run.errors.empty() && spec.stderrHas.empty()) {
-        fail("stderr", "unexpected standard error:\n" + run.errors);
+        std::string stop = r.status == "limit" ? stopDescription(r, limits) : "";
+        fail("stderr", stop.empty() ? "unexpected standard error (below)" : stop);
       }
     }
     for (const std::string& s : spec.stderrHas)
       if (run.errors.find(s) == std::string::npos)
-        fail("stderr", "standard error lacks " + quote(s) + (run.errors.empty() ? " (it is empty)" : ":\n" + run.errors));
+        fail("stderr", "standard error lacks " + quote(s) + (run.errors.empty() ? " (it is empty)" : " (below)"));
     if (spec.exit) want = *spec.exit;
     if (run.process.code != want)
-      fail("exit status", "exit status " + std::to_string(run.process.code) + ", expected " + std::to_string(want) +
-                              (run.errors.empty() ? "" : "\n" + run.errors));
+      fail("exit status", "exit status " + std::to_string(run.process.code) + ", expected " + std::to_string(want));
   }
-  if (results.size() == before) results.push_back({"run", true, "the run does what the comments expect", 1});
+  if (results.size() == before) pass("run", "the run does what the comments expect");
   return results;
 }
 
@@ -255,20 +281,24 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
 
 namespace {
 
-/// The verdict of one check on one run: "" when it passed, else why not; `note` describes a pass.
+/// The verdict of one check on one run.
 struct Verdict {
+  Verdict(bool p, std::string m) : passed(p), message(std::move(m)) {}
   bool passed;
   std::string message;
+  double earned = -1;  ///< points earned when not the check's own (a tier's); -1: the check's
+  std::vector<std::string> feedback;
 };
 
 Verdict checkOutput(const Check& c, const RunOutcome& run) {
   if (run.outputCut) return {false, "the output is longer than " + std::to_string(kOutputCap >> 20) + " MB"};
+  std::string output = comparedOutput(run, c.prompts);
   if (c.text) {
-    std::string diff = outputDifference(*c.text, run.output, true);
+    std::string diff = outputDifference(*c.text, output, true);
     if (diff.empty()) return {true, "the output is as expected"};
     return {false, diff};
   }
-  std::vector<std::string> lines = splitLines(run.output, true);
+  std::vector<std::string> lines = splitLines(output, true);
   for (size_t i = 0; i < lines.size() && i < c.regexes.size(); ++i) {
     if (lines[i].size() > 2000)
       return {false, "output line " + std::to_string(i + 1) + " is too long to match a pattern (" +
@@ -304,17 +334,34 @@ Verdict checkClean(const Check& c, const RunRecord& r) {
 }
 
 std::string regionText(const Region& g) {
-  if (g.kind == Region::Circle)
-    return "the circle of radius " + pixels(g.r) + " around " + point({g.cx, g.cy});
-  return "the rectangle " + point({g.x1, g.y1}) + "-" + point({g.x2, g.y2});
+  switch (g.kind) {
+    case Region::Circle: return "the circle of radius " + pixels(g.r) + " around " + point({g.cx, g.cy});
+    case Region::Rect: return "the rectangle " + point({g.x1, g.y1}) + "-" + point({g.x2, g.y2});
+    case Region::Polygon: {
+      std::string s = "the polygon " + point(g.points[0]);
+      for (size_t i = 1; i < g.points.size() && i < 4; ++i) s += "-" + point(g.points[i]);
+      if (g.points.size() > 4) s += "-...";
+      return s;
+    }
+  }
+  return "the region";
+}
+
+/// ", on line 12" for a line of the program, or "".
+std::string onLine(uint32_t line) { return line ? " (line " + std::to_string(line) + ")" : ""; }
+
+uint32_t pathLine(const RunRecord& r, size_t line, size_t point) {
+  if (line < r.pathLines.size() && point < r.pathLines[line].size()) return r.pathLines[line][point];
+  return 0;
 }
 
 Verdict checkEndsIn(const Check& c, const RunRecord& r) {
   if (!r.located) return {false, "the robot was never placed (no rLocate)"};
-  double off = outside(c.region, r.pos);
+  const Region& g = c.regions[0];
+  double off = outside(g, r.pos);
   if (off > 0)
-    return {false, "the robot ends at " + point(r.pos) + ", " + pixels(off) + " px outside " + regionText(c.region)};
-  return {true, "the robot ends at " + point(r.pos) + ", inside " + regionText(c.region)};
+    return {false, "the robot ends at " + point(r.pos) + ", " + pixels(off) + " px outside " + regionText(g)};
+  return {true, "the robot ends at " + point(r.pos) + ", inside " + regionText(g)};
 }
 
 Verdict checkVisits(const Check& c, const RunRecord& r) {
@@ -323,10 +370,23 @@ Verdict checkVisits(const Check& c, const RunRecord& r) {
   if (!v.missed) return {true, "the robot passes every point" + std::string(c.inOrder ? " in order" : "")};
   size_t k = *v.missed;
   std::string which = "point " + std::to_string(k + 1) + " " + point(c.targets[k]);
+  if (c.inOrder) {
+    std::vector<P2> reversed(c.targets.rbegin(), c.targets.rend());
+    if (!visitInOrder(r.path, reversed, c.tolerance).missed)
+      return {false, "the robot passes every point, but in the opposite order: it does not reach " + which +
+                         " after point " + std::to_string(k) + " (drawn the other way round?)"};
+    // Every point is passed, only not in this order (a closed figure's last point is its first:
+    // passing it at the start does not count).
+    bool repeats = false;
+    for (size_t j = 0; j < k; ++j) repeats = repeats || distance(c.targets[j], c.targets[k]) <= c.tolerance;
+    if (!repeats && !visitAny(r.path, c.targets, c.tolerance).missed)
+      return {false, "the robot passes every point, but not in the order asked: it does not reach " + which +
+                         " after point " + std::to_string(k)};
+  }
   std::string after = c.inOrder && k > 0 ? " after point " + std::to_string(k) : "";
   if (!std::isfinite(v.closest)) return {false, "the robot never reaches " + which + after + ": it does not move on"};
-  return {false, "the robot never comes within " + pixels(c.tolerance) + " px of " + which + after +
-                     "; the closest it gets is " + pixels(v.closest) + " px"};
+  return {false, "the robot misses " + which + after + " by " + pixels(v.closest - c.tolerance) +
+                     " px: it comes within " + pixels(v.closest) + " px, " + pixels(c.tolerance) + " px allowed"};
 }
 
 Verdict compareTrails(const Polylines& got, const Polylines& want, double tolerance, const std::string& whose) {
@@ -334,12 +394,14 @@ Verdict compareTrails(const Polylines& got, const Polylines& want, double tolera
   if (empty(got)) return {false, "the pen drew nothing; " + whose + " trail is " + pixels(length(want)) + " px long"};
   if (empty(want)) return {false, "the pen drew a trail of " + pixels(length(got)) + " px; " + whose + " has none"};
   HausdorffDistance h = hausdorff(got, want);
-  std::string detail = h.fromA ? "the trail passes " + point(h.worst) + ", far from " + whose
-                               : whose + " passes " + point(h.worst) + ", far from the trail";
-  if (h.distance > tolerance)
-    return {false, "trail is " + pixels(h.distance) + " px from " + whose + " at its worst, tolerance " +
-                       pixels(tolerance) + " (" + detail + ")"};
-  return {true, "trail is within " + pixels(h.distance) + " px of " + whose + ", tolerance " + pixels(tolerance)};
+  std::string amount = pixels(h.distance) + " px";
+  if (h.distance > tolerance) {
+    std::string detail = h.fromA ? "the trail passes " + point(h.worst) + ", " + amount + " from " + whose
+                                 : whose + " passes " + point(h.worst) + ", " + amount + " from the trail";
+    return {false, "the trail is " + amount + " off " + whose + " at its worst, " + pixels(tolerance) +
+                       " px allowed: " + detail};
+  }
+  return {true, "the trail is within " + amount + " of " + whose + ", " + pixels(tolerance) + " px allowed"};
 }
 
 Verdict compareScreens(const std::optional<render::RgbImage>& got, const render::RgbImage& want,
@@ -352,25 +414,148 @@ Verdict compareScreens(const std::optional<render::RgbImage>& got, const render:
   std::string amount = percent(d->share()) + " of pixels (" + std::to_string(d->differing) + " of " +
                        std::to_string(d->total) + ")";
   if (d->share() > tolerance)
-    return {false, "screen differs from " + whose + " in " + amount + ", tolerance " + percent(tolerance)};
-  return {true, "screen differs from " + whose + " in " + amount + ", tolerance " + percent(tolerance)};
+    return {false, "the screen differs from " + whose + " in " + amount + ", " + percent(tolerance) + " allowed"};
+  return {true, "the screen differs from " + whose + " in " + amount + ", " + percent(tolerance) + " allowed"};
 }
 
-Verdict evaluate(const Check& c, size_t index, const References& refs, const RunOutcome& run, size_t seedIndex) {
+std::string colourText(const Check& c, size_t k) { return c.colourNames[k]; }
+
+const RunRecord::Touch* touchOf(const RunRecord& r, uint32_t rgb) {
+  for (const RunRecord::Touch& t : r.touches)
+    if (t.rgb == rgb) return &t;
+  return nullptr;
+}
+
+Verdict checkAvoid(const Check& c, const RunRecord& r) {
+  for (const Region& g : c.regions) {
+    Reach reach = firstReach(r.path, g, r.radius);
+    if (reach.reached)
+      return {false, "the robot enters " + regionText(g) + " at " + point(reach.at) +
+                         onLine(pathLine(r, reach.line, reach.point))};
+  }
+  for (size_t k = 0; k < c.colours.size(); ++k) {
+    const RunRecord::Touch* t = touchOf(r, c.colours[k]);
+    if (!t) return {false, "the colour " + colourText(c, k) + " was not watched"};
+    if (t->touched) return {false, "the robot touches " + colourText(c, k) + " at " + point(t->at) + onLine(t->line)};
+  }
+  return {true, "the robot keeps out"};
+}
+
+Verdict checkTouch(const Check& c, const RunRecord& r) {
+  if (!r.located) return {false, "the robot was never placed (no rLocate)"};
+  for (const Region& g : c.regions) {
+    Reach reach = firstReach(r.path, g, r.radius);
+    if (!reach.reached)
+      return {false, "the robot never reaches " + regionText(g) + ": it comes within " + pixels(reach.closest) + " px of it"};
+  }
+  for (size_t k = 0; k < c.colours.size(); ++k) {
+    const RunRecord::Touch* t = touchOf(r, c.colours[k]);
+    if (!t || !t->touched) return {false, "the robot never touches " + colourText(c, k)};
+  }
+  return {true, "the robot gets there"};
+}
+
+double measured(Check::Measure m, const RunRecord& r) {
+  switch (m) {
+    case Check::Statements: return static_cast<double>(r.steps);
+    case Check::Moves: return static_cast<double>(r.moves);
+    case Check::Distance: return length(r.path);
+  }
+  return 0;
+}
+
+std::string measureText(Check::Measure m, double v) {
+  switch (m) {
+    case Check::Statements: return pixels(v) + (v == 1 ? " statement" : " statements");
+    case Check::Moves: return pixels(v) + (v == 1 ? " robot move" : " robot moves");
+    case Check::Distance: return pixels(v) + " px of driving";
+  }
+  return pixels(v);
+}
+
+Verdict checkEfficiency(const Check& c, const RunRecord& r) {
+  double v = measured(c.measure, r);
+  for (const auto& [limit, points] : c.tiers)
+    if (v <= limit) {
+      Verdict verdict{true, measureText(c.measure, v) + ": at most " + pixels(limit) + " earn " + pixels(points) +
+                                (points == c.points ? " (the best tier)" : " (at most " + pixels(c.tiers.front().first) +
+                                                                               " earn " + pixels(c.points) + ")")};
+      verdict.earned = points;
+      return verdict;
+    }
+  return {false, measureText(c.measure, v) + ": more than the " + pixels(c.tiers.back().first) + " that earn points"};
+}
+
+Verdict checkPost(const Check& c, const RunRecord& r) {
+  std::string name = std::filesystem::path(c.program).filename().string();
+  if (c.postIndex >= r.posts.size()) return {false, "the check program " + name + " did not run"};
+  const RunRecord::Post& p = r.posts[c.postIndex];
+  Verdict v{true, ""};
+  std::string failure;
+  for (const std::string& line : splitLines(p.output, true)) {
+    std::string trimmed = line;
+    while (!trimmed.empty() && (trimmed.back() == ' ' || trimmed.back() == '\r')) trimmed.pop_back();
+    size_t lead = trimmed.find_first_not_of(' ');
+    std::string head = lead == std::string::npos ? "" : trimmed.substr(lead, 5);
+    for (char& ch : head) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (head == "fail:") {
+      std::string rest = trimmed.substr(lead + 5);
+      while (!rest.empty() && rest[0] == ' ') rest.erase(0, 1);
+      if (failure.empty()) failure = rest.empty() ? name + " says the check fails" : rest;
+      continue;
+    }
+    v.feedback.push_back(trimmed);
+  }
+  if (p.error) {
+    v.passed = false;
+    v.message = p.ran ? "the check program " + name + " stopped at line " + std::to_string(p.error->line) + ": " +
+                            p.error->message
+                      : "the check program cannot run: " + p.error->message;
+    return v;
+  }
+  if (!failure.empty()) {
+    v.passed = false;
+    v.message = failure;
+    return v;
+  }
+  v.message = v.feedback.empty() ? name + " finds nothing wrong" : v.feedback.front();
+  if (!v.feedback.empty()) v.feedback.erase(v.feedback.begin());
+  return v;
+}
+
+Verdict evaluate(const Check& c, size_t index, const References& refs, const RunOutcome& run, size_t seedIndex);
+
+Verdict evaluateGroup(const Check& c, const References& refs, const RunOutcome& run, size_t seedIndex) {
+  std::vector<std::string> misses;
+  for (const Check& m : c.of) {
+    Verdict v = evaluate(m, SIZE_MAX, refs, run, seedIndex);
+    if (c.kind == Check::AnyOf && v.passed) return {true, m.name + ": " + v.message};
+    if (c.kind == Check::AllOf && !v.passed) return {false, m.name + ": " + v.message};
+    misses.push_back(m.name + ": " + v.message);
+  }
+  if (c.kind == Check::AllOf) return {true, "all " + std::to_string(c.of.size()) + " pass"};
+  std::string all;
+  for (const std::string& m : misses) all += (all.empty() ? "" : "; ") + m;
+  return {false, "none of " + std::to_string(c.of.size()) + " passes: " + all};
+}
+
+Verdict evaluateKind(const Check& c, size_t index, const References& refs, const RunOutcome& run, size_t seedIndex) {
+  if (c.kind == Check::AnyOf || c.kind == Check::AllOf) return evaluateGroup(c, refs, run, seedIndex);
   std::string cannot = unrunnable(run);
   if (c.kind == Check::Clean && run.record) return checkClean(c, *run.record);
   if (!cannot.empty()) return {false, cannot};
   const RunRecord& r = *run.record;
+  if (!r.worldError.empty()) return {false, r.worldError};
   const RunOutcome* sol = seedIndex < refs.solution.size() ? &refs.solution[seedIndex] : nullptr;
   switch (c.kind) {
     case Check::Output: return checkOutput(c, run);
     case Check::NoError: {
-      std::string stop = stopDescription(r);
+      std::string stop = stopDescription(r, refs.limits);
       if (!stop.empty()) return {false, stop};
       return {true, "finishes after " + std::to_string(r.steps) + " steps"};
     }
     case Check::NoCrash:
-      if (r.crashed) return {false, stopDescription(r)};
+      if (r.crashed) return {false, stopDescription(r, refs.limits)};
       return {true, "the robot never crashes"};
     case Check::Clean: return checkClean(c, r);
     case Check::EndsIn: return checkEndsIn(c, r);
@@ -384,7 +569,7 @@ Verdict evaluate(const Check& c, size_t index, const References& refs, const Run
     case Check::SolutionOutput: {
       if (!sol) return {false, "the solution did not run"};
       if (run.outputCut || sol->outputCut) return {false, "the output is longer than " + std::to_string(kOutputCap >> 20) + " MB"};
-      std::string diff = outputDifference(sol->output, run.output, true);
+      std::string diff = outputDifference(comparedOutput(*sol, c.prompts), comparedOutput(run, c.prompts), true);
       if (diff.empty()) return {true, "the output is the solution's"};
       return {false, diff + " (the solution's output)"};
     }
@@ -394,31 +579,107 @@ Verdict evaluate(const Check& c, size_t index, const References& refs, const Run
     case Check::SolutionScreen:
       if (!sol || !sol->screen) return {false, "the solution's screen was not captured"};
       return compareScreens(run.screen, *sol->screen, c.tolerance, "the solution's");
+    case Check::Avoid: return checkAvoid(c, r);
+    case Check::Touch: return checkTouch(c, r);
+    case Check::Post: return checkPost(c, r);
+    case Check::Efficiency: return checkEfficiency(c, r);
+    case Check::AnyOf:
+    case Check::AllOf: break;
   }
   return {false, "unknown check"};
 }
 
+/// The check, then its limits on statements, moves and distance.
+Verdict evaluate(const Check& c, size_t index, const References& refs, const RunOutcome& run, size_t seedIndex) {
+  Verdict v = evaluateKind(c, index, refs, run, seedIndex);
+  if (!v.passed || !run.record) return v;
+  const std::pair<const std::optional<double>*, Check::Measure> limits[] = {
+      {&c.maxStatements, Check::Statements}, {&c.maxMoves, Check::Moves}, {&c.maxDistance, Check::Distance}};
+  for (const auto& [limit, measure] : limits) {
+    if (!*limit) continue;
+    double got = measured(measure, *run.record);
+    if (got > **limit)
+      return {false, "it works, but takes " + measureText(measure, got) + ": at most " + pixels(**limit) + " allowed"};
+  }
+  return v;
+}
+
+/// Why nothing the program did can earn points, or "".
+std::string gateOf(const RunOutcome& run, bool aboutRobot, const LimitNames& limits) {
+  if (!run.record || run.record->status == "rejected" || run.record->status == "not-run") return "";
+  const RunRecord& r = *run.record;
+  if (!r.worldError.empty()) return "";
+  if (r.statements == 0) return "the program is empty: it has no statement";
+  if (aboutRobot && r.moves == 0) {
+    std::string stop = stopDescription(r, limits);
+    if (!stop.empty()) return stop + "; the robot never moved before that";
+    return "the robot never moved: the program never places, moves or turns it";
+  }
+  return "";
+}
+
 }  // namespace
 
-std::vector<CheckResult> checkAssignment(const Assignment& assignment, const References& refs,
-                                         const std::vector<RunOutcome>& runs) {
-  std::vector<CheckResult> results;
+Grading checkAssignment(const Assignment& assignment, const References& refs, const std::vector<RunOutcome>& runs) {
+  Grading grading;
+  if (!runs.empty()) grading.gate = gateOf(runs[0], refs.aboutRobot, refs.limits);
   for (size_t i = 0; i < assignment.checks.size(); ++i) {
     const Check& c = assignment.checks[i];
-    CheckResult result{c.name, true, "", c.points};
+    CheckResult result;
+    result.name = c.name;
+    result.points = c.points;
+    result.hint = c.hint;
+    result.hidden = c.hidden;
+    result.required = c.required;
+    if (!grading.gate.empty()) {
+      result.checked = false;
+      result.message = "not checked: " + grading.gate;
+      grading.checks.push_back(std::move(result));
+      continue;
+    }
+    if (!c.after.empty()) {
+      const CheckResult* need = nullptr;
+      for (const CheckResult& done : grading.checks)
+        if (done.name == c.after) need = &done;
+      if (need && !need->passed) {
+        result.checked = false;
+        result.message = "not checked: needs " + quote(c.after) + ", which did not pass";
+        grading.checks.push_back(std::move(result));
+        continue;
+      }
+    }
+    result.passed = true;
+    double earned = c.points;
     for (size_t s = 0; s < runs.size(); ++s) {
       Verdict v = evaluate(c, i, refs, runs[s], s);
       std::string prefix = runs.size() > 1 ? "seed " + std::to_string(runs[s].seed) + ": " : "";
       if (!v.passed) {
         result.passed = false;
         result.message = prefix + v.message;
+        result.feedback = std::move(v.feedback);
+        earned = 0;
         break;
       }
-      if (s == 0) result.message = v.message;
+      if (v.earned >= 0) earned = std::min(earned, v.earned);
+      if (s == 0) {
+        result.message = v.message;
+        result.feedback = std::move(v.feedback);
+      }
     }
-    results.push_back(std::move(result));
+    result.earned = earned;
+    grading.checks.push_back(std::move(result));
   }
-  return results;
+  // A required check that failed: nothing else counts.
+  for (const CheckResult& req : grading.checks) {
+    if (!req.required || req.passed) continue;
+    for (CheckResult& other : grading.checks)
+      if (&other != &req && other.earned > 0) {
+        other.earned = 0;
+        other.note = "not counted: the required check " + quote(req.name) + " did not pass";
+      }
+    break;
+  }
+  return grading;
 }
 
 }  // namespace rb::grade

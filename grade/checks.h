@@ -35,20 +35,42 @@ struct CheckResult {
   bool passed = false;
   std::string message;  ///< what was found, and by how much it missed
   double points = 1;    ///< what it is worth
+  double earned = 0;    ///< what it earned: its points when passed (a tier's), 0 when not counted
+  bool checked = true;  ///< false: not checked (it needs another check that failed)
+  std::string note;     ///< why a passed check earns nothing ("not counted: ...")
+  std::string hint;     ///< the teacher's hint, shown under a failure
+  bool hidden = false;  ///< a student's report shows only that a hidden check failed
+  bool required = false;
+  std::vector<std::string> feedback;  ///< what a teacher's post program printed
+};
+
+/// How each limit of a run is named in messages, as whoever set it wrote it
+/// ("max-steps = 100000 in square.toml", "// timeout: 2", "rb test --timeout 5").
+struct LimitNames {
+  std::string steps = "the step limit";
+  std::string time = "the time limit";
 };
 
 /// The expectations of a program's comments (golden-test semantics: testdata/README.md).
-std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome& run);
+std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome& run, const LimitNames& limits);
 
 /// What the assignment's checks compare with, prepared once for the whole class.
 struct References {
   std::vector<RunOutcome> solution;                      ///< one per seed, when needed
   std::vector<std::optional<render::RgbImage>> pictures; ///< per check: the screen check's PNG
+  LimitNames limits;
+  bool aboutRobot = false;  ///< a program that never places or moves the robot earns nothing
+};
+
+/// An assignment's verdict on a program.
+struct Grading {
+  std::vector<CheckResult> checks;  ///< one per check of the assignment, in its order
+  /// Why nothing counts, before any check ("the program is empty"), or "".
+  std::string gate;
 };
 
 /// An assignment's checks over a program's runs (one per seed, same order as the seeds).
-std::vector<CheckResult> checkAssignment(const Assignment& assignment, const References& refs,
-                                         const std::vector<RunOutcome>& runs);
+Grading checkAssignment(const Assignment& assignment, const References& refs, const std::vector<RunOutcome>& runs);
 
 // Pieces the checks are made of, exposed for tests.
 
@@ -63,9 +85,12 @@ struct PixelDifference {
 std::optional<PixelDifference> compareImages(const render::RgbImage& a, const render::RgbImage& b);
 /// Why a run cannot be graded at all (the process died, nothing ran), or "".
 std::string unrunnable(const RunOutcome& run);
-/// "at prog.bas:12:3 after 418 steps: robot crashed into an obstacle" style, for a run that
-/// stopped with a runtime error or a limit; "" for one that finished.
-std::string stopDescription(const RunRecord& record);
+/// "the robot crashed at prog.bas:12:3 after 418 steps: robot crashed into an obstacle" style,
+/// for a run that stopped with a runtime error or a limit (named as `limits` says, with the
+/// loop it was in); "" for one that finished.
+std::string stopDescription(const RunRecord& record, const LimitNames& limits = {});
+/// The output as checks compare it: without input's prompts and echo unless `prompts`.
+std::string comparedOutput(const RunOutcome& run, bool prompts);
 /// A number of pixels for a message: "37", "37.5", "infinitely".
 std::string pixels(double v);
 

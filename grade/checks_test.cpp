@@ -15,6 +15,8 @@ RunOutcome finished(Polylines trail, P2 end, std::string output = "") {
   RunRecord r;
   r.status = "finished";
   r.steps = 17;
+  r.statements = 9;
+  r.moves = 9;
   r.located = true;
   r.pos = end;
   r.path = trail;
@@ -53,10 +55,12 @@ TEST_CASE("assignment checks pass and fail by how much", "[grade][checks]") {
   refs.solution.push_back(finished(kSquare, {400, 300}, "perimeter 480\n"));
 
   Check ends = check(Check::EndsIn);
-  ends.region.kind = Region::Circle;
-  ends.region.cx = 400;
-  ends.region.cy = 300;
-  ends.region.r = 5;
+  Region circle;
+  circle.kind = Region::Circle;
+  circle.cx = 400;
+  circle.cy = 300;
+  circle.r = 5;
+  ends.regions = {circle};
   Check corners = check(Check::Visits, 3);
   corners.name = "corners";
   corners.targets = {{400, 300}, {400, 180}, {520, 180}, {520, 300}, {400, 300}};
@@ -68,22 +72,24 @@ TEST_CASE("assignment checks pass and fail by how much", "[grade][checks]") {
               trail, output};
 
   SECTION("the solution's twin passes everything") {
-    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kSquare, {400, 300}, "perimeter 480\n")});
+    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kSquare, {400, 300}, "perimeter 480\n")}).checks;
     for (const CheckResult& c : r) CHECK(c.passed);
-    CHECK(r[3].message == "trail is within 0 px of the solution's, tolerance 3");
+    for (const CheckResult& c : r) CHECK(c.earned == c.points);
+    CHECK(r[3].message == "the trail is within 0 px of the solution's, 3 px allowed");
   }
   SECTION("three sides") {
-    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kThree, {520, 300}, "perimeter 480\n")});
+    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kThree, {520, 300}, "perimeter 480\n")}).checks;
     CHECK(r[0].passed);
     CHECK(r[1].passed);
     CHECK_FALSE(r[2].passed);
+    CHECK(r[2].earned == 0);
     CHECK(r[2].name == "corners");
     CHECK(r[2].message ==
-          "the robot never comes within 3 px of point 5 (400, 300) after point 4; the closest it gets is 120 px");
+          "the robot misses point 5 (400, 300) after point 4 by 117 px: it comes within 120 px, 3 px allowed");
     CHECK_FALSE(r[3].passed);
-    CHECK(r[3].message.rfind("trail is 60 px from the solution's at its worst, tolerance 3", 0) == 0);
+    CHECK(r[3].message.rfind("the trail is 60 px off the solution's at its worst, 3 px allowed: the solution's passes (460, 300), 60 px from the trail", 0) == 0);
     CHECK(r[4].message == "the robot ends at (520, 300), 115 px outside the circle of radius 5 around (400, 300)");
-    CHECK(r[5].message.rfind("trail is 60 px from the reference at its worst, tolerance 3", 0) == 0);
+    CHECK(r[5].message.rfind("the trail is 60 px off the reference at its worst, 3 px allowed", 0) == 0);
     CHECK(r[6].passed);
   }
   SECTION("a run that stopped with a runtime error") {
@@ -92,7 +98,7 @@ TEST_CASE("assignment checks pass and fail by how much", "[grade][checks]") {
     crash.record->crashed = true;
     crash.record->steps = 5;
     crash.record->error = DiagRecord{"crashing.bas", 6, 1, "error", "robot crashed into an obstacle"};
-    std::vector<CheckResult> r = checkAssignment(a, refs, {crash});
+    std::vector<CheckResult> r = checkAssignment(a, refs, {crash}).checks;
     CHECK(r[0].message == "the robot crashed at crashing.bas:6:1 after 5 steps: robot crashed into an obstacle");
     CHECK(r[1].message ==
           "output ends after 0 lines; expected 1, the next being \"perimeter 480\" (the solution's output)");
@@ -101,7 +107,7 @@ TEST_CASE("assignment checks pass and fail by how much", "[grade][checks]") {
     RunOutcome killed;
     killed.process.kind = JobOutcome::TimedOut;
     killed.processText = "killed after 10 s (the time limit)";
-    for (const CheckResult& c : checkAssignment(a, refs, {killed})) {
+    for (const CheckResult& c : checkAssignment(a, refs, {killed}).checks) {
       CHECK_FALSE(c.passed);
       CHECK(c.message == "killed after 10 s (the time limit)");
     }
@@ -110,7 +116,7 @@ TEST_CASE("assignment checks pass and fail by how much", "[grade][checks]") {
     refs.solution.push_back(refs.solution[0]);
     RunOutcome second = finished(kSquare, {420, 300}, "perimeter 480\n");
     second.seed = 2;
-    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kSquare, {400, 300}, "perimeter 480\n"), second});
+    std::vector<CheckResult> r = checkAssignment(a, refs, {finished(kSquare, {400, 300}, "perimeter 480\n"), second}).checks;
     CHECK(r[1].passed);
     CHECK_FALSE(r[4].passed);
     CHECK(r[4].message.rfind("seed 2: the robot ends at (420, 300), 15 px outside", 0) == 0);
@@ -128,12 +134,12 @@ TEST_CASE("comment expectations: golden-test semantics", "[grade][checks]") {
       if (!c.passed) out.push_back(c.name + ": " + c.message);
     return out;
   };
-  CHECK(failures(checkComments(spec, run)).empty());
+  CHECK(failures(checkComments(spec, run, {})).empty());
 
   SECTION("an unexpected warning, a missing error") {
     run.record->checkDiags.push_back({"p.bas", 3, 5, "warning", "'x' is never assigned"});
     spec.errors.insert({"p.bas", 2, "bad"});
-    std::vector<std::string> f = failures(checkComments(spec, run));
+    std::vector<std::string> f = failures(checkComments(spec, run, {}));
     CHECK(f == std::vector<std::string>{"check: rb check: missing error p.bas:2: bad",
                                         "check: rb check: unexpected warning p.bas:3: 'x' is never assigned",
                                         "check: rb check: exit status 0, expected 65",
@@ -146,18 +152,18 @@ TEST_CASE("comment expectations: golden-test semantics", "[grade][checks]") {
     run.record->error = DiagRecord{"dir/p.bas", 4, 9, "error", "division by zero"};
     run.process.code = 70;
     run.errors = "p.bas:4:9: error: division by zero\n";
-    CHECK(failures(checkComments(spec, run)).empty());
+    CHECK(failures(checkComments(spec, run, {})).empty());
     spec.stderrHas = {"no such thing"};
-    CHECK(failures(checkComments(spec, run)) ==
-          std::vector<std::string>{"stderr: standard error lacks \"no such thing\":\np.bas:4:9: error: division by zero\n"});
+    CHECK(failures(checkComments(spec, run, {})) ==
+          std::vector<std::string>{"stderr: standard error lacks \"no such thing\" (below)"});
     spec.stderrHas.clear();
     spec.exit = 3;
-    CHECK(failures(checkComments(spec, run)).size() == 1);
+    CHECK(failures(checkComments(spec, run, {})).size() == 1);
   }
   SECTION("standard error nobody expected") {
     run.errors = "rb run: random seed 5\n";
-    CHECK(failures(checkComments(spec, run)) ==
-          std::vector<std::string>{"stderr: unexpected standard error:\nrb run: random seed 5\n"});
+    CHECK(failures(checkComments(spec, run, {})) ==
+          std::vector<std::string>{"stderr: unexpected standard error (below)"});
   }
 }
 

@@ -1,5 +1,6 @@
 #include "grader.h"
 
+#include <fnmatch.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -83,6 +84,19 @@ struct Task {
   std::string record, screenFile;
 };
 
+/// Options of `// args:` that widen what a program may reach: only the person running rb
+/// test grants them (--trust-comments), never the program's own comments.
+const char* const kGrantingOptions[] = {"--allow-files", "--allow-spawn", "--port", "--real"};
+
+/// A comment's timeout above this is capped unless the person running rb test allows more.
+constexpr double kCommentTimeoutCap = 30;
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 class Grader {
  public:
   explicit Grader(const GradeOptions& o) : opts_(o) {}
@@ -91,12 +105,23 @@ class Grader {
 
  private:
   bool prepare();
+  bool fatal(int code, const std::string& message) {
+    result_.fatal = message;
+    result_.fatalCode = code;
+    return false;
+  }
+  bool checkTeacherPrograms();
+  bool findClass();
   Task makeTask(size_t program, const std::string& file, size_t seedIndex, uint64_t seed,
                 bool screen, const CommentSpec* spec);
   RunOutcome collect(const Task& task, const JobOutcome& outcome) const;
   void finishProgram(size_t index);
   void writePicture(ProgramResult& result, const std::vector<RunOutcome>& runs);
   std::string describeProcess(const JobOutcome& o, const Job& job) const;
+  LimitNames commentLimits(const CommentSpec& spec) const;
+  bool screenWanted() const {
+    return assignment_ && (assignment_->needsScreen() || (!opts_.picturesDir.empty() && opts_.studentPictures));
+  }
 
   const GradeOptions& opts_;
   ClassResult result_;
@@ -104,7 +129,9 @@ class Grader {
   References refs_;
   std::string temp_;
   size_t taskCount_ = 0;
-  std::vector<std::string> programs_;
+  std::vector<std::string> programs_;           ///< the programs to run (result_ index = same)
+  std::vector<ProgramResult> extra_;            ///< files not graded, students missing
+  std::map<std::string, std::string> students_; ///< canonical program path -> student
   std::vector<std::optional<CommentSpec>> specs_;
   std::vector<std::vector<RunOutcome>> runs_;
   std::vector<size_t> pending_;  ///< runs still to come, per program
@@ -113,17 +140,30 @@ class Grader {
 
 std::string Grader::describeProcess(const JobOutcome& o, const Job& job) const {
   std::string text = describe(o, job);
-  if (o.kind == JobOutcome::TimedOut && assignment_) {
+  if (o.kind == JobOutcome::TimedOut) {
     // The run had --timeout and did not stop itself by then (one statement ran long): say both.
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "did not finish: killed after %g s (the time limit is %g s)", job.timeoutSeconds,
-                  opts_.timeout.value_or(assignment_->timeout));
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "did not finish: killed after %g s (the time limit is %s)", job.timeoutSeconds,
+                  assignment_ ? refs_.limits.time.c_str() : "the run's --timeout, doubled for rb check and the run");
     text = buf;
   }
   if (o.kind == JobOutcome::Signalled && job.memoryBytes && !memoryLimitUnsupported() &&
       (o.signal == SIGABRT || o.signal == SIGSEGV || o.signal == SIGBUS))
     text += "; perhaps out of memory (the limit is " + std::to_string(job.memoryBytes >> 20) + " MB)";
   return text;
+}
+
+LimitNames Grader::commentLimits(const CommentSpec& spec) const {
+  LimitNames n;
+  for (size_t i = 0; i + 1 < spec.args.size(); ++i)
+    if (spec.args[i] == "--max-steps") n.steps = "// args: --max-steps " + spec.args[i + 1];
+  if (opts_.maxSteps) n.steps = "rb test --max-steps " + std::to_string(*opts_.maxSteps);
+  if (opts_.timeout) n.time = "rb test --timeout " + number(*opts_.timeout);
+  else if (spec.timeoutSet) n.time = "// timeout: " + number(std::min(spec.timeout, opts_.trustComments ? spec.timeout : kCommentTimeoutCap));
+  else n.time = "the default of " + number(spec.timeout) + " s";
+  for (size_t i = 0; i + 1 < spec.args.size(); ++i)
+    if (spec.args[i] == "--timeout" && !opts_.timeout) n.time = "// args: --timeout " + spec.args[i + 1];
+  return n;
 }
 
 Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex, uint64_t seed,
@@ -155,25 +195,36 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
     if (!hasOption(spec->args, "--seed")) job.argv.insert(job.argv.end(), {"--seed", std::to_string(seed)});
     if (opts_.maxSteps && !hasOption(spec->args, "--max-steps"))
       job.argv.insert(job.argv.end(), {"--max-steps", std::to_string(*opts_.maxSteps)});
+    // A comment may narrow the time limit, never widen it past the default, unless the person
+    // running rb test trusts the comments or sets --timeout.
+    double timeout = opts_.timeout.value_or(
+        opts_.trustComments ? spec->timeout : std::min(spec->timeout, kCommentTimeoutCap));
+    // The run stops itself at its time limit and says where; the kill is the backstop.
+    if (!hasOption(spec->args, "--timeout")) job.argv.insert(job.argv.end(), {"--timeout", number(timeout)});
     // As rb check and rb run each had the time limit, the child that does both gets twice it.
-    job.timeoutSeconds = 2 * opts_.timeout.value_or(spec->timeout);
+    job.timeoutSeconds = 2 * timeout + 1;
     job.memoryBytes = kCommentMemoryMb << 20;
     stdinLines = spec->stdinLines;
   } else {
     const Assignment& a = *assignment_;
-    for (const Check& c : a.checks)
-      if (c.kind == Check::Clean && !c.target.empty()) {
-        job.argv.insert(job.argv.end(), {"--check-target", c.target});
+    for (const Check* c : allChecks(a))
+      if (c->kind == Check::Clean && !c->target.empty()) {
+        job.argv.insert(job.argv.end(), {"--check-target", c->target});
         break;
       }
     double timeout = opts_.timeout.value_or(a.timeout);
     job.argv.insert(job.argv.end(), {"--seed", std::to_string(seed)});
     job.argv.insert(job.argv.end(), {"--max-steps", std::to_string(opts_.maxSteps.value_or(a.maxSteps))});
-    char secs[32];
-    std::snprintf(secs, sizeof secs, "%g", timeout);
-    job.argv.insert(job.argv.end(), {"--timeout", secs});
+    job.argv.insert(job.argv.end(), {"--timeout", number(timeout)});
     if (!a.events.empty()) job.argv.insert(job.argv.end(), {"--events", a.events});
     if (!a.keys.empty()) job.argv.insert(job.argv.end(), {"--keys", a.keys});
+    if (!a.world.empty()) job.argv.insert(job.argv.end(), {"--world", a.world});
+    for (const std::string& post : a.posts()) job.argv.insert(job.argv.end(), {"--post", post});
+    for (uint32_t rgb : a.watchedColours()) {
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "%06X", rgb & 0xFFFFFF);
+      job.argv.insert(job.argv.end(), {"--watch-colour", hex});
+    }
     // The interpreter stops itself at the timeout and says where; the kill is the backstop for
     // a single statement that never returns.
     job.timeoutSeconds = timeout * 1.5 + 1;
@@ -196,10 +247,23 @@ RunOutcome Grader::collect(const Task& t, const JobOutcome& outcome) const {
   run.processText = describeProcess(outcome, t.job);
   run.output = readCapped(t.job.stdoutPath, kOutputCap, &run.outputCut);
   run.errors = readCapped(t.job.stderrPath, kOutputCap);
+  if (assignment_) {
+    // rb run names the limits by its own options; the student's limits are the assignment's.
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"(the --max-steps limit)", "(" + refs_.limits.steps + ")"},
+                                   {"(the --timeout limit)", "(" + refs_.limits.time + ")"}})
+      for (size_t at = run.errors.find(from); at != std::string::npos; at = run.errors.find(from, at + to.size()))
+        run.errors.replace(at, from.size(), to);
+  }
   std::error_code ec;
-  if (outcome.kind == JobOutcome::Exited && fs::exists(t.record, ec)) {
+  if (fs::exists(t.record, ec)) {
+    // A child killed at its limit leaves the record it wrote before the run: rb check's part.
     std::string text = readCapped(t.record, kFileLimit);
     run.record = recordFromJson(text, run.recordError);
+    if (run.record && outcome.kind != JobOutcome::Exited && run.record->complete) run.record.reset();
+    if (run.record && outcome.kind == JobOutcome::Exited && !run.record->complete) {
+      run.record.reset();
+      run.recordError = "an incomplete record";
+    }
   } else {
     run.recordError = "no record";
   }
@@ -212,67 +276,159 @@ RunOutcome Grader::collect(const Task& t, const JobOutcome& outcome) const {
   return run;
 }
 
+bool Grader::checkTeacherPrograms() {
+  const Assignment& a = *assignment_;
+  std::vector<std::pair<std::string, std::string>> programs;  // file, role
+  if (!a.world.empty()) programs.push_back({a.world, "the world program"});
+  for (const std::string& p : a.posts()) programs.push_back({p, "a post program"});
+  for (const auto& [file, role] : programs) {
+    if (!opts_.compileProgram) break;
+    std::string error = opts_.compileProgram(file);
+    if (!error.empty()) return fatal(64, error + " (" + role + " of " + opts_.assignmentPath + ")");
+  }
+  return true;
+}
+
+bool Grader::findClass() {
+  std::vector<std::string> skip;
+  if (assignment_) {
+    const Assignment& a = *assignment_;
+    skip.push_back(a.path);
+    for (const std::string* f : {&a.world, &a.roster, &a.events})
+      if (!f->empty()) skip.push_back(*f);
+    if (a.solution) skip.push_back(*a.solution);
+    if (!opts_.roster.empty()) skip.push_back(opts_.roster);
+    for (const Check* c : allChecks(a)) {
+      if (!c->program.empty()) skip.push_back(c->program);
+      if (!c->picture.empty()) skip.push_back(c->picture);
+    }
+  }
+  std::vector<std::string> found;
+  std::vector<std::pair<std::string, std::string>> others;
+  try {
+    if (assignment_) {
+      ClassFiles files = findClassFiles(opts_.paths, opts_.include, skip);
+      found = std::move(files.programs);
+      others = std::move(files.others);
+    } else {
+      found = findPrograms(opts_.paths);
+    }
+  } catch (const std::runtime_error& e) {
+    return fatal(opts_.include.empty() ? 66 : 64, e.what());
+  }
+  if (found.empty() && others.empty()) return fatal(66, "no programs to grade (no .bas files)");
+
+  // Sharding: programs and other files together, by their sorted paths.
+  std::vector<std::string> all = found;
+  for (const auto& o : others) all.push_back(o.first);
+  std::sort(all.begin(), all.end());
+  std::vector<std::string> mine = shardOf(all, opts_.shard, opts_.shards);
+  std::set<std::string> inShard(mine.begin(), mine.end());
+  for (const std::string& p : found)
+    if (inShard.count(p)) programs_.push_back(p);
+  for (const auto& [path, why] : others) {
+    if (!inShard.count(path)) continue;
+    ProgramResult r;
+    r.program = path;
+    r.verdict = "fail";
+    r.reason = why;
+    extra_.push_back(r);
+  }
+
+  // The roster: names, and students without a submission.
+  std::string rosterPath = !opts_.roster.empty() ? opts_.roster : assignment_ ? assignment_->roster : "";
+  if (rosterPath.empty()) return true;
+  std::vector<RosterEntry> roster;
+  try {
+    roster = readRoster(rosterPath);
+  } catch (const std::runtime_error& e) {
+    return fatal(64, e.what());
+  }
+  std::error_code ec;
+  size_t present = 0;
+  for (const RosterEntry& e : roster) {
+    fs::path full = fs::weakly_canonical(e.full, ec);
+    bool any = false;
+    for (const std::string& p : all) {
+      fs::path cp = fs::weakly_canonical(p, ec);
+      bool match = cp == full;
+      if (!match && fs::is_directory(full, ec)) {
+        std::string prefix = full.string() + "/";
+        match = cp.string().rfind(prefix, 0) == 0;
+      }
+      if (match) {
+        students_[cp.string()] = e.student;
+        any = true;
+      }
+    }
+    if (any) {
+      ++present;
+    } else if (opts_.shard == 1) {
+      ProgramResult r;
+      r.program = e.path;
+      r.student = e.student;
+      r.verdict = "missing";
+      r.reason = "no submission: " + e.path + " is not in the class folder (" + rosterPath + " line " +
+                 std::to_string(e.line) + ")";
+      extra_.push_back(r);
+    }
+  }
+  if (present == 0 && !roster.empty())
+    return fatal(64, rosterPath + ": the roster names no file or folder that is being graded (the first is '" +
+                         roster[0].path + "', line " + std::to_string(roster[0].line) +
+                         "): are its paths relative to the roster's folder?");
+  for (ProgramResult& r : extra_)
+    if (r.student.empty()) {
+      auto it = students_.find(fs::weakly_canonical(r.program, ec).string());
+      if (it != students_.end()) r.student = it->second;
+    }
+  return true;
+}
+
 bool Grader::prepare() {
   if (!opts_.assignmentPath.empty()) {
     std::string error;
     assignment_ = loadAssignment(opts_.assignmentPath, error);
-    if (!assignment_) {
-      result_.fatal = error;
-      result_.fatalCode = 64;
-      return false;
-    }
+    if (!assignment_) return fatal(64, error);
     result_.title = assignment_->title;
+    result_.assignment = true;
+    result_.maxPoints = assignment_->maxPoints();
     for (const Check& c : assignment_->checks) {
       std::optional<render::RgbImage> picture;
       if (c.kind == Check::Screen) {
         std::string error2;
         picture = render::readPngFile(c.picture, error2);
-        if (!picture) {
-          result_.fatal = opts_.assignmentPath + ": " + error2;
-          result_.fatalCode = 66;
-          return false;
-        }
+        if (!picture) return fatal(66, opts_.assignmentPath + ": " + error2);
       }
       refs_.pictures.push_back(std::move(picture));
     }
+    if (!checkTeacherPrograms()) return false;
+    // How limits are named in messages: as whoever set them wrote them.
+    const Assignment& a = *assignment_;
+    std::string file = fs::path(a.path).filename().string();
+    refs_.limits.steps = opts_.maxSteps ? "rb test --max-steps " + std::to_string(*opts_.maxSteps)
+                         : a.maxStepsSet ? "max-steps = " + std::to_string(a.maxSteps) + " in " + file
+                                         : "max-steps, by default " + std::to_string(a.maxSteps);
+    refs_.limits.time = opts_.timeout ? "rb test --timeout " + number(*opts_.timeout)
+                        : a.timeoutSet ? "timeout = " + number(a.timeout) + " in " + file
+                                       : "timeout, by default " + number(a.timeout) + " s";
   }
-  std::vector<std::string> found;
-  try {
-    found = findPrograms(opts_.paths);
-  } catch (const std::runtime_error& e) {
-    result_.fatal = e.what();
-    result_.fatalCode = 66;
-    return false;
-  }
+  if (!findClass()) return false;
   if (assignment_ && assignment_->solution) {
     std::error_code ec;
     fs::path sol = fs::weakly_canonical(*assignment_->solution, ec);
-    found.erase(std::remove_if(found.begin(), found.end(),
-                               [&](const std::string& p) { return fs::weakly_canonical(p, ec) == sol; }),
-                found.end());
+    programs_.erase(std::remove_if(programs_.begin(), programs_.end(),
+                                   [&](const std::string& p) { return fs::weakly_canonical(p, ec) == sol; }),
+                    programs_.end());
   }
-  if (found.empty()) {
-    result_.fatal = "no programs to grade (no .bas files)";
-    result_.fatalCode = 66;
-    return false;
-  }
-  programs_ = shardOf(found, opts_.shard, opts_.shards);
 
   std::string pattern = (fs::temp_directory_path() / "rb-test-XXXXXX").string();
-  if (!mkdtemp(pattern.data())) {
-    result_.fatal = "cannot make a temporary folder: " + std::string(std::strerror(errno));
-    result_.fatalCode = 74;
-    return false;
-  }
+  if (!mkdtemp(pattern.data())) return fatal(74, "cannot make a temporary folder: " + std::string(std::strerror(errno)));
   temp_ = pattern;
   if (!opts_.picturesDir.empty()) {
     std::error_code ec;
     fs::create_directories(opts_.picturesDir, ec);
-    if (ec) {
-      result_.fatal = "cannot make the pictures folder " + opts_.picturesDir + ": " + ec.message();
-      result_.fatalCode = 74;
-      return false;
-    }
+    if (ec) return fatal(74, "cannot make the pictures folder " + opts_.picturesDir + ": " + ec.message());
   }
   return true;
 }
@@ -286,7 +442,7 @@ ClassResult Grader::run() {
 
   // The solution first: every program is compared with it.
   bool pictures = !opts_.picturesDir.empty();
-  if (assignment_ && assignment_->solution && (assignment_->needsSolution() || pictures)) {
+  if (assignment_ && assignment_->solution) {
     std::vector<Task> tasks;
     std::vector<Job> jobs;
     for (size_t s = 0; s < assignment_->seeds.size(); ++s) {
@@ -298,7 +454,13 @@ ClassResult Grader::run() {
     runJobs(jobs, parallel, [&](size_t i, const JobOutcome& o) { refs_.solution[i] = collect(tasks[i], o); });
     for (const RunOutcome& s : refs_.solution) {
       std::string why = unrunnable(s);
-      if (why.empty() && s.record) why = stopDescription(*s.record);
+      if (why.empty() && s.record) why = s.record->worldError;
+      if (why.empty() && s.record) why = stopDescription(*s.record, refs_.limits);
+      if (why.empty() && s.record)
+        for (size_t i = 0; i < s.record->posts.size(); ++i)
+          if (s.record->posts[i].error)
+            why = "the post program " + s.record->posts[i].file + " fails on it: line " +
+                  std::to_string(s.record->posts[i].error->line) + ": " + s.record->posts[i].error->message;
       if (!why.empty()) {
         result_.fatal = "the solution " + *assignment_->solution + " does not run cleanly" +
                         (refs_.solution.size() > 1 ? " with seed " + std::to_string(s.seed) : "") + ": " + why;
@@ -308,6 +470,11 @@ ClassResult Grader::run() {
       }
     }
   }
+  if (assignment_) {
+    bool solutionMoves = false;
+    for (const RunOutcome& s : refs_.solution) solutionMoves = solutionMoves || (s.record && s.record->moves > 0);
+    refs_.aboutRobot = assignment_->aboutRobot.value_or(assignment_->robotChecks() || solutionMoves);
+  }
 
   // The class.
   result_.programs.resize(programs_.size());
@@ -315,9 +482,12 @@ ClassResult Grader::run() {
   runs_.resize(programs_.size());
   pending_.assign(programs_.size(), 0);
   std::vector<Task> tasks;
+  std::error_code ec;
   for (size_t p = 0; p < programs_.size(); ++p) {
     ProgramResult& r = result_.programs[p];
     r.program = programs_[p];
+    auto student = students_.find(fs::weakly_canonical(programs_[p], ec).string());
+    if (student != students_.end()) r.student = student->second;
     if (!assignment_) {
       specs_[p] = readCommentSpec(programs_[p]);
       if (!specs_[p]) {
@@ -330,11 +500,24 @@ ClassResult Grader::run() {
         r.reason = specs_[p]->nontest ? "not a test (// nontest: a file others include)" : *specs_[p]->skip;
         continue;
       }
+      if (!opts_.trustComments) {
+        std::string granting;
+        for (const std::string& a : specs_[p]->args)
+          for (const char* g : kGrantingOptions)
+            if (granting.empty() && (a == g || a.rfind(std::string(g) + "=", 0) == 0)) granting = g;
+        if (!granting.empty()) {
+          r.verdict = "fail";
+          r.reason = "// args: " + granting +
+                     " would let the program reach more than rb test allows; only the person running rb test "
+                     "can grant that (rb test --trust-comments)";
+          continue;
+        }
+      }
       tasks.push_back(makeTask(p, programs_[p], 0, opts_.seed, false, &*specs_[p]));
       pending_[p] = 1;
     } else {
       for (size_t s = 0; s < assignment_->seeds.size(); ++s)
-        tasks.push_back(makeTask(p, programs_[p], s, assignment_->seeds[s], assignment_->needsScreen(), nullptr));
+        tasks.push_back(makeTask(p, programs_[p], s, assignment_->seeds[s], screenWanted(), nullptr));
       pending_[p] = assignment_->seeds.size();
     }
     runs_[p].resize(pending_[p]);
@@ -347,13 +530,22 @@ ClassResult Grader::run() {
     runs_[t.program][t.seedIndex] = collect(t, o);
     if (--pending_[t.program] == 0) finishProgram(t.program);
   });
-  std::error_code ec;
   fs::remove_all(temp_, ec);
 
+  for (ProgramResult& r : extra_) {
+    r.maxPoints = assignment_ ? assignment_->maxPoints() : 0;
+    result_.programs.push_back(std::move(r));
+  }
+  std::stable_sort(result_.programs.begin(), result_.programs.end(), [](const ProgramResult& a, const ProgramResult& b) {
+    bool am = a.verdict == "missing", bm = b.verdict == "missing";
+    if (am != bm) return bm;
+    return a.program < b.program;
+  });
   for (const ProgramResult& r : result_.programs) {
     if (r.verdict == "pass") ++result_.passed;
     else if (r.verdict == "skip") ++result_.skipped;
     else if (r.verdict == "error") ++result_.errors;
+    else if (r.verdict == "missing") ++result_.missing;
     else ++result_.failed;
   }
   result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -363,13 +555,19 @@ ClassResult Grader::run() {
 void Grader::finishProgram(size_t index) {
   ProgramResult& r = result_.programs[index];
   std::vector<RunOutcome>& runs = runs_[index];
-  r.checks = assignment_ ? checkAssignment(*assignment_, refs_, runs) : checkComments(*specs_[index], runs[0]);
-  r.verdict = "pass";
+  if (assignment_) {
+    Grading g = checkAssignment(*assignment_, refs_, runs);
+    r.checks = std::move(g.checks);
+    r.gate = std::move(g.gate);
+  } else {
+    r.checks = checkComments(*specs_[index], runs[0], commentLimits(*specs_[index]));
+  }
+  r.verdict = r.gate.empty() ? "pass" : "fail";
+  r.reason = r.gate;
   for (const CheckResult& c : r.checks) {
     r.maxPoints += c.points;
-    if (c.passed) {
-      r.points += c.points;
-    } else if (r.verdict == "pass") {
+    r.points += c.earned;
+    if (!c.passed && r.verdict == "pass") {
       r.verdict = "fail";
       r.reason = c.message;
     }
@@ -383,7 +581,11 @@ void Grader::finishProgram(size_t index) {
       r.verdict = "error";
   }
   const RunOutcome& first = runs[0];
-  if (first.record) r.steps = first.record->steps;
+  if (first.record) {
+    r.steps = first.record->steps;
+    for (const RunRecord::InputMark& m : first.record->inputs)
+      if (m.end <= kReportCap) r.inputs.push_back(m);
+  }
   r.output = first.output.substr(0, kReportCap);
   r.errors = first.errors.substr(0, kReportCap);
   if (!opts_.picturesDir.empty()) writePicture(r, runs);
@@ -397,6 +599,10 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
   if (!run.record) return;
   PictureInput in;
   in.student = run.record->trail;
+  in.robotRadius = run.record->radius;
+  in.studentView = opts_.studentPictures;
+  in.studentScreen = run.screen;
+  in.title = fs::path(r.program).filename().string() + (r.student.empty() ? "" : " (" + r.student + ")");
   if (run.record->located) in.studentEnd = run.record->pos;
   if (!refs_.solution.empty() && refs_.solution[0].record) {
     const RunRecord& sol = *refs_.solution[0].record;
@@ -404,12 +610,20 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
     if (sol.located) in.referenceEnd = sol.pos;
     in.background = refs_.solution[0].screen;
   } else if (assignment_) {
-    for (const Check& c : assignment_->checks)
-      if (c.kind == Check::Trail) {
-        in.reference = c.reference;
+    for (const Check* c : allChecks(*assignment_))
+      if (c->kind == Check::Trail) {
+        in.reference = c->reference;
         break;
       }
   }
+  if (assignment_)
+    for (const Check* c : allChecks(*assignment_)) {
+      if (c->hidden && opts_.studentPictures) continue;
+      if (c->kind == Check::Visits && in.waypoints.empty()) in.waypoints = c->targets;
+      if (c->kind == Check::EndsIn || c->kind == Check::Touch || c->kind == Check::Avoid)
+        for (const Region& g : c->regions)
+          in.regions.push_back({c->kind == Check::Avoid ? PictureRegion::Avoid : PictureRegion::Goal, g, c->name});
+    }
   std::string name = r.program;
   while (name.rfind("./", 0) == 0 || name.rfind("../", 0) == 0) name = name.substr(name.find('/') + 1);
   while (!name.empty() && name[0] == '/') name.erase(0, 1);
@@ -454,6 +668,140 @@ std::vector<std::string> shardOf(const std::vector<std::string>& programs, int s
   std::vector<std::string> out;
   for (size_t i = 0; i < programs.size(); ++i)
     if (static_cast<int>(i % static_cast<size_t>(shards)) == shard - 1) out.push_back(programs[i]);
+  return out;
+}
+
+namespace {
+
+bool hidden(const fs::path& p) {
+  std::string name = p.filename().string();
+  return !name.empty() && name[0] == '.';
+}
+
+/// Why a file is not graded: it is not a program (and what it may be instead).
+std::string notGraded(const fs::path& p) {
+  std::string name = lower(p.filename().string());
+  std::string why = "not graded: not a .bas file";
+  for (const char* ext : {".bas.txt", ".bas.rtf", ".bas.doc", ".bas.docx", ".bas.bak"})
+    if (name.size() > std::strlen(ext) && name.compare(name.size() - std::strlen(ext), std::string::npos, ext) == 0)
+      return why + " (saved as " + ext + "? rename it to end in .bas, or grade it with --include '*" + ext + "')";
+  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".txt") == 0)
+    return why + " (a program saved as .txt? rename it to end in .bas, or grade it with --include '*.txt')";
+  return why;
+}
+
+}  // namespace
+
+ClassFiles findClassFiles(const std::vector<std::string>& paths, const std::vector<std::string>& include,
+                          const std::vector<std::string>& skip) {
+  ClassFiles out;
+  std::set<std::string> seen, skipped;
+  std::error_code ec;
+  for (const std::string& s : skip) skipped.insert(fs::weakly_canonical(s, ec).string());
+  std::vector<size_t> used(include.size(), 0);
+  auto included = [&](const fs::path& p) {
+    std::string name = p.filename().string();
+    bool any = false;
+    for (size_t i = 0; i < include.size(); ++i)
+      if (fnmatch(include[i].c_str(), name.c_str(), 0) == 0) {
+        ++used[i];
+        any = true;
+      }
+    return any;
+  };
+  auto add = [&](const fs::path& p, bool given) {
+    std::string key = fs::weakly_canonical(p, ec).string();
+    if (skipped.count(key) || !seen.insert(key).second) return;
+    std::string path = p.lexically_normal().string();
+    if (lower(p.extension().string()) == ".bas") {
+      if (given || !isNontest(p)) out.programs.push_back(path);
+    } else if (included(p) || given) {
+      // A file named on the command line is graded as the teacher asked.
+      out.programs.push_back(path);
+    } else {
+      out.others.push_back({path, notGraded(p)});
+    }
+  };
+  for (const std::string& path : paths) {
+    if (fs::is_directory(path, ec)) {
+      std::vector<fs::path> files;
+      fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
+      for (; !ec && it != end; it.increment(ec)) {
+        if (hidden(it->path())) {
+          if (it->is_directory(ec)) it.disable_recursion_pending();
+          continue;
+        }
+        if (it->is_regular_file(ec)) files.push_back(it->path());
+      }
+      std::sort(files.begin(), files.end());
+      for (const fs::path& f : files) add(f, false);
+    } else if (fs::exists(path, ec)) {
+      add(path, true);
+    } else {
+      throw std::runtime_error(path + ": no such file or folder");
+    }
+  }
+  for (size_t i = 0; i < include.size(); ++i)
+    if (!used[i]) throw std::runtime_error("--include '" + include[i] + "' matches no file in the class folder");
+  std::sort(out.programs.begin(), out.programs.end());
+  std::sort(out.others.begin(), out.others.end());
+  return out;
+}
+
+std::vector<RosterEntry> readRoster(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot read the roster");
+  std::vector<RosterEntry> out;
+  fs::path dir = fs::absolute(path).parent_path();
+  std::string line;
+  uint32_t number = 0;
+  std::set<std::string> students;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (number == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
+    // Fields as RFC 4180 writes them: commas, quotes around a field that has one.
+    std::vector<std::string> fields;
+    std::string field;
+    bool quoted = false;
+    for (size_t i = 0; i < line.size(); ++i) {
+      char c = line[i];
+      if (quoted) {
+        if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') field += '"', ++i;
+        else if (c == '"') quoted = false;
+        else field += c;
+      } else if (c == '"') {
+        quoted = true;
+      } else if (c == ',') {
+        fields.push_back(field);
+        field.clear();
+      } else {
+        field += c;
+      }
+    }
+    if (quoted) throw std::runtime_error(path + ":" + std::to_string(number) + ": a quote is not closed");
+    fields.push_back(field);
+    for (std::string& f : fields) {
+      while (!f.empty() && (f.back() == ' ' || f.back() == '\t')) f.pop_back();
+      while (!f.empty() && (f[0] == ' ' || f[0] == '\t')) f.erase(0, 1);
+    }
+    if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
+    if (fields[0].rfind("#", 0) == 0) continue;              // a comment
+    if (number == 1 && fields.size() >= 2 && lower(fields[0]) == "student") continue;  // the header
+    if (fields.size() != 2 || fields[0].empty() || fields[1].empty())
+      throw std::runtime_error(path + ":" + std::to_string(number) +
+                               ": a roster row is a student and a file or folder: name,file.bas");
+    if (!students.insert(fields[0]).second)
+      throw std::runtime_error(path + ":" + std::to_string(number) + ": '" + fields[0] + "' is on the roster twice");
+    RosterEntry e;
+    e.student = fields[0];
+    e.path = fields[1];
+    fs::path p(fields[1]);
+    e.full = (p.is_relative() ? dir / p : p).lexically_normal().string();
+    e.line = number;
+    out.push_back(e);
+  }
+  if (out.empty()) throw std::runtime_error(path + ": the roster lists no student");
   return out;
 }
 

@@ -22,6 +22,16 @@ struct GradeOptions {
   std::optional<uint64_t> maxSteps;       ///< overrides the assignment's and the comments'
   std::optional<double> timeout;          ///< seconds: overrides the assignment's / // timeout
   std::string picturesDir;                ///< "" : no pictures
+  bool studentPictures = false;           ///< pictures for students: no solution drawn
+  /// Assignment mode: file names (globs like "*.txt") graded as programs besides *.bas.
+  std::vector<std::string> include;
+  std::string roster;                     ///< a roster CSV overriding the assignment's
+  /// Comment mode: let `// args:` grant access (--allow-files, --allow-spawn, --port, --real).
+  /// Only the person running rb may; rb's own tests do.
+  bool trustComments = false;
+  /// Loads and compiles a teacher's program (world, post): its first error as
+  /// "FILE:LINE:COL: message", or "" when it compiles. Unset: not checked before grading.
+  std::function<std::string(const std::string& file)> compileProgram;
   /// How to start a child that runs one program: rb itself and the hidden subcommand.
   std::vector<std::string> childCommand;
   /// Called as each program is graded (in the order they finish).
@@ -30,13 +40,19 @@ struct GradeOptions {
 
 struct ProgramResult {
   std::string program;             ///< the path as found
-  std::string verdict;             ///< "pass", "fail", "skip" or "error" (rb could not grade it)
+  std::string student;             ///< the roster's name for it, or ""
+  /// "pass", "fail", "skip", "error" (rb could not grade it) or "missing" (a student on the
+  /// roster with no submission). A file that is not a program fails ("not graded: ...").
+  std::string verdict;
   std::string reason;              ///< the first failed check's message, or why it was skipped
+  std::string gate;                ///< why nothing counts ("the program is empty"), or ""
   std::vector<CheckResult> checks;
   uint64_t steps = 0;              ///< of the first run
   double seconds = 0;              ///< wall time of all its runs
   double points = 0, maxPoints = 0;
   std::string output;              ///< the first run's output (for reports), shortened
+  /// Where input's prompts and echoes are in `output` (a transcript's marks).
+  std::vector<RunRecord::InputMark> inputs;
   std::string errors;              ///< the first run's standard error, shortened
   std::string picture;             ///< the PNG written for it, or ""
 };
@@ -45,7 +61,12 @@ struct ClassResult {
   std::string title;               ///< the assignment's title, or "rb test"
   std::vector<ProgramResult> programs;
   double seconds = 0;              ///< wall time of the whole grading
-  size_t passed = 0, failed = 0, skipped = 0, errors = 0;
+  size_t passed = 0, failed = 0, skipped = 0, errors = 0, missing = 0;
+  bool assignment = false;         ///< graded against an assignment (points and checks)
+  /// Reports for students (rb test --student): a hidden check's failure says only that a hidden
+  /// check failed.
+  bool studentView = false;
+  double maxPoints = 0;            ///< the assignment's points
   std::string timestamp;           ///< ISO 8601, UTC, when grading started
   // When grading could not happen at all: the message and rb's exit code (64 usage, 66 no
   // input, 74 I/O). 0 otherwise.
@@ -59,6 +80,29 @@ ClassResult gradeClass(const GradeOptions& options);
 /// recursively for *.bas (any case), sorted, without files whose first line is `// nontest`.
 /// Throws std::runtime_error naming a path that does not exist.
 std::vector<std::string> findPrograms(const std::vector<std::string>& paths);
+
+/// A class folder as an assignment grades it: every file is accounted for.
+struct ClassFiles {
+  std::vector<std::string> programs;  ///< *.bas and what `include` names, sorted
+  /// Files that are not programs: path and why ("not a .bas file; saved as .bas.txt?").
+  std::vector<std::pair<std::string, std::string>> others;
+};
+/// Folders are searched recursively; hidden files and folders (.git) and `skip` (the
+/// assignment's own files) are left out; `include` globs (fnmatch, on the file name) grade
+/// more files as programs. Throws std::runtime_error naming a path that does not exist, or
+/// an `include` glob that matches no file.
+ClassFiles findClassFiles(const std::vector<std::string>& paths, const std::vector<std::string>& include,
+                          const std::vector<std::string>& skip);
+
+/// A roster: one student per row, `student,file` (a file or a folder, relative to the roster's
+/// folder), a header row `student,file` optional. Throws std::runtime_error "FILE:LINE: ...".
+struct RosterEntry {
+  std::string student;
+  std::string path;   ///< as written
+  std::string full;   ///< resolved
+  uint32_t line = 0;
+};
+std::vector<RosterEntry> readRoster(const std::string& path);
 
 /// The programs of shard K of N (1-based): every N-th program starting with the K-th.
 std::vector<std::string> shardOf(const std::vector<std::string>& programs, int shard, int shards);

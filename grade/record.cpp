@@ -1,5 +1,6 @@
 #include "record.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -28,6 +29,19 @@ std::string limitName(RunStatus status) {
   return "";
 }
 
+std::string printedOutput(const std::string& output, const std::vector<RunRecord::InputMark>& marks) {
+  std::string text;
+  size_t at = 0;
+  for (const RunRecord::InputMark& m : marks) {
+    if (m.start < at || m.start > output.size()) break;
+    text.append(output, at, m.start - at);
+    if (!text.empty() && text.back() != '\n') text += '\n';
+    at = static_cast<size_t>(std::min<uint64_t>(m.end, output.size()));
+  }
+  if (at < output.size()) text.append(output, at, std::string::npos);
+  return text;
+}
+
 bool PathRecorder::add(Polylines& lines, size_t& count, bool newLine, P2 p) {
   if (count >= kMaxPoints) {
     truncated = true;
@@ -39,25 +53,40 @@ bool PathRecorder::add(Polylines& lines, size_t& count, bool newLine, P2 p) {
   return true;
 }
 
+void PathRecorder::addPath(bool newLine, P2 p, uint32_t line) {
+  if (!add(path, pathPoints_, newLine, p)) return;
+  if (newLine || pathLines.size() < path.size()) pathLines.push_back({});
+  pathLines.back().push_back(line);
+}
+
 void PathRecorder::robotEvent(const RobotEvent& e) {
   P2 p{e.pose.pos.x(), e.pose.pos.y()};
+  uint32_t line = e.loc.file == 0 ? e.loc.line : 0;
   switch (e.kind) {
     case RobotEvent::Locate:
-      add(path, pathPoints_, true, p);
+      ++moves;
+      addPath(true, p, line);
       stroke_ = false;
       break;
     case RobotEvent::Move:
     case RobotEvent::Crash: {
+      ++moves;
       if (e.kind == RobotEvent::Crash) crashed = true;
-      if (path.empty() && !add(path, pathPoints_, true, p)) break;
+      if (path.empty()) {
+        addPath(true, p, line);
+        if (path.empty()) break;
+      }
       P2 from = path.back().back();
       if (e.pen) {
         if (!stroke_) stroke_ = add(trail, trailPoints_, true, from);
         if (stroke_ && !(trail.back().back() == p)) add(trail, trailPoints_, false, p);
       }
-      if (!(from == p)) add(path, pathPoints_, false, p);
+      if (!(from == p)) addPath(false, p, line);
       break;
     }
+    case RobotEvent::Turn:
+      ++moves;
+      break;
     case RobotEvent::Pen:
       if (!e.pen) stroke_ = false;
       break;
@@ -158,7 +187,25 @@ std::string recordToJson(const RunRecord& r) {
   j["trail"] = linesJson(r.trail);
   j["truncated"] = r.truncated;
   j["screen"] = r.screen;
-  return j.dump();
+  j["complete"] = r.complete;
+  j["statements"] = r.statements;
+  j["moves"] = r.moves;
+  j["radius"] = r.radius;
+  j["path_lines"] = r.pathLines;
+  j["inputs"] = json::array();
+  for (const RunRecord::InputMark& m : r.inputs) j["inputs"].push_back({m.start, m.promptEnd, m.end});
+  if (r.loopFirst) j["loop"] = {r.loopFirst, r.loopLast};
+  j["touches"] = json::array();
+  for (const RunRecord::Touch& t : r.touches)
+    j["touches"].push_back({{"rgb", t.rgb}, {"touched", t.touched}, {"x", t.at.x}, {"y", t.at.y}, {"line", t.line}});
+  if (!r.worldError.empty()) j["world_error"] = toUtf8(r.worldError);
+  j["posts"] = json::array();
+  for (const RunRecord::Post& p : r.posts) {
+    json pj = {{"file", toUtf8(p.file)}, {"output", toUtf8(p.output)}, {"ran", p.ran}};
+    if (p.error) pj["error"] = diagJson(*p.error);
+    j["posts"].push_back(std::move(pj));
+  }
+  return j.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 std::optional<RunRecord> recordFromJson(std::string_view text, std::string& error) {
@@ -184,6 +231,32 @@ std::optional<RunRecord> recordFromJson(std::string_view text, std::string& erro
     r.trail = linesFrom(j.at("trail"));
     r.truncated = j.at("truncated").get<bool>();
     r.screen = j.at("screen").get<bool>();
+    r.complete = j.value("complete", true);
+    r.statements = j.value("statements", uint64_t{0});
+    r.moves = j.value("moves", uint64_t{0});
+    r.radius = j.value("radius", 20.0);
+    if (j.contains("path_lines")) r.pathLines = j["path_lines"].get<std::vector<std::vector<uint32_t>>>();
+    if (j.contains("inputs"))
+      for (const json& m : j["inputs"])
+        r.inputs.push_back({m.at(0).get<uint64_t>(), m.at(1).get<uint64_t>(), m.at(2).get<uint64_t>()});
+    if (j.contains("loop")) {
+      r.loopFirst = j["loop"].at(0).get<uint32_t>();
+      r.loopLast = j["loop"].at(1).get<uint32_t>();
+    }
+    if (j.contains("touches"))
+      for (const json& t : j["touches"])
+        r.touches.push_back({t.at("rgb").get<uint32_t>(), t.at("touched").get<bool>(),
+                             {t.at("x").get<double>(), t.at("y").get<double>()}, t.at("line").get<uint32_t>()});
+    r.worldError = j.value("world_error", std::string());
+    if (j.contains("posts"))
+      for (const json& pj : j["posts"]) {
+        RunRecord::Post p;
+        p.file = pj.at("file").get<std::string>();
+        p.output = pj.at("output").get<std::string>();
+        p.ran = pj.at("ran").get<bool>();
+        if (pj.contains("error")) p.error = diagFrom(pj["error"]);
+        r.posts.push_back(std::move(p));
+      }
     return r;
   } catch (const json::exception& e) {
     error = e.what();

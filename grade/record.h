@@ -58,7 +58,50 @@ struct RunRecord {
   Polylines trail;                   ///< what the pen drew, one polyline per stroke
   bool truncated = false;            ///< path or trail reached PathRecorder::kMaxPoints
   bool screen = false;               ///< the final screen was written beside the record
+
+  // What a grader asks of a run beyond its end (docs/teaching.md).
+  /// False while only rb check's part is written (the child writes it before the run starts,
+  /// so that a run killed at its time limit still has it).
+  bool complete = true;
+  uint64_t statements = 0;           ///< statements in the program and its includes
+  uint64_t moves = 0;                ///< robot statements that placed, moved or turned the robot
+  double radius = 20;                ///< the robot's radius (rLocate's)
+  /// The line of the statement that brought the robot to each point of `path` (0: another file).
+  std::vector<std::vector<uint32_t>> pathLines;
+  /// Where each `input` left its mark in the output (byte offsets): its prompt from `start` to
+  /// `promptEnd`, then the echo of the line read up to `end`.
+  struct InputMark {
+    uint64_t start = 0, promptEnd = 0, end = 0;
+    friend bool operator==(const InputMark&, const InputMark&) = default;
+  };
+  std::vector<InputMark> inputs;
+  /// A run stopped by a limit inside a loop: the loop's first and last line (0 when none).
+  uint32_t loopFirst = 0, loopLast = 0;
+  /// The colours a grader watches (avoid/touch): whether the robot's disc ever covered a pixel
+  /// of each (0xRRGGBB), first where and on which line.
+  struct Touch {
+    uint32_t rgb = 0;
+    bool touched = false;
+    P2 at;
+    uint32_t line = 0;
+  };
+  std::vector<Touch> touches;
+  /// A world program run before the student's: why it failed, or "".
+  std::string worldError;
+  /// Programs run after the student's, on the final state (post checks), in order.
+  struct Post {
+    std::string file;
+    std::string output;                ///< what it printed
+    std::optional<DiagRecord> error;   ///< its runtime error or limit
+    bool ran = false;
+  };
+  std::vector<Post> posts;
 };
+
+/// What the program printed, without the prompts of `input` and the echo of what it read: the
+/// echo's line end remains only where it ends a line the program printed on before the prompt.
+/// Marks past the end of `output` (a cut output) are ignored.
+std::string printedOutput(const std::string& output, const std::vector<RunRecord::InputMark>& marks);
 
 /// Records the robot's path and pen trail from the events the Machine reports.
 /// A program that moves forever would make them grow without end: each keeps at most
@@ -71,11 +114,14 @@ class PathRecorder : public RobotObserver {
 
   Polylines path;
   Polylines trail;
+  std::vector<std::vector<uint32_t>> pathLines;  ///< the statement's line per path point
   bool crashed = false;
   bool truncated = false;
+  uint64_t moves = 0;  ///< Locate, Move and Turn events
 
  private:
   bool add(Polylines& lines, size_t& count, bool newLine, P2 p);
+  void addPath(bool newLine, P2 p, uint32_t line);
 
   bool stroke_ = false;  ///< the last trail polyline is still being drawn
   size_t pathPoints_ = 0, trailPoints_ = 0;

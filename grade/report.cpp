@@ -56,19 +56,139 @@ std::string padLeft(const std::string& s, size_t w) { return std::string(w > wid
 
 std::string cleanUtf8(const std::string& s, bool xml) { return toUtf8(s, xml); }
 
-json checksJson(const std::vector<CheckResult>& checks) {
+/// A check as a report shows it: hidden ones reduced to their verdict in a student's report.
+CheckResult shown(const CheckResult& c, bool student) {
+  if (!student || !c.hidden || c.passed) return c;
+  CheckResult h;
+  h.name = "hidden check";
+  h.passed = false;
+  h.checked = c.checked;
+  h.message = "a hidden check failed";
+  h.points = c.points;
+  h.earned = c.earned;
+  h.hidden = true;
+  return h;
+}
+
+/// The first reason a program failed, as a student may see it.
+std::string reasonOf(const ProgramResult& p, bool student) {
+  if (!student || !p.gate.empty()) return p.reason;
+  for (const CheckResult& c : p.checks)
+    if (!c.passed) return shown(c, true).message;
+  return p.reason;
+}
+
+json checksJson(const std::vector<CheckResult>& checks, bool student) {
   json out = json::array();
-  for (const CheckResult& c : checks)
-    out.push_back({{"name", cleanUtf8(c.name, false)},
-                   {"passed", c.passed},
-                   {"message", cleanUtf8(c.message, false)},
-                   {"points", c.points}});
+  for (const CheckResult& raw : checks) {
+    CheckResult c = shown(raw, student);
+    json j = {{"name", cleanUtf8(c.name, false)},
+              {"passed", c.passed},
+              {"checked", c.checked},
+              {"message", cleanUtf8(c.message, false)},
+              {"points", c.points},
+              {"earned", c.earned}};
+    if (!c.note.empty()) j["note"] = cleanUtf8(c.note, false);
+    if (!c.hint.empty() && !c.passed) j["hint"] = cleanUtf8(c.hint, false);
+    if (c.hidden) j["hidden"] = true;
+    if (c.required) j["required"] = true;
+    if (!c.feedback.empty()) {
+      j["feedback"] = json::array();
+      for (const std::string& f : c.feedback) j["feedback"].push_back(cleanUtf8(f, false));
+    }
+    out.push_back(std::move(j));
+  }
   return out;
+}
+
+/// The output with what input showed marked: each line an input touched starts with "> " and
+/// the text it read is in [brackets]; other lines start with two blanks.
+std::string transcript(const ProgramResult& p) {
+  std::string out, line;
+  bool marked = false;
+  size_t next = 0;
+  auto endLine = [&] {
+    out += (marked ? "> " : "  ") + line + "\n";
+    line.clear();
+    marked = false;
+  };
+  for (size_t i = 0; i < p.output.size();) {
+    if (next < p.inputs.size() && i == p.inputs[next].start) {
+      const RunRecord::InputMark& m = p.inputs[next++];
+      marked = true;
+      size_t promptEnd = std::min<size_t>(m.promptEnd, p.output.size());
+      size_t end = std::min<size_t>(m.end, p.output.size());
+      line += p.output.substr(i, promptEnd - i);
+      std::string typed = p.output.substr(promptEnd, end - promptEnd);
+      if (!typed.empty() && typed.back() == '\n') typed.pop_back();
+      line += "[" + typed + "]";
+      i = end;
+      endLine();
+      continue;
+    }
+    if (p.output[i] == '\n') endLine();
+    else line += p.output[i];
+    ++i;
+  }
+  if (!line.empty()) endLine();
+  return out;
+}
+
+bool outputCheckFailed(const ProgramResult& p) {
+  for (const CheckResult& c : p.checks)
+    if (!c.passed && c.checked && !c.hidden &&
+        (c.name.find("output") != std::string::npos || c.message.find("output") != std::string::npos))
+      return true;
+  return false;
 }
 
 std::string className(const ProgramResult& p, const ClassResult& r) {
   std::string dir = std::filesystem::path(p.program).parent_path().string();
   return dir.empty() ? r.title : dir;
+}
+
+bool failed(const ProgramResult& p) { return p.verdict == "fail" || p.verdict == "error" || p.verdict == "missing"; }
+
+/// The details of one failed program, indented, as the text report and the student feedback
+/// files show them.
+std::string details(const ProgramResult& p, bool student, bool withErrors = true) {
+  std::string out;
+  if (!p.gate.empty()) {
+    out += "    " + p.gate + ": no check counts\n";
+  } else if (p.checks.empty()) {
+    out += "    " + p.reason + "\n";
+  }
+  bool hiddenSaid = false;
+  std::vector<CheckResult> list;
+  for (const CheckResult& raw : p.checks) {
+    if (raw.passed && raw.note.empty()) continue;
+    if (!p.gate.empty()) break;
+    CheckResult c = shown(raw, student);
+    if (c.hidden && student) {
+      if (hiddenSaid) continue;
+      hiddenSaid = true;
+    }
+    // Checks that fail for the same reason (a program that does not compile) are said once.
+    if (!list.empty() && !c.passed && !list.back().passed && list.back().message == c.message &&
+        c.hint.empty() && list.back().hint.empty() && c.feedback.empty() && c.note.empty() && list.back().note.empty()) {
+      list.back().name += ", " + c.name;
+      continue;
+    }
+    list.push_back(c);
+  }
+  for (const CheckResult& c : list) {
+    std::string text = c.passed ? c.name + ": passed, " + c.note : c.name + ": " + c.message;
+    if (!c.passed && !c.note.empty()) text += " (" + c.note + ")";
+    out += cleanUtf8(indent(text, "    "), false) + "\n";
+    for (const std::string& f : c.feedback) out += cleanUtf8(indent(f, "      "), false) + "\n";
+    if (!c.passed && !c.hint.empty()) out += cleanUtf8(indent("hint: " + c.hint, "      "), false) + "\n";
+  }
+  if (outputCheckFailed(p) && !p.output.empty()) {
+    out += p.inputs.empty() ? "    output:\n" : "    output (> marks a line where input showed its prompt and read [text]):\n";
+    out += cleanUtf8(indent(transcript(p), "      "), false) + "\n";
+  }
+  if (withErrors && !p.errors.empty()) out += "    error output:\n" + cleanUtf8(indent(p.errors, "      "), false) + "\n";
+  return out;
 }
 
 }  // namespace
@@ -98,37 +218,76 @@ std::string csvField(const std::string& text) {
   return out + "\"";
 }
 
-std::string textReport(const ClassResult& r, bool details) {
+std::string textReport(const ClassResult& r, bool showDetails) {
   std::string out;
-  size_t nameWidth = 7;
-  for (const ProgramResult& p : r.programs) nameWidth = std::max(nameWidth, std::min<size_t>(width(p.program), 60));
-  out += pad("program", nameWidth) + "  result  " + padLeft("steps", 9) + "  " + padLeft("time", 7) + "  reason\n";
+  bool students = false;
+  for (const ProgramResult& p : r.programs) students = students || !p.student.empty();
+  size_t nameWidth = 7, studentWidth = 7;
+  for (const ProgramResult& p : r.programs) {
+    nameWidth = std::max(nameWidth, std::min<size_t>(width(p.program), 60));
+    studentWidth = std::max(studentWidth, std::min<size_t>(width(p.student), 30));
+  }
+  out += pad("program", nameWidth) + "  " + (students ? pad("student", studentWidth) + "  " : "") + "result  " +
+         (r.assignment ? padLeft("points", 9) + "  " : "") + padLeft("steps", 9) + "  " + padLeft("time", 7) +
+         "  reason\n";
   for (const ProgramResult& p : r.programs) {
     std::string verdict = p.verdict == "pass" ? "pass" : upper(p.verdict);
-    std::string line = pad(p.program, nameWidth) + "  " + pad(verdict, 6) + "  " +
-                       padLeft(p.verdict == "skip" ? "-" : std::to_string(p.steps), 9) + "  " +
-                       padLeft(seconds(p.seconds, "%.2fs"), 7) + "  " + firstLine(p.reason);
+    if (verdict == "MISSING") verdict = "MISS";
+    bool ran = p.verdict != "skip" && p.verdict != "missing" && !(p.checks.empty() && p.verdict == "fail");
+    std::string line = pad(p.program, nameWidth) + "  " + (students ? pad(p.student, studentWidth) + "  " : "") +
+                       pad(verdict, 6) + "  " +
+                       (r.assignment ? padLeft(pointsText(p.points) + "/" + pointsText(p.maxPoints), 9) + "  " : "") +
+                       padLeft(ran ? std::to_string(p.steps) : "-", 9) + "  " +
+                       padLeft(ran ? seconds(p.seconds, "%.2fs") : "-", 7) + "  " + firstLine(reasonOf(p, r.studentView));
     while (!line.empty() && line.back() == ' ') line.pop_back();
     out += cleanUtf8(line, false) + "\n";
   }
-  if (details) {
+  if (showDetails) {
     bool header = false;
     for (const ProgramResult& p : r.programs) {
-      if (p.verdict != "fail" && p.verdict != "error") continue;
+      bool notes = false;
+      for (const CheckResult& c : p.checks) notes = notes || !c.note.empty();
+      if (!failed(p) && !notes) continue;
+      if (p.verdict == "missing" || (p.checks.empty() && p.gate.empty())) continue;  // the table said it all
       if (!header) out += "\n";
       header = true;
-      out += p.program + ":\n";
-      for (const CheckResult& c : p.checks)
-        if (!c.passed) out += cleanUtf8(indent(c.name + ": " + c.message, "    "), false) + "\n";
-      if (p.checks.empty()) out += "    " + p.reason + "\n";
+      out += p.program + (p.student.empty() ? "" : " (" + p.student + ")") + ":\n";
+      out += details(p, r.studentView);
     }
   }
-  size_t n = r.programs.size();
+  size_t n = r.programs.size() - r.missing;
   out += "\n" + std::to_string(n) + " program" + (n == 1 ? "" : "s") + ": " + std::to_string(r.passed) +
          " passed, " + std::to_string(r.failed) + " failed";
   if (r.errors) out += ", " + std::to_string(r.errors) + " not graded (rb failed)";
   if (r.skipped) out += ", " + std::to_string(r.skipped) + " skipped";
+  if (r.missing) out += "; " + std::to_string(r.missing) + " student" + (r.missing == 1 ? "" : "s") + " with no submission";
   out += " in " + seconds(r.seconds, "%.2f") + " s\n";
+  return out;
+}
+
+std::string studentFeedback(const ProgramResult& p, const ClassResult& r) {
+  std::string out = r.title + ": " + p.program + (p.student.empty() ? "" : " (" + p.student + ")") + "\n";
+  out += "result: " + std::string(p.verdict == "pass" ? "passed" : p.verdict == "missing" ? "no submission" : "not passed");
+  if (r.assignment) out += ", " + pointsText(p.points) + " of " + pointsText(p.maxPoints) + " points";
+  out += "\n\n";
+  if (p.checks.empty() || !p.gate.empty()) {
+    out += reasonOf(p, true) + "\n";
+    if (!p.gate.empty()) return out;
+  }
+  for (const CheckResult& raw : p.checks) {
+    CheckResult c = shown(raw, true);
+    std::string mark = !c.checked ? "[ ]" : c.passed ? "[x]" : "[!]";
+    std::string pts = r.assignment ? " (" + pointsText(c.earned) + "/" + pointsText(c.points) + ")" : "";
+    out += cleanUtf8(mark + " " + c.name + pts + ": " + c.message, false) + "\n";
+    if (!c.note.empty()) out += "      " + cleanUtf8(c.note, false) + "\n";
+    for (const std::string& f : c.feedback) out += cleanUtf8(indent(f, "      "), false) + "\n";
+    if (!c.passed && !c.hint.empty()) out += cleanUtf8(indent("hint: " + c.hint, "      "), false) + "\n";
+  }
+  if (!p.output.empty()) {
+    out += "\nyour program's output" + std::string(p.inputs.empty() ? "" : " (> marks where input showed its prompt and read [text])") + ":\n";
+    out += cleanUtf8(indent(transcript(p), "  "), false) + "\n";
+  }
+  if (!p.errors.empty()) out += "\nerror output:\n" + cleanUtf8(indent(p.errors, "  "), false) + "\n";
   return out;
 }
 
@@ -136,48 +295,61 @@ std::string jsonReport(const ClassResult& r) {
   json doc;
   doc["title"] = r.title;
   doc["timestamp"] = r.timestamp;
+  if (r.studentView) doc["student_view"] = true;
   doc["programs"] = json::array();
   for (const ProgramResult& p : r.programs) {
-    json j = {{"program", cleanUtf8(p.program, false)}, {"result", p.verdict}, {"reason", cleanUtf8(p.reason, false)},
+    json j = {{"program", cleanUtf8(p.program, false)}, {"result", p.verdict}, {"reason", cleanUtf8(reasonOf(p, r.studentView), false)},
               {"steps", p.steps},     {"seconds", p.seconds}, {"points", p.points},
-              {"max_points", p.maxPoints}, {"checks", checksJson(p.checks)}};
+              {"max_points", p.maxPoints}, {"checks", checksJson(p.checks, r.studentView)}};
+    if (!p.student.empty()) j["student"] = cleanUtf8(p.student, false);
+    if (!p.gate.empty()) j["gate"] = cleanUtf8(p.gate, false);
     if (!p.picture.empty()) j["picture"] = p.picture;
+    if (!p.output.empty()) j["output"] = cleanUtf8(p.output, false);
+    if (!p.inputs.empty()) {
+      j["inputs"] = json::array();
+      for (const RunRecord::InputMark& m : p.inputs)
+        j["inputs"].push_back({{"start", m.start}, {"prompt_end", m.promptEnd}, {"end", m.end}});
+    }
+    if (!p.errors.empty()) j["errors"] = cleanUtf8(p.errors, false);
     doc["programs"].push_back(std::move(j));
   }
-  doc["summary"] = {{"programs", r.programs.size()}, {"passed", r.passed}, {"failed", r.failed},
-                    {"errors", r.errors},           {"skipped", r.skipped}, {"seconds", r.seconds}};
+  doc["summary"] = {{"programs", r.programs.size() - r.missing}, {"passed", r.passed}, {"failed", r.failed},
+                    {"errors", r.errors},           {"skipped", r.skipped}, {"missing", r.missing},
+                    {"seconds", r.seconds}};
   return doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string junitReport(const ClassResult& r) {
   char host[256] = "localhost";
   gethostname(host, sizeof host - 1);
-  std::string counts = " tests=\"" + std::to_string(r.programs.size()) + "\" failures=\"" + std::to_string(r.failed) +
-                       "\" errors=\"" + std::to_string(r.errors) + "\" skipped=\"" + std::to_string(r.skipped) +
-                       "\" time=\"" + seconds(r.seconds) + "\"";
+  std::string counts = " tests=\"" + std::to_string(r.programs.size()) + "\" failures=\"" +
+                       std::to_string(r.failed + r.missing) + "\" errors=\"" + std::to_string(r.errors) +
+                       "\" skipped=\"" + std::to_string(r.skipped) + "\" time=\"" + seconds(r.seconds) + "\"";
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<testsuites name=\"" + xmlEscape(r.title) + "\"" + counts + ">\n";
   out += "  <testsuite name=\"" + xmlEscape(r.title) + "\"" + counts + " timestamp=\"" + r.timestamp +
          "\" hostname=\"" + xmlEscape(host) + "\">\n";
   for (const ProgramResult& p : r.programs) {
-    out += "    <testcase name=\"" + xmlEscape(std::filesystem::path(p.program).filename().string()) +
-           "\" classname=\"" + xmlEscape(className(p, r)) + "\" file=\"" + xmlEscape(p.program) +
-           "\" time=\"" + seconds(p.seconds) + "\"";
+    std::string name = std::filesystem::path(p.program).filename().string();
+    if (name.empty()) name = p.program;
+    if (!p.student.empty()) name += " (" + p.student + ")";
+    out += "    <testcase name=\"" + xmlEscape(name) + "\" classname=\"" + xmlEscape(className(p, r)) +
+           "\" file=\"" + xmlEscape(p.program) + "\" time=\"" + seconds(p.seconds) + "\"";
     std::string body;
     if (p.verdict == "skip") {
       body += "      <skipped message=\"" + xmlEscape(p.reason) + "\"/>\n";
-    } else if (p.verdict == "fail" || p.verdict == "error") {
-      const char* tag = p.verdict == "fail" ? "failure" : "error";
-      std::string type = "run", text;
-      bool first = true;
-      for (const CheckResult& c : p.checks) {
-        if (c.passed) continue;
-        if (first) type = c.name;
-        first = false;
-        text += c.name + ": " + c.message + "\n";
-      }
+    } else if (failed(p)) {
+      const char* tag = p.verdict == "error" ? "error" : "failure";
+      std::string type = p.verdict == "missing" ? "missing" : "run";
+      for (const CheckResult& c : p.checks)
+        if (!c.passed) {
+          type = shown(c, r.studentView).name;
+          break;
+        }
+      if (!p.gate.empty()) type = "gate";
+      std::string text = details(p, r.studentView, false);  // the errors are in <system-err>
       if (text.empty()) text = p.reason + "\n";
-      body += "      <" + std::string(tag) + " message=\"" + xmlEscape(firstLine(p.reason)) + "\" type=\"" +
+      body += "      <" + std::string(tag) + " message=\"" + xmlEscape(firstLine(reasonOf(p, r.studentView))) + "\" type=\"" +
               xmlEscape(type) + "\">" + xmlEscape(text) + "</" + tag + ">\n";
     }
     if (!p.output.empty()) body += "      <system-out>" + xmlEscape(p.output) + "</system-out>\n";
@@ -195,13 +367,16 @@ std::string csvReport(const ClassResult& r) {
   for (const ProgramResult& p : r.programs) {
     if (p.checks.empty()) continue;
     std::vector<std::string> these;
-    for (const CheckResult& c : p.checks) these.push_back(c.name);
+    for (const CheckResult& c : p.checks) these.push_back(shown(c, r.studentView).name);
     if (!any) names = these;
     else same = same && names == these;
     any = true;
   }
   if (!same) names.clear();
-  std::string out = "program,result,points,max_points,checks_passed,checks,steps,seconds,reason";
+  bool students = false;
+  for (const ProgramResult& p : r.programs) students = students || !p.student.empty();
+  std::string out = std::string(students ? "student," : "") +
+                    "program,result,points,max_points,checks_passed,checks,steps,seconds,reason";
   for (const std::string& n : names) {
     out += ',';
     out += csvField(n);
@@ -210,12 +385,14 @@ std::string csvReport(const ClassResult& r) {
   for (const ProgramResult& p : r.programs) {
     size_t passed = 0;
     for (const CheckResult& c : p.checks) passed += c.passed;
-    out += csvField(p.program) + "," + p.verdict + "," + pointsText(p.points) + "," + pointsText(p.maxPoints) + "," +
-           std::to_string(passed) + "," + std::to_string(p.checks.size()) + "," + std::to_string(p.steps) + "," +
-           seconds(p.seconds) + "," + csvField(cleanUtf8(p.reason, false));
+    out += (students ? csvField(cleanUtf8(p.student, false)) + "," : "") + csvField(p.program) + "," + p.verdict + "," +
+           pointsText(p.points) + "," + pointsText(p.maxPoints) + "," + std::to_string(passed) + "," +
+           std::to_string(p.checks.size()) + "," + std::to_string(p.steps) + "," + seconds(p.seconds) + "," +
+           csvField(cleanUtf8(reasonOf(p, r.studentView), false));
     for (size_t i = 0; i < names.size(); ++i) {
       out += ',';
-      if (i < p.checks.size()) out += pointsText(p.checks[i].passed ? p.checks[i].points : 0);
+      if (i < p.checks.size()) out += pointsText(p.checks[i].earned);
+      else if (p.checks.empty()) out += "0";
     }
     out += '\n';
   }

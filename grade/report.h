@@ -15,6 +15,11 @@ std::string textReport(const ClassResult& result, bool details);
 /// One JSON document with every program, every check and the totals.
 std::string jsonReport(const ClassResult& result);
 
+/// One program's feedback for its student (rb test --feedback DIR): every check with its points,
+/// hints and the teacher's feedback, the output with input marked; hidden checks only say that
+/// they failed.
+std::string studentFeedback(const ProgramResult& program, const ClassResult& result);
+
 /// JUnit XML: one <testsuite> for the class, one <testcase> per program with a <failure> (a
 /// failed check), <error> (rb could not grade it) or <skipped>, and its output.
 std::string junitReport(const ClassResult& result);

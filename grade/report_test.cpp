@@ -9,6 +9,16 @@ using namespace rb::grade;
 
 namespace {
 
+CheckResult result(const std::string& name, bool passed, const std::string& message, double points) {
+  CheckResult c;
+  c.name = name;
+  c.passed = passed;
+  c.message = message;
+  c.points = points;
+  c.earned = passed ? points : 0;
+  return c;
+}
+
 ClassResult sample() {
   ClassResult r;
   r.title = "square";
@@ -17,14 +27,14 @@ ClassResult sample() {
   ProgramResult pass;
   pass.program = "class/a.bas";
   pass.verdict = "pass";
-  pass.checks = {{"trail", true, "ok", 2}};
+  pass.checks = {result("trail", true, "ok", 2)};
   pass.points = pass.maxPoints = 2;
   pass.output = "perimeter 480\n";
   ProgramResult fail;
   fail.program = "class/b, \"quoted\".bas";
   fail.verdict = "fail";
   fail.reason = "trail is 60 px from the solution's at its worst, tolerance 3 <&>";
-  fail.checks = {{"trail", false, fail.reason, 2}};
+  fail.checks = {result("trail", false, fail.reason, 2)};
   fail.maxPoints = 2;
   fail.output = std::string("caf\xE9 \x01 bell\n");  // Latin-1 and a control character
   ProgramResult skip;
@@ -45,6 +55,7 @@ TEST_CASE("the text report: a table, the failed checks, a total", "[grade][repor
   CHECK(text.find("class/a.bas") != std::string::npos);
   CHECK(text.find("FAIL") != std::string::npos);
   CHECK(text.find("    trail: trail is 60 px") != std::string::npos);
+  CHECK(text.find("error output") == std::string::npos);
   CHECK(text.find("3 programs: 1 passed, 1 failed, 1 skipped in 1.50 s\n") != std::string::npos);
   CHECK(textReport(sample(), false).find("    trail:") == std::string::npos);
 }
@@ -93,4 +104,72 @@ TEST_CASE("the feedback picture draws the student's trail over the solution's", 
   CHECK(img.pixel(150, 100) == kReferenceColour);
   CHECK(img.pixel(150, 110) == kStudentColour);
   CHECK(img.pixel(150, 300) == 0xFFFFFF);
+}
+
+TEST_CASE("reports for students hide the hidden checks' details", "[grade][report]") {
+  ClassResult r = sample();
+  r.assignment = true;
+  ProgramResult& p = r.programs[1];
+  CheckResult secret = result("secret corner", false, "misses point 3 (500, 200) by 9 px", 1);
+  secret.hidden = true;
+  secret.hint = "look at the third turn";
+  p.checks.insert(p.checks.begin(), secret);
+  p.reason = secret.message;
+  std::string teacher = textReport(r, true);
+  CHECK(teacher.find("secret corner: misses point 3") != std::string::npos);
+  CHECK(teacher.find("hint: look at the third turn") != std::string::npos);
+  r.studentView = true;
+  for (const std::string& report : {textReport(r, true), jsonReport(r), junitReport(r), csvReport(r),
+                                    studentFeedback(p, r)}) {
+    CHECK(report.find("secret") == std::string::npos);
+    CHECK(report.find("500, 200") == std::string::npos);
+    CHECK(report.find("third turn") == std::string::npos);
+    CHECK(report.find("a hidden check failed") != std::string::npos);
+  }
+}
+
+TEST_CASE("a failed output check shows the transcript with input marked", "[grade][report]") {
+  ClassResult r = sample();
+  ProgramResult& p = r.programs[1];
+  p.checks = {result("solution-output", false, "output differs at line 1", 1)};
+  p.output = "How many sides? 6\nsides: 6\n";
+  p.inputs = {{0, 16, 18}};
+  p.errors = "rb run: something\n";
+  std::string text = textReport(r, true);
+  CHECK(text.find("      > How many sides? [6]\n        sides: 6\n") != std::string::npos);
+  CHECK(text.find("    error output:\n      rb run: something\n") != std::string::npos);
+  size_t first = text.find("rb run: something");
+  CHECK(text.find("rb run: something", first + 1) == std::string::npos);  // once
+  nlohmann::json doc = nlohmann::json::parse(jsonReport(r));
+  CHECK(doc["programs"][1]["inputs"][0]["prompt_end"] == 16);
+}
+
+TEST_CASE("points, notes and missing students in the reports", "[grade][report]") {
+  ClassResult r = sample();
+  r.assignment = true;
+  ProgramResult& p = r.programs[1];
+  CheckResult ran = result("no-error", true, "finishes", 1);
+  ran.earned = 0;
+  ran.note = "not counted: the required check 'corners' did not pass";
+  p.checks.push_back(ran);
+  p.maxPoints = 3;
+  ProgramResult missing;
+  missing.program = "bob.bas";
+  missing.student = "Bob";
+  missing.verdict = "missing";
+  missing.reason = "no submission";
+  missing.maxPoints = 3;
+  r.programs.push_back(missing);
+  r.missing = 1;
+  std::string text = textReport(r, true);
+  CHECK(text.find("0/3") != std::string::npos);
+  CHECK(text.find("no-error: passed, not counted: the required check 'corners' did not pass") != std::string::npos);
+  CHECK(text.find("MISS") != std::string::npos);
+  CHECK(text.find("1 student with no submission") != std::string::npos);
+  std::string csv = csvReport(r);
+  CHECK(csv.rfind("student,program,", 0) == 0);
+  CHECK(csv.find("Bob,bob.bas,missing,0,3,") != std::string::npos);
+  std::string xml = junitReport(r);
+  CHECK(xml.find("name=\"bob.bas (Bob)\"") != std::string::npos);
+  CHECK(xml.find("failures=\"2\"") != std::string::npos);
 }

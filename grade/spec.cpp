@@ -183,7 +183,7 @@ void parseComments(const std::string& text, const std::string& name, bool main, 
       } else if (key == "nontest") {
         if (number == 1) spec.nontest = true;
       } else if (key == "timeout") {
-        if (std::optional<double> t = toDouble(value); t && *t > 0) spec.timeout = *t;
+        if (std::optional<double> t = toDouble(value); t && *t > 0) spec.timeout = *t, spec.timeoutSet = true;
         else spec.problems.push_back(where + "// timeout wants a number of seconds, not '" + value + "'");
       } else if (key == "exit") {
         if (std::optional<int> code = toInt(value)) spec.exit = *code;

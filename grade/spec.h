@@ -31,6 +31,7 @@ struct CommentSpec {
   std::optional<std::string> skip;       ///< why the program is skipped
   bool nontest = false;                  ///< `// nontest` on line 1: a file others include
   double timeout = 30;                   ///< seconds the run may take
+  bool timeoutSet = false;               ///< `// timeout:` gave it
   std::optional<int> exit;               ///< the exit status rb run must end with
   std::vector<std::string> problems;     ///< malformed comments (a bad number, a bad quote)
 };

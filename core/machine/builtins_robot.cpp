@@ -62,8 +62,9 @@ Value rForward(Machine& m, Args& a) {
   try {
     double distance = a.within(0, kMaxDistance);
     m.robot().forward(distance, stepper(m));
-  } catch (const RuntimeError&) {
-    report(m, RobotEvent::Crash, a);
+  } catch (const RuntimeError& e) {
+    // A collision is a crash; an unplaced robot or a bad distance is only an error.
+    if (std::string_view(e.code()) == "rb-robot-crash") report(m, RobotEvent::Crash, a);
     throw;
   }
   report(m, RobotEvent::Move, a);

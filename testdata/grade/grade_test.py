@@ -75,7 +75,7 @@ EXPECTED = {
     "correct.bas": ("pass", r"^$", []),
     "off_by_one.bas": (
         "fail",
-        r"^the robot never comes within 3 px of point 5 \(400, 300\) after point 4; the closest it gets is 120 px$",
+        r"^the robot misses point 5 \(400, 300\) after point 4 by 117 px: it comes within 120 px, 3 px allowed$",
         ["corners", "solution-trail", "ends-in"]),
     "crashing.bas": (
         "fail",
@@ -83,7 +83,8 @@ EXPECTED = {
         ["no-error", "solution-output", "corners", "solution-trail", "ends-in", "solution-screen"]),
     "looping.bas": (
         "fail",
-        r"^did not finish: stopped after 100000 steps \(the --max-steps limit\) at looping\.bas:\d+:\d+$",
+        r"^did not finish: stopped at looping\.bas:6:7 after 100000 steps, the step limit \(max-steps = 100000 in "
+        r"assignment\.toml\), in the loop of lines 6-9 \(does it ever end\?\)$",
         ["no-error", "solution-output"]),
     "not_compiling.bas": (
         "fail",
@@ -107,7 +108,7 @@ def case_class(env):
         expect(failed_checks(p) == failing, f"{name}: failed checks {failed_checks(p)}, expected {failing}", p)
     # By how much: the trail's distance and the end position.
     off = {c["name"]: c["message"] for c in programs["off_by_one.bas"]["checks"]}
-    expect(off["solution-trail"].startswith("trail is 60 px from the solution's at its worst, tolerance 3"),
+    expect(off["solution-trail"].startswith("the trail is 60 px off the solution's at its worst, 3 px allowed"),
            "trail message", off["solution-trail"])
     expect(off["ends-in"] == "the robot ends at (520, 300), 115 px outside the circle of radius 5 around (400, 300)",
            "ends-in message", off["ends-in"])
@@ -125,10 +126,10 @@ def case_text(env):
     r = env.rb_run("test", "-j", "2", "-a", ASSIGNMENT, CLASS)
     expect(r.returncode == 1, f"exit {r.returncode}", r.stdout, r.stderr)
     lines = r.stdout.splitlines()
-    expect(lines[0].split() == ["program", "result", "steps", "time", "reason"], "header", lines[0])
+    expect(lines[0].split() == ["program", "result", "points", "steps", "time", "reason"], "header", lines[0])
     row = next(l for l in lines if "crashing.bas" in l and "FAIL" in l)
     expect(" 5 " in row and "the robot crashed at crashing.bas:6:1" in row, "crashing row", row)
-    expect(any(re.match(r"^\s+solution-trail: trail is 160 px from the solution's", l) for l in lines),
+    expect(any(re.match(r"^\s+solution-trail: the trail is 160 px off the solution's", l) for l in lines),
            "details list every failed check", r.stdout)
     expect(lines[-1].startswith("6 programs: 1 passed, 5 failed in "), "total line", lines[-1])
     q = env.rb_run("test", "-q", "-a", ASSIGNMENT, os.path.join(CLASS, "correct.bas"))
@@ -163,7 +164,9 @@ def case_junit(env):
     expect(failure is not None and failure.get("type") == "no-error" and
            failure.get("message").startswith("the robot crashed at crashing.bas:6:1 after 5 steps"),
            "crashing.bas's failure", failure.attrib if failure is not None else None)
-    expect("solution-trail: trail is 160 px" in failure.text, "the failure lists every failed check", failure.text)
+    expect("solution-trail: the trail is 160 px" in failure.text, "the failure lists every failed check", failure.text)
+    expect("error output" not in failure.text and "rb-robot-crash" in cases["crashing.bas"].find("system-err").text,
+           "the error output once, in <system-err>", failure.text)
 
 
 def case_csv(env):
@@ -177,7 +180,7 @@ def case_csv(env):
     expect(by["correct.bas"]["result"] == "pass" and by["correct.bas"]["points"] == "8", "correct.bas", by["correct.bas"])
     expect(by["wrong_output.bas"]["points"] == "7" and by["wrong_output.bas"]["solution-output"] == "0" and
            by["wrong_output.bas"]["solution-trail"] == "2", "wrong_output.bas", by["wrong_output.bas"])
-    expect(by["off_by_one.bas"]["reason"].startswith("the robot never comes within 3 px"), "reason", by["off_by_one.bas"])
+    expect(by["off_by_one.bas"]["reason"].startswith("the robot misses point 5"), "reason", by["off_by_one.bas"])
 
 
 def png_size(path):
@@ -266,8 +269,14 @@ def case_timeout(env):
     by = {os.path.basename(p["program"]): p for p in doc["programs"]}
     expect(r.returncode == 1, f"exit {r.returncode}", r.stderr)
     expect(by["correct.bas"]["result"] == "pass", "correct.bas", by["correct.bas"])
-    expect(re.match(r"^did not finish: stopped after 1 seconds \(the --timeout limit\) at spin\.bas:\d+:\d+$",
+    # The limit as the assignment set it, where the run was and the loop it was in; the robot
+    # never moved in an assignment about the robot (the solution moves it), so nothing counts.
+    expect(re.match(r"^did not finish: stopped at spin\.bas:2:7 after \d+ steps, the time limit \(timeout = 1 in "
+                    r"timeout\.toml\), in the loop of lines 2-4 \(does it ever end\?\); the robot never moved before that$",
                     by["spin.bas"]["reason"]), "spin.bas", by["spin.bas"])
+    expect(by["spin.bas"]["points"] == 0 and not by["spin.bas"]["checks"][0]["checked"], "gated", by["spin.bas"])
+    expect("(timeout = 1 in timeout.toml)" in by["spin.bas"]["errors"] and "--timeout" not in by["spin.bas"]["errors"],
+           "the error output names the limit as the assignment set it", by["spin.bas"]["errors"])
 
 
 def case_trace(env):
