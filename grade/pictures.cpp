@@ -127,9 +127,19 @@ double edge(double halfWidth, double d) { return std::clamp(halfWidth + 0.5 - d,
 void segment(Coverage& c, P2 a, P2 b, double halfWidth) {
   const double m = halfWidth + 1;
   Box box = c.area(std::min(a.x, b.x) - m, std::min(a.y, b.y) - m, std::max(a.x, b.x) + m, std::max(a.y, b.y) + m);
-  for (int y = box.y0; y <= box.y1; ++y)
-    for (int x = box.x0; x <= box.x1; ++x)
-      c.cover(x, y, edge(halfWidth, distanceToSegment({double(x), double(y)}, a, b)));
+  const double dy = b.y - a.y;
+  for (int y = box.y0; y <= box.y1; ++y) {
+    // Only the columns near the part of the segment within m of this row (a long diagonal
+    // segment's box is mostly empty).
+    double t0 = 0, t1 = 1;
+    if (std::abs(dy) > 1e-9) {
+      t0 = std::clamp((y - m - a.y) / dy, 0.0, 1.0), t1 = std::clamp((y + m - a.y) / dy, 0.0, 1.0);
+      if (t0 > t1) std::swap(t0, t1);
+    }
+    const double xa = a.x + (b.x - a.x) * t0, xb = a.x + (b.x - a.x) * t1;
+    const int x0 = std::max(box.x0, floorPixel(std::min(xa, xb) - m)), x1 = std::min(box.x1, ceilPixel(std::max(xa, xb) + m));
+    for (int x = x0; x <= x1; ++x) c.cover(x, y, edge(halfWidth, distanceToSegment({double(x), double(y)}, a, b)));
+  }
 }
 
 void polylines(Coverage& c, const Polylines& lines, double halfWidth) {

@@ -349,3 +349,25 @@ TEST_CASE("pictures: nothing of the arena spills into the legend", "[grade][pict
   CHECK(b.pixel(700, 599) == kStudentColour);
   CHECK(differences(a, b, 0, kArenaHeight, 799, kPictureHeight - 1) == 0);
 }
+
+TEST_CASE("pictures: trails at any angle, and dots", "[grade][pictures]") {
+  PictureInput in;
+  in.student = {{{100, 500}, {700, 200}}, {{50, 50}}};
+  in.reference = {{{100, 100}, {400, 400}}};
+  RgbImage img = feedbackPicture(in);
+  for (int k = 0; k <= 300; k += 10) {
+    CHECK(img.pixel(100 + 2 * k, 500 - k) == kStudentColour);
+    CHECK(img.pixel(100 + 2 * k, 500 - k - 5) != kStudentColour);  // a thin line
+    CHECK(img.pixel(100 + 2 * k, 500 - k + 5) != kStudentColour);
+    CHECK(img.pixel(100 + k, 100 + k) == kReferenceColour);
+    CHECK(img.pixel(100 + k + 3, 100 + k) == kReferenceColour);  // a wide band
+    CHECK(img.pixel(100 + k + 12, 100 + k) == kWhite);
+  }
+  CHECK(img.pixel(50, 50) == kStudentColour);  // a trail of one point: a dot
+  CHECK(img.pixel(50, 54) == kWhite);
+  // Solid along its whole length: at least one pixel a pixel of length, at most two.
+  const int line = count(img, kStudentColour, 0, 0, 799, kArenaHeight - 1);
+  INFO(line << " pixels in the student's colour");
+  CHECK(line > 670);
+  CHECK(line < 2 * 670 + 50);
+}
