@@ -353,7 +353,7 @@ TEST_CASE("pictures: nothing of the arena spills into the legend", "[grade][pict
 TEST_CASE("pictures: trails at any angle, and dots", "[grade][pictures]") {
   PictureInput in;
   in.student = {{{100, 500}, {700, 200}}, {{50, 50}}};
-  in.reference = {{{100, 100}, {400, 400}}};
+  in.reference = {{{100, 100}, {400, 400}}, {{600, 500}}};
   RgbImage img = feedbackPicture(in);
   for (int k = 0; k <= 300; k += 10) {
     CHECK(img.pixel(100 + 2 * k, 500 - k) == kStudentColour);
@@ -365,6 +365,11 @@ TEST_CASE("pictures: trails at any angle, and dots", "[grade][pictures]") {
   }
   CHECK(img.pixel(50, 50) == kStudentColour);  // a trail of one point: a dot
   CHECK(img.pixel(50, 54) == kWhite);
+  for (auto [x, y] : {std::pair{596, 500}, {604, 500}, {600, 496}, {600, 504}, {597, 498}})
+    CHECK(img.pixel(x, y) == kReferenceColour);  // a round dot as wide as the band
+  CHECK(img.pixel(594, 500) != kReferenceColour);
+  CHECK(img.pixel(100 - 3, 100 - 2) == kReferenceColour);  // round caps
+  CHECK(img.pixel(100 - 4, 100) == kReferenceColour);
   // Solid along its whole length: at least one pixel a pixel of length, at most two.
   const int line = count(img, kStudentColour, 0, 0, 799, kArenaHeight - 1);
   INFO(line << " pixels in the student's colour");
