@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "screen/font.h"
+#include "text.h"
 
 namespace rb::grade {
 
@@ -239,30 +240,16 @@ void fadedScreen(render::RgbImage& img, const std::optional<render::RgbImage>& s
 }
 
 /// The fonts draw Latin-1: UTF-8 text (assignment files) is decoded, a character beyond
-/// Latin-1 becomes '?', and a byte that is not UTF-8 stays (already Latin-1).
+/// Latin-1 becomes '?', and a byte that is not UTF-8 stays (already Latin-1, as toUtf8 reads it).
 std::string latin1(std::string_view s) {
+  const std::string valid = toUtf8(s);
   std::string out;
-  for (size_t i = 0; i < s.size();) {
-    auto b = static_cast<unsigned char>(s[i]);
-    size_t n = b >= 0xF0 && b < 0xF8 ? 4 : b >= 0xE0 ? 3 : b >= 0xC2 && b < 0xE0 ? 2 : 1;
-    if (b < 0x80 || n == 1 || i + n > s.size()) {
-      out += static_cast<char>(b);
-      ++i;
-      continue;
-    }
-    uint32_t cp = b & (0x3F >> (n - 1));
-    bool ok = true;
-    for (size_t k = 1; k < n; ++k) {
-      auto c = static_cast<unsigned char>(s[i + k]);
-      ok = ok && (c & 0xC0) == 0x80;
-      cp = cp << 6 | (c & 0x3F);
-    }
-    if (!ok) {
-      out += static_cast<char>(b);
-      ++i;
-      continue;
-    }
-    out += cp <= 0xFF ? static_cast<char>(cp) : '?';
+  for (size_t i = 0; i < valid.size();) {
+    const auto b = static_cast<unsigned char>(valid[i]);
+    const size_t n = b < 0x80 ? 1 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : 4;  // well-formed: a lead byte
+    if (n == 1) out += static_cast<char>(b);
+    else if (n == 2 && b <= 0xC3) out += static_cast<char>((b & 0x1F) << 6 | (static_cast<unsigned char>(valid[i + 1]) & 0x3F));
+    else out += '?';
     i += n;
   }
   return out;
@@ -301,6 +288,7 @@ class Writer {
   /// `s` shortened with "..." to at most `maxWidth` pixels.
   std::string fit(const FontKey& k, std::string s, int maxWidth) {
     if (width(k, s) <= maxWidth) return s;
+    s.resize(std::min(s.size(), static_cast<size_t>(std::max(maxWidth, 0))));  // a glyph is 1 px or wider
     while (!s.empty() && width(k, s + "...") > maxWidth) s.pop_back();
     return s + "...";
   }

@@ -233,6 +233,20 @@ TEST_CASE("pictures: the legend lists only what is drawn", "[grade][pictures]") 
     PictureInput r;
     r.regions = {{PictureRegion::Avoid, circle(300, 300, 30), "caf\xC3\xA9"}};
     CHECK(legendEntries(r) == Entries{"keep out: caf\xC3\xA9"});
+    r.regions[0].label = "caf\xE9";  // Latin-1 from a Windows file
+    CHECK(legendEntries(r) == Entries{"keep out: caf\xC3\xA9"});
+    r.regions[0].label = "5 \xE2\x82\xAC";  // beyond Latin-1: the fonts have no euro sign
+    CHECK(legendEntries(r) == Entries{"keep out: 5 ?"});
+  }
+  SECTION("a long label is shortened") {
+    PictureInput r;
+    r.regions = {{PictureRegion::Goal, circle(300, 300, 30), std::string(5000, 'x')}};
+    Entries e = legendEntries(r);
+    REQUIRE(e.size() == 1);
+    CHECK(e[0].rfind("reach: xxx", 0) == 0);
+    CHECK(e[0].size() < 100);
+    CHECK(e[0].substr(e[0].size() - 3) == "...");
+    CHECK(feedbackPicture(r).height == kPictureHeight);
   }
 }
 
