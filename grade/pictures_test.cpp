@@ -348,6 +348,16 @@ TEST_CASE("pictures: region labels and the title are written in the arena", "[gr
   CHECK(differences(a, t, 0, 0, 200, 40) > 50);  // at the top left when nothing is there
   CHECK(differences(a, t, 0, 41, 799, kPictureHeight - 1) == 0);
   CHECK(t.pixel(5, 5) == kWhite);
+
+  // Not over what the program printed at the top left: the next corner free of drawing.
+  titled.background = solid(kWhite);
+  for (int y = 0; y < 15; ++y)
+    for (int x = 0; x < 120; ++x) titled.background->set(x, y, 0x000000);
+  PictureInput untitled = titled;
+  untitled.title.clear();
+  RgbImage printed = feedbackPicture(titled), bare = feedbackPicture(untitled);
+  CHECK(differences(printed, bare, 0, 0, 399, 99) == 0);
+  CHECK(differences(printed, bare, 600, 0, 799, 40) > 50);
 }
 
 TEST_CASE("pictures: nothing of the arena spills into the legend", "[grade][pictures]") {
