@@ -4,6 +4,7 @@
 // picture (--student) never shows the solution's drawing, only the student's own work and what
 // the assignment asked for (waypoints, regions to reach or avoid).
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace rb::grade {
 
 /// A region the assignment names, drawn with its label.
 struct PictureRegion {
-  enum Role { Goal, Avoid } role = Goal;  ///< ends-in / touch (green) or avoid (red)
+  enum Role { Goal, Avoid } role = Goal;  ///< ends-in / touch (green) or avoid (orange, hatched)
   Region region;
   std::string label;  ///< the check's name
 };
@@ -36,11 +37,28 @@ struct PictureInput {
   std::string title;                          ///< the program's name, written at the top
 };
 
-/// An 800 x 600 picture and a legend strip below it naming every colour used: the reference
-/// trail as a wide light green band ("the solution's trail"), the student's trail as a thin red
-/// line on top ("your trail"), the robots' final positions as circles in the same colours,
-/// waypoints as numbered blue markers, regions outlined (goals green, areas to avoid red).
+/// The picture's size: the 800 x 600 arena (the screen) and a legend strip below it.
+constexpr int kPictureWidth = 800;
+constexpr int kArenaHeight = 600;
+constexpr int kLegendHeight = 64;  ///< two rows of legend entries
+constexpr int kPictureHeight = kArenaHeight + kLegendHeight;
+
+/// The arena, and a legend strip below it naming everything drawn: the reference trail as a
+/// wide light green band ("the solution's trail"), the student's trail as a thin red line on
+/// top ("your trail"), the robots' final positions as circles in the same colours, waypoints as
+/// numbered blue markers, regions outlined (goals green, areas to avoid orange and hatched)
+/// with their labels written in the arena. The title, when given, is at the top left (or at
+/// another corner when the screen has something drawn there and that corner has not). Text is
+/// drawn with the screen's embedded fonts (Liberation Sans), labels placed where they hide the
+/// least of the trails.
 render::RgbImage feedbackPicture(const PictureInput& input);
+
+/// The legend's entries, in order, as feedbackPicture writes them: one for each kind of thing
+/// the picture draws, none for what it does not ("your trail", "where your robot ended", "the
+/// solution's trail", "where the solution's robot ended", "waypoints, in order", "reach: <label>"
+/// / "keep out: <label>"). Regions without a label, or too many to fit the strip with theirs,
+/// are named by their role only ("goal region(s)", "area(s) to avoid"). Texts are UTF-8.
+std::vector<std::string> legendEntries(const PictureInput& input);
 
 /// Colours of the picture (0xRRGGBB), for the documentation and tests.
 constexpr uint32_t kReferenceColour = 0x8FD98F;
