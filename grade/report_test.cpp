@@ -100,7 +100,7 @@ TEST_CASE("the feedback picture draws the student's trail over the solution's", 
   in.student = {{{100, 110}, {200, 110}}};
   rb::render::RgbImage img = feedbackPicture(in);
   CHECK(img.width == 800);
-  CHECK(img.height == 600);
+  CHECK(img.height == kPictureHeight);
   CHECK(img.pixel(150, 100) == kReferenceColour);
   CHECK(img.pixel(150, 110) == kStudentColour);
   CHECK(img.pixel(150, 300) == 0xFFFFFF);

@@ -196,7 +196,7 @@ def case_pictures(env):
     expect(code == 1, f"exit {code}")
     for name, p in programs.items():
         expect(os.path.isfile(p.get("picture", "")), f"{name}: no picture", p)
-        expect(png_size(p["picture"]) == (800, 600), f"{name}: picture size")
+        expect(png_size(p["picture"]) == (800, 664), f"{name}: picture size (the arena and the legend below it)")
     expect(len(os.listdir(pics)) == 6, "one picture per program", os.listdir(pics))
 
 
