@@ -51,7 +51,7 @@ std::string firstError(const std::string& file) {
 }
 
 /// One feedback file per program for its student: DIR/NAME.txt.
-bool writeFeedback(const std::string& dir, const grade::ClassResult& result) {
+bool writeFeedback(const std::string& dir, const grade::ClassResult& result, const std::vector<std::string>& paths) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) {
@@ -60,12 +60,8 @@ bool writeFeedback(const std::string& dir, const grade::ClassResult& result) {
   }
   bool ok = true;
   for (const grade::ProgramResult& p : result.programs) {
-    std::string name = p.program;
-    while (name.rfind("./", 0) == 0 || name.rfind("../", 0) == 0) name = name.substr(name.find('/') + 1);
-    while (!name.empty() && name[0] == '/') name.erase(0, 1);
-    std::replace(name.begin(), name.end(), '/', '_');
     std::string text = grade::studentFeedback(p, result), error;
-    std::string path = (std::filesystem::path(dir) / (name + ".txt")).string();
+    std::string path = (std::filesystem::path(dir) / (grade::reportName(p.program, paths) + ".txt")).string();
     if (!render::writeFileBytes(path, text.data(), text.size(), error)) {
       std::fprintf(stderr, "rb test: %s\n", error.c_str());
       ok = false;
@@ -139,7 +135,7 @@ int executeTest(const TestOptions& opts) {
   }
   result.studentView = opts.student;
   bool written = true;
-  if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result) && written;
+  if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result, g.paths) && written;
   if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
   if (!opts.csv.empty()) written = writeReport(opts.csv, grade::csvReport(result)) && written;
   std::string out = opts.format == "json" ? grade::jsonReport(result) : grade::textReport(result, !opts.quiet);

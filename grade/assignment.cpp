@@ -160,7 +160,7 @@ uint32_t colour(const toml::node& node, std::string& name) {
     for (const Builtin& b : table.rows())
       if (b.kind == BuiltinKind::Constant && b.group == "colour") names.push_back(b.name);
     std::string message = "unknown colour " + inQuotes(*s);
-    std::string near = closestMatch(*s, names, false);
+    std::string near = closestMatch(*s, names, true);
     if (!near.empty()) message += "; did you mean " + inQuotes(near) + "?";
     throw Bad{message + " (a colour is a name like \"red\", a number, [r, g, b] or \"#RRGGBB\")", node.source()};
   }
@@ -713,17 +713,22 @@ std::optional<Assignment> loadAssignment(const std::string& path, std::string& e
       a.checks.push_back(c);
     }
     // Unnamed checks of one kind are told apart by a number: "ends-in", "ends-in 2".
-    for (size_t i = 0; i < a.checks.size(); ++i) {
-      Check& c = a.checks[i];
-      if (c.named) continue;
-      std::string base = c.name;
-      for (int k = 2;; ++k) {
-        bool taken = false;
-        for (size_t j = 0; j < a.checks.size(); ++j) taken = taken || (j != i && a.checks[j].name == c.name && (j < i || a.checks[j].named));
-        if (!taken) break;
-        c.name = base + " " + std::to_string(k);
+    auto number = [](std::vector<Check>& list) {
+      for (size_t i = 0; i < list.size(); ++i) {
+        Check& c = list[i];
+        if (c.named) continue;
+        std::string base = c.name;
+        for (int k = 2;; ++k) {
+          bool taken = false;
+          for (size_t j = 0; j < list.size(); ++j)
+            taken = taken || (j != i && list[j].name == c.name && (j < i || list[j].named));
+          if (!taken) break;
+          c.name = base + " " + std::to_string(k);
+        }
       }
-    }
+    };
+    number(a.checks);
+    for (Check& c : a.checks) number(c.of);
     contradictions(a.checks);
     size_t posts = 0;
     for (Check& c : a.checks) {

@@ -361,6 +361,18 @@ bool Grader::findClass() {
         any = true;
       }
     }
+    if (!any) {
+      // Saved under another name by an editor (square.bas.txt for square.bas): that file is
+      // the student's, not graded, and says why.
+      for (ProgramResult& r : extra_) {
+        fs::path cp = fs::weakly_canonical(r.program, ec);
+        std::string stem = full.string() + ".";
+        if (r.student.empty() && cp.string().rfind(stem, 0) == 0) {
+          r.student = e.student;
+          any = true;
+        }
+      }
+    }
     if (any) {
       ++present;
     } else if (opts_.shard == 1) {
@@ -624,10 +636,7 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
         for (const Region& g : c->regions)
           in.regions.push_back({c->kind == Check::Avoid ? PictureRegion::Avoid : PictureRegion::Goal, g, c->name});
     }
-  std::string name = r.program;
-  while (name.rfind("./", 0) == 0 || name.rfind("../", 0) == 0) name = name.substr(name.find('/') + 1);
-  while (!name.empty() && name[0] == '/') name.erase(0, 1);
-  std::replace(name.begin(), name.end(), '/', '_');
+  std::string name = reportName(r.program, opts_.paths);
   fs::path out = fs::path(opts_.picturesDir) / fs::path(name).replace_extension(".png");
   std::string error;
   if (render::writePngFile(out.string(), feedbackPicture(in), error)) r.picture = out.string();
@@ -803,6 +812,22 @@ std::vector<RosterEntry> readRoster(const std::string& path) {
   }
   if (out.empty()) throw std::runtime_error(path + ": the roster lists no student");
   return out;
+}
+
+std::string reportName(const std::string& program, const std::vector<std::string>& paths) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(program, ec);
+  std::string name;
+  for (const std::string& root : paths) {
+    if (!fs::is_directory(root, ec)) continue;
+    fs::path r = fs::weakly_canonical(root, ec);
+    fs::path rel = p.lexically_relative(r);
+    if (!rel.empty() && rel.native().rfind("..", 0) != 0 && (name.empty() || rel.string().size() < name.size()))
+      name = rel.string();
+  }
+  if (name.empty()) name = p.filename().string();
+  std::replace(name.begin(), name.end(), '/', '_');
+  return name;
 }
 
 ClassResult gradeClass(const GradeOptions& options) { return Grader(options).run(); }

@@ -104,6 +104,11 @@ struct RosterEntry {
 };
 std::vector<RosterEntry> readRoster(const std::string& path);
 
+/// A file name for what rb test writes about a program (its picture, its feedback): the
+/// program's path below the folder given that holds it, '/' turned into '_' ("ana_square.bas"
+/// for class/ana/square.bas when class/ was given), without the extension's replacement.
+std::string reportName(const std::string& program, const std::vector<std::string>& paths);
+
 /// The programs of shard K of N (1-based): every N-th program starting with the K-th.
 std::vector<std::string> shardOf(const std::vector<std::string>& programs, int shard, int shards);
 

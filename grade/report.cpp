@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "text.h"
@@ -154,12 +155,19 @@ bool failed(const ProgramResult& p) { return p.verdict == "fail" || p.verdict ==
 std::string details(const ProgramResult& p, bool student, bool withErrors = true) {
   std::string out;
   if (!p.gate.empty()) {
-    out += "    " + p.gate + ": no check counts\n";
+    out += "    " + p.gate + " (no check counts)\n";
   } else if (p.checks.empty()) {
     out += "    " + p.reason + "\n";
   }
   bool hiddenSaid = false;
   std::vector<CheckResult> list;
+  // Messages that several checks fail with (a program that does not compile) are said once,
+  // without the hints: the checks could not look at anything.
+  std::map<std::string, int> repeats;
+  for (const CheckResult& c : p.checks)
+    if (!c.passed) ++repeats[c.message];
+  std::string voidedBy;
+  std::vector<std::string> voided;
   for (const CheckResult& raw : p.checks) {
     if (raw.passed && raw.note.empty()) continue;
     if (!p.gate.empty()) break;
@@ -168,20 +176,31 @@ std::string details(const ProgramResult& p, bool student, bool withErrors = true
       if (hiddenSaid) continue;
       hiddenSaid = true;
     }
-    // Checks that fail for the same reason (a program that does not compile) are said once.
-    if (!list.empty() && !c.passed && !list.back().passed && list.back().message == c.message &&
-        c.hint.empty() && list.back().hint.empty() && c.feedback.empty() && c.note.empty() && list.back().note.empty()) {
+    if (c.passed) {  // passed, not counted: one line for them all
+      voidedBy = c.note;
+      voided.push_back(c.name);
+      continue;
+    }
+    bool shared = repeats[c.message] > 1;
+    if (shared) c.hint.clear();
+    if (shared && !list.empty() && !list.back().passed && list.back().message == c.message && c.feedback.empty() &&
+        c.note.empty() && list.back().note.empty()) {
       list.back().name += ", " + c.name;
       continue;
     }
     list.push_back(c);
   }
   for (const CheckResult& c : list) {
-    std::string text = c.passed ? c.name + ": passed, " + c.note : c.name + ": " + c.message;
-    if (!c.passed && !c.note.empty()) text += " (" + c.note + ")";
+    std::string text = c.name + ": " + c.message;
+    if (!c.note.empty()) text += " (" + c.note + ")";
     out += cleanUtf8(indent(text, "    "), false) + "\n";
     for (const std::string& f : c.feedback) out += cleanUtf8(indent(f, "      "), false) + "\n";
-    if (!c.passed && !c.hint.empty()) out += cleanUtf8(indent("hint: " + c.hint, "      "), false) + "\n";
+    if (!c.hint.empty()) out += cleanUtf8(indent("hint: " + c.hint, "      "), false) + "\n";
+  }
+  if (!voided.empty()) {
+    std::string names;
+    for (const std::string& n : voided) names += (names.empty() ? "" : ", ") + n;
+    out += cleanUtf8(indent("passed, " + voidedBy + ": " + names, "    "), false) + "\n";
   }
   if (outputCheckFailed(p) && !p.output.empty()) {
     out += p.inputs.empty() ? "    output:\n" : "    output (> marks a line where input showed its prompt and read [text]):\n";

@@ -309,6 +309,228 @@ def case_trace(env):
     expect(rejected["status"] == "rejected" and rejected["errors"][0]["line"] == 7, "a rejected program's end", rejected)
 
 
+YARD = os.path.join(HERE, "yard")
+
+
+def yard_grades(env, *args):
+    r = env.rb_run("test", "--format", "json", "-j", "2", "-a", os.path.join(YARD, "assignment.toml"), *args,
+                   os.path.join(YARD, "class"))
+    try:
+        doc = json.loads(r.stdout)
+    except json.JSONDecodeError:
+        raise Failure(f"rb test printed no JSON (exit {r.returncode})\n{r.stdout}\n{r.stderr}")
+    return r, doc, {os.path.relpath(p["program"], YARD) if os.path.isabs(p["program"]) or p["program"].startswith(YARD)
+                    else p["program"]: p for p in doc["programs"]}
+
+
+def case_yard(env):
+    # The golden class: every verdict, grade and reason as expected.csv gives it.
+    r, doc, by = yard_grades(env)
+    expect(r.returncode == 1, f"exit {r.returncode}", r.stderr)
+    with open(os.path.join(YARD, "expected.csv"), newline="") as f:
+        rows = list(csv.reader(f))[1:]
+    expect(sorted(by) == sorted(row[0] for row in rows), "the grade book lists every file and student", sorted(by))
+    for program, student, result, points, *why in rows:
+        why = ",".join(why)
+        p = by[program]
+        expect((p.get("student"), p["result"], p["points"]) == (student, result, float(points)),
+               f"{program}: {p.get('student')}, {p['result']}, {p['points']}; expected {student}, {result}, {points}",
+               p["reason"])
+        expect(re.search(why, p["reason"]), f"{program}: reason {p['reason']!r} does not match {why!r}")
+    expect(doc["summary"]["missing"] == 1 and doc["summary"]["programs"] == 12, "summary", doc["summary"])
+    # Fair verdicts: nothing counts when the required check fails; `after` leaves a check unchecked.
+    big = {c["name"]: c for c in by["class/big.bas"]["checks"]}
+    expect(big["check"]["passed"] and big["check"]["earned"] == 0 and "required" in big["check"]["note"], "voided", big)
+    ccw = {c["name"]: c for c in by["class/ccw.bas"]["checks"]}
+    expect(not ccw["solution-trail"]["checked"] and ccw["solution-trail"]["message"] ==
+           'not checked: needs "corners", which did not pass', "after", ccw["solution-trail"])
+    expect(ccw["facing up"]["hidden"] and "facing 90 degrees" in ccw["facing up"]["message"], "hidden, teacher", ccw)
+    detour = {c["name"]: c for c in by["class/detour.bas"]["checks"]}
+    expect(detour["short drive"]["earned"] == 1 and detour["short drive"]["points"] == 2, "tiers", detour)
+    near = {c["name"]: c for c in by["class/near_miss.bas"]["checks"]}
+    expect(near["corners"]["message"] == "the robot misses point 3 (520, 180) after point 2 by 1 px: it comes within "
+           "4 px, 3 px allowed", "a near miss says by how much", near["corners"])
+    big_avoid = big["flower bed"]["message"]
+    expect(big_avoid.startswith("the robot enters the rectangle (580, 120)-(700, 330) at ") and big_avoid.endswith(
+        "(line 7)"), "avoid names where and the line", big_avoid)
+    expect("crash" not in by["class/no_place.bas"]["reason"], "an unplaced robot did not crash",
+           by["class/no_place.bas"]["reason"])
+    # The prompt's wording does not matter; the transcript keeps it, marked.
+    ben = by["class/prompt.bas"]
+    expect(ben["output"].startswith("Number of sides please: 4\nsides: 4\n") and ben["inputs"][0]["start"] == 0,
+           "transcript", ben)
+
+    # The students' view: the hidden check says only that it failed, nowhere its details.
+    r, sdoc, sby = yard_grades(env, "--student", "--feedback", env.path("feedback"), "--pictures",
+                               env.path("pictures"))
+    text = json.dumps(sdoc)
+    expect("facing 90 degrees" not in text and "a hidden check failed" in text, "student JSON", text[:2000])
+    with open(env.path("feedback/ccw.bas.txt")) as f:
+        feedback = f.read()
+    expect("a hidden check failed" in feedback and "facing 90" not in feedback and "heading" not in feedback and "7 of 12 points" in feedback and
+           "hint: Start at 400, 300" in feedback and "drawn the other way round?" in feedback, "feedback file", feedback)
+    pics = sorted(os.listdir(env.path("pictures")))
+    expect(len(pics) == 11 and all(png_size(os.path.join(env.path("pictures"), p)) == (800, 664) for p in pics),
+           "one picture per program that ran", pics)
+    t = env.rb_run("test", "--student", "-a", os.path.join(YARD, "assignment.toml"), os.path.join(YARD, "class"))
+    expect("facing 90" not in t.stdout and "a hidden check failed" in t.stdout, "student text report", t.stdout)
+
+
+def write_goal_class(env):
+    """A small assignment with a world, teacher checks, colours, groups and limits."""
+    # A river the robot's sensors do not see (an invisible colour) but that it must keep out of.
+    env.write("world.bas", "Rectangle 300, 250, 340, 500, BLUE, BLUE\nrInvisible BLUE\nrLocate 100, 300, 90\n")
+    env.write("goal.bas", 'input first\nprint "first line: " + first\n'
+              'if rGPSX() < 600 then print "fail: the robot stops at x = " + rGPSX() + ", short of the finish"\n'
+              'print "well driven"\n')
+    env.write("solution.bas", 'print "go"\nrPen DOWN\nrTurn -90\nrForward 150\nrTurn 90\n'
+              'rForward 600\nrTurn 90\nrForward 150\n')
+    return env.write("goals.toml", """solution = "solution.bas"
+world = "world.bas"
+[[check]]
+name = "river"
+kind = "avoid"
+colour = "blue"
+hint = "Drive round the river: it is blue."
+[[check]]
+name = "lake"
+kind = "avoid"
+polygon = [[400, 400], [500, 400], [450, 480]]
+[[check]]
+name = "finish"
+kind = "touch"
+rect = [680, 250, 760, 350]
+[[check]]
+name = "either end"
+kind = "any-of"
+points = 2
+[[check.of]]
+kind = "ends-in"
+circle = [700, 300, 30]
+[[check.of]]
+kind = "ends-in"
+rect = [0, 0, 50, 50]
+[[check]]
+name = "goal"
+post = "goal.bas"
+after = "finish"
+[[check]]
+name = "tidy"
+kind = "no-error"
+max-statements = 12
+""")
+
+
+def case_goals(env):
+    a = write_goal_class(env)
+    good = env.write("good.bas", 'print "go"\nrTurn -90\nrForward 150\nrTurn 90\nrForward 600\nrTurn 90\nrForward 150\n')
+    wet = env.write("wet.bas", 'print "go"\nrForward 200\n')
+    slow = env.write("slow.bas", 'print "go"\nrTurn -90\nrForward 150\nrTurn 90\n'
+                     'for i = 1 to 60\n  rForward 10\nnext\nrTurn 90\nrForward 150\n')
+    r = env.rb_run("test", "--format", "json", "-a", a, good, wet, slow)
+    doc = json.loads(r.stdout)
+    by = {os.path.basename(p["program"]): {c["name"]: c for c in p["checks"]} for p in doc["programs"]}
+    g = by["good.bas"]
+    expect(all(c["passed"] for c in g.values()), "good.bas passes everything", g)
+    expect(g["goal"]["message"] == "first line: go" and g["goal"]["feedback"] == ["well driven"],
+           "the post program read the student's output and its prints are feedback", g["goal"])
+    expect(g["either end"]["message"].startswith("ends-in: "), "any-of names the check that passed", g["either end"])
+    w = by["wet.bas"]
+    expect(w["river"]["message"].startswith("the robot touches blue at (") and w["river"]["message"].endswith("(line 2)"),
+           "the colour it touched, where and the line", w["river"])
+    expect(w["river"]["hint"] == "Drive round the river: it is blue.", "hint", w["river"])
+    expect(w["finish"]["message"].startswith("the robot never reaches the rectangle (680, 250)-(760, 350): it comes within"),
+           "touch says how close", w["finish"])
+    expect(not w["goal"]["checked"], "after: the post check waits for finish", w["goal"])
+    expect(w["either end"]["message"].startswith("none of 2 passes: "), "any-of lists the misses", w["either end"])
+    sl = by["slow.bas"]
+    expect(not sl["tidy"]["passed"] and sl["tidy"]["message"] ==
+           "it works, but takes 127 statements: at most 12 allowed", "max-statements", sl["tidy"])
+    # The post program's fail: line fails the check with its message.
+    short = env.write("short.bas", 'print "go"\nrTurn -90\nrForward 150\nrTurn 90\nrForward 400\n')
+    env.write("goals2.toml", open(a).read().replace('after = "finish"\n', ""))
+    r = env.rb_run("test", "--format", "json", "-a", env.path("goals2.toml"), short)
+    checks = {c["name"]: c for c in json.loads(r.stdout)["programs"][0]["checks"]}
+    expect(checks["goal"]["message"] == "the robot stops at x = 500, short of the finish", "fail:", checks["goal"])
+
+
+def case_class_files(env):
+    # Every file of a class folder is accounted for; hidden ones (.git) are not the class's.
+    cls = env.path("class")
+    os.makedirs(os.path.join(cls, ".git"))
+    env.write("class/.git/config", "x")
+    env.write("class/a.bas", 'rLocate 400, 300\nrForward 10\n')
+    env.write("class/b.bas.txt", 'rLocate 400, 300\nrForward 10\n')
+    env.write("class/notes.docx", "x")
+    a = env.write("a.toml", '[[check]]\nkind = "no-error"\n')
+    r = env.rb_run("test", "--format", "json", "-a", a, cls)
+    doc = json.loads(r.stdout)
+    by = {os.path.basename(p["program"]): p for p in doc["programs"]}
+    expect(sorted(by) == ["a.bas", "b.bas.txt", "notes.docx"], "every file, no .git", sorted(by))
+    expect(by["b.bas.txt"]["result"] == "fail" and "saved as .bas.txt?" in by["b.bas.txt"]["reason"], "txt", by)
+    expect(by["notes.docx"]["reason"] == "not graded: not a .bas file", "docx", by["notes.docx"])
+    expect(r.returncode == 1, f"not graded files fail: exit {r.returncode}")
+    r = env.rb_run("test", "--format", "json", "--include", "*.bas.txt", "-a", a, cls)
+    by = {os.path.basename(p["program"]): p for p in json.loads(r.stdout)["programs"]}
+    expect(by["b.bas.txt"]["result"] == "pass", "--include grades it", by["b.bas.txt"])
+    # Bad input: exit 64 with the file and line.
+    r = env.rb_run("test", "--include", "*.py", "-a", a, cls)
+    expect(r.returncode == 64 and "--include '*.py' matches no file" in r.stderr, f"glob: exit {r.returncode}", r.stderr)
+    env.write("roster.csv", "student,file\nAna,class/a.bas\nBen\n")
+    r = env.rb_run("test", "--roster", env.path("roster.csv"), "-a", a, cls)
+    expect(r.returncode == 64 and "roster.csv:3: a roster row is a student and a file" in r.stderr, "row", r.stderr)
+    env.write("roster.csv", "Ana,elsewhere/a.bas\nBen,elsewhere/b.bas\n")
+    r = env.rb_run("test", "--roster", env.path("roster.csv"), "-a", a, cls)
+    expect(r.returncode == 64 and "the roster names no file or folder that is being graded" in r.stderr, "none", r.stderr)
+    env.write("r.toml", 'roster = "nope.csv"\n')
+    r = env.rb_run("test", "-a", env.path("r.toml"), cls)
+    expect(r.returncode == 64 and "r.toml:1:10: roster: no such file" in r.stderr, "missing roster", r.stderr)
+
+
+def case_bad_goals(env):
+    # Checks that contradict each other, teacher programs with errors: exit 64, file:line:col.
+    write_goal_class(env)
+    cases = [
+        ('[[check]]\nkind = "avoid"\ncolour = "red"\n[[check]]\nkind = "touch"\ncolour = "Red"\n',
+         ":4:1: checks contradict each other: 'touch' must touch red, which 'avoid' must avoid"),
+        ('[[check]]\nkind = "avoid"\nrect = [0, 0, 800, 600]\n[[check]]\nkind = "ends-in"\ncircle = [400, 300, 5]\n',
+         ":4:1: checks contradict each other: 'ends-in'"),
+        ('[[check]]\nname = "a"\nkind = "no-error"\nafter = "b"\n[[check]]\nname = "b"\nkind = "no-crash"\n',
+         ":1:1: after = 'b' names a check that comes later"),
+        ('[[check]]\nname = "x"\nkind = "no-error"\n[[check]]\nname = "x"\nkind = "no-crash"\n',
+         ":4:1: two checks are named 'x'"),
+        ('[[check]]\nkind = "efficiency"\nmeasure = "moves"\ntiers = [[10, 1], [20, 5]]\n',
+         ":4:9: tiers contradict each other"),
+        ('[[check]]\nkind = "avoid"\ncolour = "gren"\n', ":3:10: unknown colour 'gren'; did you mean 'Green'?"),
+        ('world = "broken.bas"\n', "broken.bas:2:1: "),
+        ('[[check]]\npost = "nope.bas"\n', ":2:8: post: no such file"),
+    ]
+    env.write("broken.bas", "rLocate 1, 2\nrForwad 5\n")
+    for text, message in cases:
+        a = env.write("bad.toml", text)
+        r = env.rb_run("test", "-a", a, env.write("p.bas", "rLocate 400, 300\n"))
+        expect(r.returncode == 64 and message in r.stderr, f"exit {r.returncode}, expected 64 and {message!r}", text,
+               r.stderr)
+
+
+def case_comment_limits(env):
+    # A comment's limit is named as the comment wrote it, with the line; the check's verdict
+    # survives; the error output is shown once.
+    prog = env.write("spin.bas", "// timeout: 1\nwhile 1\nwend\n")
+    r = env.rb_run("test", prog)
+    expect(r.returncode == 1, f"exit {r.returncode}", r.stdout)
+    expect("did not finish: stopped at spin.bas:2:" in r.stdout and "the time limit (// timeout: 1)" in r.stdout and
+           "in the loop of lines 2-3" in r.stdout, "where the limit stopped it", r.stdout)
+    expect("rb check: killed" not in r.stdout, "rb check's verdict survives", r.stdout)
+    expect(r.stdout.count("stopped after 1 seconds") == 1, "the error output once", r.stdout)
+    # Comments may not grant access: only the person running rb test may.
+    prog = env.write("spawn.bas", "// args: --allow-spawn\nprint 1 // expect: 1\n")
+    r = env.rb_run("test", prog)
+    expect(r.returncode == 1 and "only the person running rb test" in r.stdout, "refused", r.stdout)
+    r = env.rb_run("test", "--trust-comments", prog)
+    expect(r.returncode == 0, "granted by the person running rb test", r.stdout)
+
+
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 

@@ -1,0 +1,12 @@
+// Ana: the square with a loop.
+input "How many sides? ", n
+rLocate 400, 300
+rInvisible GREEN
+LineWidth 4
+rPen DOWN
+for i = 1 to n
+  rForward 120
+  rTurn 360 / n
+next
+print "sides: " + n
+print "perimeter: " + n * 120
