@@ -331,8 +331,8 @@ int executeJob(JobOptions opts) {
       if (!opts.screen.empty()) {
         const Machine& m = *run.machine;
         std::string error;
-        rec.screen = grade::writeScreenFile(
-            opts.screen, render::composeImage(m.canvas().pixels(), render::robotView(m), 1), error);
+        rec.screen = grade::writeScreenFile(opts.screen, render::composeRuns(m.canvas().pixels(), render::robotView(m)),
+                                            Canvas::kWidth, Canvas::kHeight, error);
         if (!rec.screen) std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
       }
     }

@@ -134,6 +134,26 @@ std::optional<PixelDifference> compareImages(const render::RgbImage& a, const re
   return d;
 }
 
+std::optional<PixelDifference> compareScreens(const Screen& a, const Screen& b) {
+  if (a.width != b.width || a.height != b.height) return std::nullopt;
+  PixelDifference d;
+  d.total = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);
+  size_t i = 0, j = 0;
+  uint64_t leftA = a.runs.empty() ? 0 : a.runs[0].count, leftB = b.runs.empty() ? 0 : b.runs[0].count;
+  uint64_t covered = 0;
+  while (i < a.runs.size() && j < b.runs.size()) {
+    uint64_t n = std::min(leftA, leftB);
+    if (a.runs[i].rgb != b.runs[j].rgb) d.differing += n;
+    covered += n;
+    leftA -= n;
+    leftB -= n;
+    if (leftA == 0 && ++i < a.runs.size()) leftA = a.runs[i].count;
+    if (leftB == 0 && ++j < b.runs.size()) leftB = b.runs[j].count;
+  }
+  if (covered < d.total) d.differing += d.total - covered;  // what one of them does not cover
+  return d;
+}
+
 std::string unrunnable(const RunOutcome& run) {
   if (run.process.kind != JobOutcome::Exited) return run.processText;
   if (!run.record) {
@@ -404,10 +424,10 @@ Verdict compareTrails(const Polylines& got, const Polylines& want, double tolera
   return {true, "the trail is within " + amount + " of " + whose + ", " + pixels(tolerance) + " px allowed"};
 }
 
-Verdict compareScreens(const std::optional<render::RgbImage>& got, const render::RgbImage& want,
-                       double tolerance, const std::string& whose) {
+Verdict screenVerdict(const std::optional<Screen>& got, const Screen& want, double tolerance,
+                      const std::string& whose) {
   if (!got) return {false, "the final screen was not captured"};
-  std::optional<PixelDifference> d = compareImages(*got, want);
+  std::optional<PixelDifference> d = compareScreens(*got, want);
   if (!d)
     return {false, whose + " is " + std::to_string(want.width) + "x" + std::to_string(want.height) +
                        ", the screen " + std::to_string(got->width) + "x" + std::to_string(got->height)};
@@ -562,9 +582,9 @@ Verdict evaluateKind(const Check& c, size_t index, const References& refs, const
     case Check::Visits: return checkVisits(c, r);
     case Check::Trail: return compareTrails(r.trail, c.reference, c.tolerance, "the reference");
     case Check::Screen: {
-      const std::optional<render::RgbImage>& picture = index < refs.pictures.size() ? refs.pictures[index] : std::nullopt;
+      const std::optional<Screen>& picture = index < refs.pictures.size() ? refs.pictures[index] : std::nullopt;
       if (!picture) return {false, "the reference picture could not be read"};
-      return compareScreens(run.screen, *picture, c.tolerance, baseName(c.picture));
+      return screenVerdict(run.screen, *picture, c.tolerance, baseName(c.picture));
     }
     case Check::SolutionOutput: {
       if (!sol) return {false, "the solution did not run"};
@@ -578,7 +598,7 @@ Verdict evaluateKind(const Check& c, size_t index, const References& refs, const
       return compareTrails(r.trail, sol->record->trail, c.tolerance, "the solution's");
     case Check::SolutionScreen:
       if (!sol || !sol->screen) return {false, "the solution's screen was not captured"};
-      return compareScreens(run.screen, *sol->screen, c.tolerance, "the solution's");
+      return screenVerdict(run.screen, *sol->screen, c.tolerance, "the solution's");
     case Check::Avoid: return checkAvoid(c, r);
     case Check::Touch: return checkTouch(c, r);
     case Check::Post: return checkPost(c, r);

@@ -24,7 +24,7 @@ struct RunOutcome {
   std::string errors;            ///< standard error (at most kOutputCap bytes)
   std::optional<RunRecord> record;
   std::string recordError;       ///< why there is no record
-  std::optional<render::RgbImage> screen;
+  std::optional<Screen> screen;
 };
 
 /// The most output of a run rb test keeps (and compares).
@@ -57,7 +57,7 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
 /// What the assignment's checks compare with, prepared once for the whole class.
 struct References {
   std::vector<RunOutcome> solution;                      ///< one per seed, when needed
-  std::vector<std::optional<render::RgbImage>> pictures; ///< per check: the screen check's PNG
+  std::vector<std::optional<Screen>> pictures;           ///< per check: the screen check's PNG
   LimitNames limits;
   bool aboutRobot = false;  ///< a program that never places or moves the robot earns nothing
 };
@@ -83,6 +83,8 @@ struct PixelDifference {
   double share() const { return total ? static_cast<double>(differing) / static_cast<double>(total) : 0; }
 };
 std::optional<PixelDifference> compareImages(const render::RgbImage& a, const render::RgbImage& b);
+/// The same for two screens as runs, in time proportional to the runs.
+std::optional<PixelDifference> compareScreens(const Screen& a, const Screen& b);
 /// Why a run cannot be graded at all (the process died, nothing ran), or "".
 std::string unrunnable(const RunOutcome& run);
 /// "the robot crashed at prog.bas:12:3 after 418 steps: robot crashed into an obstacle" style,

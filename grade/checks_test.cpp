@@ -190,3 +190,26 @@ TEST_CASE("pixel counts in messages", "[grade][checks]") {
   CHECK(pixels(-0.01) == "0");
   CHECK(pixels(std::numeric_limits<double>::infinity()) == "infinitely");
 }
+
+TEST_CASE("screens as runs compare as their pixels do", "[grade][checks]") {
+  rb::render::RgbImage a;
+  a.width = 40;
+  a.height = 30;
+  a.rgb.assign(40 * 30 * 3, 255);
+  rb::render::RgbImage b = a;
+  for (int x = 5; x < 25; ++x) b.set(x, 7, 0x00FF00);
+  b.set(39, 29, 0x000000);
+  a.set(10, 7, 0x00FF00);  // the same colour in both: not a difference
+  a.set(0, 0, 0xFF0000);
+  Screen sa = screenOf(a), sb = screenOf(b);
+  CHECK(imageOf(sa).rgb == a.rgb);
+  CHECK(imageOf(sb).rgb == b.rgb);
+  std::optional<PixelDifference> runs = compareScreens(sa, sb), pixels = compareImages(a, b);
+  REQUIRE(runs);
+  REQUIRE(pixels);
+  CHECK(runs->differing == pixels->differing);
+  CHECK(runs->differing == 21);
+  CHECK(compareScreens(sa, sa)->differing == 0);
+  sb.width = 20;
+  CHECK_FALSE(compareScreens(sa, sb));
+}

@@ -135,6 +135,7 @@ class Grader {
   std::vector<std::optional<CommentSpec>> specs_;
   std::vector<std::vector<RunOutcome>> runs_;
   std::vector<size_t> pending_;  ///< runs still to come, per program
+  std::optional<render::RgbImage> solutionImage_;  ///< the solution's screen, for pictures
   size_t finished_ = 0, toGrade_ = 0;
 };
 
@@ -175,7 +176,7 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
   t.screen = screen;
   std::string base = temp_ + "/" + std::to_string(taskCount_++);
   t.record = base + ".json";
-  t.screenFile = screen ? base + ".ppm" : "";
+  t.screenFile = screen ? base + ".runs" : "";
   Job& job = t.job;
   job.argv = opts_.childCommand;
   job.argv.insert(job.argv.end(), {"--record", t.record});
@@ -406,11 +407,12 @@ bool Grader::prepare() {
     result_.assignment = true;
     result_.maxPoints = assignment_->maxPoints();
     for (const Check& c : assignment_->checks) {
-      std::optional<render::RgbImage> picture;
+      std::optional<Screen> picture;
       if (c.kind == Check::Screen) {
         std::string error2;
-        picture = render::readPngFile(c.picture, error2);
-        if (!picture) return fatal(66, opts_.assignmentPath + ": " + error2);
+        std::optional<render::RgbImage> png = render::readPngFile(c.picture, error2);
+        if (!png) return fatal(66, opts_.assignmentPath + ": " + error2);
+        picture = screenOf(*png);
       }
       refs_.pictures.push_back(std::move(picture));
     }
@@ -613,14 +615,17 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
   in.student = run.record->trail;
   in.robotRadius = run.record->radius;
   in.studentView = opts_.studentPictures;
-  in.studentScreen = run.screen;
+  if (run.screen) in.studentScreen = imageOf(*run.screen);
   in.title = fs::path(r.program).filename().string() + (r.student.empty() ? "" : " (" + r.student + ")");
   if (run.record->located) in.studentEnd = run.record->pos;
   if (!refs_.solution.empty() && refs_.solution[0].record) {
     const RunRecord& sol = *refs_.solution[0].record;
     in.reference = sol.trail;
     if (sol.located) in.referenceEnd = sol.pos;
-    in.background = refs_.solution[0].screen;
+    if (refs_.solution[0].screen && !opts_.studentPictures) {
+      if (!solutionImage_) solutionImage_ = imageOf(*refs_.solution[0].screen);
+      in.background = solutionImage_;
+    }
   } else if (assignment_) {
     for (const Check* c : allChecks(*assignment_))
       if (c->kind == Check::Trail) {

@@ -135,32 +135,73 @@ Polylines linesFrom(const json& j) {
 
 }  // namespace
 
-bool writeScreenFile(const std::string& path, const render::RgbImage& image, std::string& error) {
-  std::string header = "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
-  std::string bytes = header;
-  bytes.append(reinterpret_cast<const char*>(image.rgb.data()), image.rgb.size());
+bool writeScreenFile(const std::string& path, const std::vector<render::ColourRun>& runs, int width, int height,
+                     std::string& error) {
+  std::string bytes = "RBRUNS1 " + std::to_string(width) + " " + std::to_string(height) + " " +
+                      std::to_string(runs.size()) + "\n";
+  size_t head = bytes.size();
+  bytes.resize(head + runs.size() * 8);
+  for (size_t i = 0; i < runs.size(); ++i)
+    for (int k = 0; k < 4; ++k) {
+      bytes[head + i * 8 + static_cast<size_t>(k)] = static_cast<char>(runs[i].count >> (8 * k));
+      bytes[head + i * 8 + 4 + static_cast<size_t>(k)] = static_cast<char>(runs[i].rgb >> (8 * k));
+    }
   return render::writeFileBytes(path, bytes.data(), bytes.size(), error);
 }
 
-std::optional<render::RgbImage> readScreenFile(const std::string& path, std::string& error) {
+Screen screenOf(const render::RgbImage& image) {
+  Screen s;
+  s.width = image.width;
+  s.height = image.height;
+  size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
+  for (size_t i = 0; i < n;) {
+    uint32_t rgb = image.pixel(static_cast<int>(i % static_cast<size_t>(image.width)),
+                               static_cast<int>(i / static_cast<size_t>(image.width)));
+    const uint8_t* p = image.rgb.data() + i * 3;
+    size_t j = i + 1;
+    while (j < n && p[(j - i) * 3] == p[0] && p[(j - i) * 3 + 1] == p[1] && p[(j - i) * 3 + 2] == p[2]) ++j;
+    s.runs.push_back({static_cast<uint32_t>(j - i), rgb});
+    i = j;
+  }
+  return s;
+}
+
+render::RgbImage imageOf(const Screen& screen) { return render::imageFromRuns(screen.runs, screen.width, screen.height); }
+
+std::optional<Screen> readScreenFile(const std::string& path, std::string& error) {
   std::ifstream in(path, std::ios::binary);
   std::string magic;
-  int width = 0, height = 0, depth = 0;
-  if (!(in >> magic >> width >> height >> depth) || magic != "P6" || depth != 255 || width <= 0 ||
-      height <= 0 || width > 10000 || height > 10000) {
+  long width = 0, height = 0, count = 0;
+  if (!(in >> magic >> width >> height >> count) || magic != "RBRUNS1" || width <= 0 || height <= 0 ||
+      width > 10000 || height > 10000 || count < 0 || count > width * height) {
     error = "cannot read the screen file " + path;
     return std::nullopt;
   }
-  in.get();  // the one blank after the header
-  render::RgbImage image;
-  image.width = width;
-  image.height = height;
-  image.rgb.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
-  if (!in.read(reinterpret_cast<char*>(image.rgb.data()), static_cast<std::streamsize>(image.rgb.size()))) {
+  in.get();  // the line end after the header
+  std::string bytes(static_cast<size_t>(count) * 8, '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) {
     error = "the screen file " + path + " is cut short";
     return std::nullopt;
   }
-  return image;
+  Screen screen;
+  screen.width = static_cast<int>(width);
+  screen.height = static_cast<int>(height);
+  screen.runs.resize(static_cast<size_t>(count));
+  auto word = [&](size_t at) {
+    uint32_t v = 0;
+    for (int k = 0; k < 4; ++k) v |= static_cast<uint32_t>(static_cast<uint8_t>(bytes[at + static_cast<size_t>(k)])) << (8 * k);
+    return v;
+  };
+  uint64_t total = 0;
+  for (size_t i = 0; i < screen.runs.size(); ++i) {
+    screen.runs[i] = {word(i * 8), word(i * 8 + 4)};
+    total += screen.runs[i].count;
+  }
+  if (total != static_cast<uint64_t>(width) * static_cast<uint64_t>(height)) {
+    error = "the screen file " + path + " does not cover the screen";
+    return std::nullopt;
+  }
+  return screen;
 }
 
 std::string recordToJson(const RunRecord& r) {

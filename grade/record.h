@@ -127,9 +127,23 @@ class PathRecorder : public RobotObserver {
   size_t pathPoints_ = 0, trailPoints_ = 0;
 };
 
-/// The final screen travels beside the record as a binary PPM file (P6, 8-bit RGB).
-bool writeScreenFile(const std::string& path, const render::RgbImage& image, std::string& error);
-std::optional<render::RgbImage> readScreenFile(const std::string& path, std::string& error);
+/// A final screen as runs of one colour, row after row: what the checks compare (in time
+/// proportional to the runs, not the pixels) and the pictures decode.
+struct Screen {
+  int width = 0, height = 0;
+  std::vector<render::ColourRun> runs;
+};
+/// The runs of an image (a reference picture).
+Screen screenOf(const render::RgbImage& image);
+/// The image of the runs.
+render::RgbImage imageOf(const Screen& screen);
+
+/// The final screen travels beside the record as runs of one colour (render::composeRuns): a
+/// few kilobytes where the picture is 1.4 MB. The file: "RBRUNS1 W H N\n", then N runs of two
+/// little-endian 32-bit words (count, 0xRRGGBB).
+bool writeScreenFile(const std::string& path, const std::vector<render::ColourRun>& runs, int width, int height,
+                     std::string& error);
+std::optional<Screen> readScreenFile(const std::string& path, std::string& error);
 
 /// The record as one JSON object.
 std::string recordToJson(const RunRecord& record);

@@ -69,6 +69,69 @@ RgbImage composeImage(const Pixels& pixels, const RobotView& robot, int scale) {
   return image;
 }
 
+std::vector<ColourRun> composeRuns(const Pixels& pixels, const RobotView& robot) {
+  std::vector<ColourRun> runs;
+  if (pixels.size() < static_cast<size_t>(kScreenW) * kScreenH) return runs;
+  // The robot's pixels, row by row: they replace the screen's.
+  std::vector<std::pair<int, int>> dots;  // (y, x)
+  const RobotImage shape(robot);
+  if (!shape.empty())
+    shape.rasterize(1, kScreenW, kScreenH, [&](int x, int y) { dots.push_back({y, x}); });
+  std::sort(dots.begin(), dots.end());
+  dots.erase(std::unique(dots.begin(), dots.end()), dots.end());
+  const uint32_t robotRgb = colourToRgb(robot.colour);
+  auto push = [&runs](uint32_t rgb, uint32_t n) {
+    if (!runs.empty() && runs.back().rgb == rgb) runs.back().count += n;
+    else runs.push_back({n, rgb});
+  };
+  size_t d = 0;
+  for (int y = 0; y < kScreenH; ++y) {
+    const Colour* row = pixels.data() + static_cast<size_t>(y) * kScreenW;
+    int x = 0;
+    while (x < kScreenW) {
+      int robotX = d < dots.size() && dots[d].first == y ? dots[d].second : kScreenW;
+      while (x < robotX) {
+        Colour c = row[x];
+        int end = x + 1;
+        while (end < robotX && row[end] == c) ++end;
+        push(colourToRgb(c), static_cast<uint32_t>(end - x));
+        x = end;
+      }
+      if (robotX < kScreenW) {
+        push(robotRgb, 1);
+        x = robotX + 1;
+        ++d;
+      }
+    }
+  }
+  return runs;
+}
+
+RgbImage imageFromRuns(const std::vector<ColourRun>& runs, int width, int height) {
+  RgbImage image;
+  image.width = width;
+  image.height = height;
+  image.rgb.assign(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0);
+  uint8_t* p = image.rgb.data();
+  uint8_t* end = p + image.rgb.size();
+  for (const ColourRun& r : runs) {
+    const uint8_t b0 = static_cast<uint8_t>(r.rgb >> 16), b1 = static_cast<uint8_t>(r.rgb >> 8),
+                  b2 = static_cast<uint8_t>(r.rgb);
+    size_t n = std::min<size_t>(r.count, static_cast<size_t>(end - p) / 3);
+    if (b0 == b1 && b1 == b2) {  // grey, white, black: one memset
+      std::memset(p, b0, n * 3);
+      p += n * 3;
+      continue;
+    }
+    for (size_t i = 0; i < n; ++i) {
+      *p++ = b0;
+      *p++ = b1;
+      *p++ = b2;
+    }
+  }
+  return image;
+}
+
 std::vector<uint8_t> encodePng(const RgbImage& image) {
   png_image png;
   std::memset(&png, 0, sizeof png);

@@ -200,4 +200,21 @@ TEST_CASE("png: write and read errors name the file", "[render][png]") {
 }
 
 }  // namespace
+TEST_CASE("png: the screen as runs of one colour is composeImage's picture", "[render][png]") {
+  for (const char* program : {"rLocate 400,300\nrInvisible GREEN\nLineWidth 4\nrPen DOWN\nfor n = 1 to 4\n"
+                              "rForward 120\nrTurn 90\nnext\n",
+                              "rLocate 20, 20, 45\nCircle 300, 300, 500, 400, RED, BLUE\nprint \"hello\"\n",
+                              "rLocate 780, 580, 200, 20, RED\n", "print 1\n"}) {
+    auto run = test::runForPicture(program);
+    RgbImage image = composeImage(run->canvas().pixels(), run->robot(), 1);
+    std::vector<ColourRun> runs = composeRuns(run->canvas().pixels(), run->robot());
+    size_t total = 0;
+    for (const ColourRun& r : runs) total += r.count;
+    CHECK(total == 800u * 600u);
+    RgbImage back = imageFromRuns(runs, 800, 600);
+    CHECK(back.rgb == image.rgb);
+  }
+}
+
 }  // namespace rb::render
+
