@@ -39,7 +39,8 @@ constexpr size_t kMaxOccurrences = 16;
 constexpr size_t kMaxMatches = 200000;
 
 // What a normalised token is: a token kind other than the four below is its own code (1 + the
-// kind); names, numbers and strings are one code each; a built-in is its row in the table.
+// kind); names, numbers (with built-in constants) and strings are one code each; a built-in
+// command or function is its row in the table.
 constexpr uint32_t kName = 300;
 constexpr uint32_t kNumber = 301;
 constexpr uint32_t kString = 302;
@@ -53,8 +54,8 @@ struct NormToken {
 /// One program read and normalised.
 struct Lexed {
   std::vector<NormToken> tokens;
-  std::string skip;               ///< why the program cannot be compared; empty when it can
-  std::vector<std::string> cuts;  ///< what of it was left out
+  std::string skip;                    ///< why the program cannot be compared; empty when it can
+  std::vector<std::string> cuts;       ///< what of it was left out
   std::unique_ptr<SourceSet> sources;  ///< its text, when asked for
 };
 
@@ -116,11 +117,12 @@ bool cutLongLines(std::string& text) {
 }
 
 /// The code of a word (an Ident token): a built-in where the language lets a built-in of that
-/// kind stand, else a name. Built-ins are looked up without regard to case. As rb reads a line:
-/// a statement starts the line, or follows a label, `then` or `else`; a command is the first
-/// word of a statement, a function is called with '(' and a constant is a value. So a label,
-/// the word after gosub, goto, sub and call, a word assigned to (`length = 90`) or used as an
-/// array, and a function's name without '(' are names, whatever they are spelled like.
+/// kind stand (a constant is a number), else a name. Built-ins are looked up without regard to
+/// case. As rb reads a line: a statement starts the line, or follows a label, `then` or `else`;
+/// a command is the first word of a statement, a function is called with '(' and a constant is
+/// a value. So a label, the word after gosub, goto, sub and call, a word assigned to
+/// (`length = 90`) or used as an array, and a function's name without '(' are names, whatever
+/// they are spelled like.
 uint32_t wordCode(const std::vector<Token>& line, size_t i, const BuiltinTable& builtins) {
   auto kindAt = [&](size_t j) { return j < line.size() ? line[j].kind : Tok::Newline; };
   Tok before = i > 0 ? line[i - 1].kind : Tok::Newline;
@@ -132,9 +134,14 @@ uint32_t wordCode(const std::vector<Token>& line, size_t i, const BuiltinTable& 
                    (i == 2 && line[0].kind == Tok::Ident && line[1].kind == Tok::Colon);
   if (statement) {
     switch (after) {
-      case Tok::Assign: case Tok::PlusAssign: case Tok::MinusAssign: case Tok::StarAssign:
-      case Tok::SlashAssign: case Tok::PlusPlus: case Tok::MinusMinus: case Tok::LBracket:
-        return kName;  // a variable or an array receives a value
+      case Tok::Assign:
+      case Tok::PlusAssign:
+      case Tok::MinusAssign:
+      case Tok::StarAssign:
+      case Tok::SlashAssign:
+      case Tok::PlusPlus:
+      case Tok::MinusMinus:
+      case Tok::LBracket: return kName;  // a variable or an array receives a value
       default: break;
     }
   }
@@ -142,11 +149,13 @@ uint32_t wordCode(const std::vector<Token>& line, size_t i, const BuiltinTable& 
   const Builtin* b = nullptr;
   if (statement) b = builtins.find(word, BuiltinKind::Command);
   if (!b && after == Tok::LParen) b = builtins.find(word, BuiltinKind::Function);
-  if (!b) b = builtins.find(word, BuiltinKind::Constant);
-  return b ? kBuiltinBase + builtins.indexOf(*b) : kName;
+  if (b) return kBuiltinBase + builtins.indexOf(*b);
+  // A constant is a number with a name (GREEN is 2): changing it is changing a number.
+  return builtins.find(word, BuiltinKind::Constant) ? kNumber : kName;
 }
 
-void normaliseLine(const std::vector<Token>& line, const BuiltinTable& builtins, std::vector<NormToken>& out) {
+void normaliseLine(const std::vector<Token>& line, const BuiltinTable& builtins,
+                   std::vector<NormToken>& out) {
   for (size_t i = 0; i < line.size(); ++i) {
     const Token& t = line[i];
     uint32_t code = 0;
@@ -260,8 +269,8 @@ struct Program {
   std::string path;
   std::vector<Fingerprint> prints;  ///< in order of position, without the ignored files' hashes
   uint32_t tokens = 0;
-  std::vector<uint32_t> groups;     ///< its distinct hashes (index into the class's groups)
-  size_t counted = 0;               ///< of those, the ones not dropped as boilerplate
+  std::vector<uint32_t> groups;  ///< its distinct hashes (index into the class's groups)
+  size_t counted = 0;            ///< of those, the ones not dropped as boilerplate
 };
 
 /// Every hash in the class once, sorted, with the programs that have it and whether it counts.
@@ -320,12 +329,14 @@ std::string cutLine(std::string_view s) {
 
 std::vector<std::string> linesOf(const SourceFile& f, LineRange r) {
   std::vector<std::string> out;
-  for (uint32_t l = r.first; l <= r.last && out.size() < kMaxBlockLines; ++l) out.push_back(cutLine(f.lineText(l)));
+  for (uint32_t l = r.first; l <= r.last && out.size() < kMaxBlockLines; ++l)
+    out.push_back(cutLine(f.lineText(l)));
   return out;
 }
 
 /// Which tokens are in a k-gram of the template (`ignored`: sorted hashes).
-std::vector<char> templateTokens(const std::vector<NormToken>& tokens, const std::vector<uint64_t>& ignored, size_t k) {
+std::vector<char> templateTokens(const std::vector<NormToken>& tokens, const std::vector<uint64_t>& ignored,
+                                 size_t k) {
   std::vector<char> in(tokens.size(), 0);
   if (ignored.empty()) return in;
   std::vector<uint64_t> h = kgramHashes(tokens, k);
@@ -341,7 +352,8 @@ std::vector<char> templateTokens(const std::vector<NormToken>& tokens, const std
 /// The rows of a block shown side by side. `pairs`: lines of a and b that hold matching tokens,
 /// in order in both. Lines between them that match nothing (comments, blank lines, code of one
 /// file only) are shown next to each other as they come, then alone.
-std::vector<SharedBlock::Row> alignRows(const std::vector<SharedBlock::Row>& pairs, LineRange a, LineRange b) {
+std::vector<SharedBlock::Row> alignRows(const std::vector<SharedBlock::Row>& pairs, LineRange a,
+                                        LineRange b) {
   std::vector<SharedBlock::Row> rows;
   uint32_t nextA = a.first, nextB = b.first;  // the first line not shown yet on each side
   auto flush = [&](uint32_t toA, uint32_t toB) {
@@ -366,7 +378,8 @@ std::vector<SharedBlock::Row> alignRows(const std::vector<SharedBlock::Row>& pai
 
 /// The blocks of code a and b share, from their counted fingerprints and their tokens.
 std::vector<SharedBlock> findBlocks(const Program& pa, const Program& pb, const Lexed& la, const Lexed& lb,
-                                    const Index& index, const std::vector<uint64_t>& ignored, size_t k, size_t w) {
+                                    const Index& index, const std::vector<uint64_t>& ignored, size_t k,
+                                    size_t w) {
   std::vector<Fingerprint> inB;
   for (const Fingerprint& f : pb.prints)
     if (index.counted(f.hash)) inB.push_back(f);
@@ -493,7 +506,8 @@ class LexedCache {
   const Lexed& get(uint32_t program, const std::string& path) {
     for (size_t i = 0; i < items_.size(); ++i) {
       if (items_[i].first != program) continue;
-      std::rotate(items_.begin() + static_cast<ptrdiff_t>(i), items_.begin() + static_cast<ptrdiff_t>(i) + 1, items_.end());
+      std::rotate(items_.begin() + static_cast<ptrdiff_t>(i), items_.begin() + static_cast<ptrdiff_t>(i) + 1,
+                  items_.end());
       return *items_.back().second;
     }
     if (items_.size() >= 8) items_.erase(items_.begin());
@@ -558,7 +572,9 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
     p.tokens = static_cast<uint32_t>(lexed.tokens.size());
     p.prints = winnow(kgramHashes(lexed.tokens, k), w);
     if (!ignored.empty())
-      std::erase_if(p.prints, [&](const Fingerprint& f) { return std::binary_search(ignored.begin(), ignored.end(), f.hash); });
+      std::erase_if(p.prints, [&](const Fingerprint& f) {
+        return std::binary_search(ignored.begin(), ignored.end(), f.hash);
+      });
     p.prints.shrink_to_fit();
     programs.push_back(std::move(p));
   }
@@ -600,8 +616,9 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
     if (p.counted == 0) ++empty;
   }
   if (empty > 0)
-    report.notes.push_back(std::to_string(empty) + (empty == 1 ? " program has" : " programs have") +
-                           " no code of its own to compare: all of it is in the template or common to most programs");
+    report.notes.push_back(
+        std::to_string(empty) + (empty == 1 ? " program has" : " programs have") +
+        " no code of its own to compare: all of it is in the template or common to most programs");
 
   // Each program against the later ones that share a counted hash with it.
   auto better = [&](const Candidate& x, const Candidate& y) {
@@ -664,8 +681,10 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
     if (sameA && sameB) {
       pair.blocks = findBlocks(pa, pb, la, lb, index, ignored, k, w);
     } else {
-      std::string note = (sameA ? pb.path : pa.path) + ": changed while it was compared; no blocks shown for it";
-      if (std::find(report.notes.begin(), report.notes.end(), note) == report.notes.end()) report.notes.push_back(note);
+      std::string note =
+          (sameA ? pb.path : pa.path) + ": changed while it was compared; no blocks shown for it";
+      if (std::find(report.notes.begin(), report.notes.end(), note) == report.notes.end())
+        report.notes.push_back(note);
     }
     report.pairs.push_back(std::move(pair));
   }
@@ -764,7 +783,8 @@ std::string similarityText(const SimilarityReport& r) {
       uint32_t shownA = 0, shownB = 0;
       for (size_t row = 0; row < block.rows.size() && row < kRowsShown; ++row) {
         const SharedBlock::Row& rw = block.rows[row];
-        out += "   " + cell(block.linesA, block.a, rw.a) + " | " + trimRight(cell(block.linesB, block.b, rw.b)) + "\n";
+        out += "   " + cell(block.linesA, block.a, rw.a) + " | " +
+               trimRight(cell(block.linesB, block.b, rw.b)) + "\n";
         shownA = std::max(shownA, rw.a);
         shownB = std::max(shownB, rw.b);
       }
@@ -774,7 +794,8 @@ std::string similarityText(const SimilarityReport& r) {
     }
     if (p.blocks.size() > kBlocksShown) {
       size_t more = p.blocks.size() - kBlocksShown;
-      out += "\n   and " + std::to_string(more) + " shorter shared " + (more == 1 ? "block" : "blocks") + "\n";
+      out +=
+          "\n   and " + std::to_string(more) + " shorter shared " + (more == 1 ? "block" : "blocks") + "\n";
     }
   }
   if (!r.notes.empty()) out += "\n";

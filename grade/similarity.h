@@ -14,13 +14,16 @@
 //         built-in of rb's standard table (machine/builtins.h; compared without regard to case,
 //         as RobotBASIC does) where the language lets that built-in stand: a command as the
 //         first word of a statement (at the start of a line, after a label, `then` or `else`),
-//         a function followed by '(', a constant anywhere. So a label, the word after gosub,
-//         goto, sub and call, a word assigned to or used as an array, and a function's name
-//         without '(' are names even when spelled like a built-in (`length = 90` is a
-//         variable, though rb would reject it: such a program is still compared);
-//       - every number literal is one token, "a number", and every string literal "a string";
-//       - keywords, operators, punctuation and built-in names are kept as they are (built-ins
-//         and keywords in any case count as the same);
+//         a function followed by '(', a constant anywhere (as a number, below). So a label,
+//         the word after gosub, goto, sub and call, a word assigned to or used as an array,
+//         and a function's name without '(' are names even when spelled like a built-in
+//         (`length = 90` is a variable, though rb would reject it: such a program is still
+//         compared);
+//       - every number literal is one token, "a number", and so is every built-in constant
+//         (GREEN is the number 2, DOWN is 1: changing a colour is changing a number); every
+//         string literal is one token, "a string";
+//       - keywords, operators, punctuation and built-in command and function names are kept as
+//         they are (built-ins and keywords in any case count as the same);
 //       - comments, blank lines, indentation, spaces and line breaks are left out.
 //     Each normalised token remembers the line it came from.
 //  2. Every k consecutive tokens (a k-gram) are hashed. In every window of `window` consecutive
@@ -118,13 +121,13 @@ struct SharedBlock {
 };
 
 struct SimilarPair {
-  std::string a, b;         ///< program paths as given; a is the one given first
-  double shareA = 0;        ///< the fraction of a's fingerprints found in b
-  double shareB = 0;        ///< the fraction of b's fingerprints found in a
-  double score = 0;         ///< max(shareA, shareB)
-  size_t shared = 0;        ///< fingerprints (distinct hashes) in common
-  size_t fingerprintsA = 0; ///< a's fingerprints that count (distinct, without template and boilerplate)
-  size_t fingerprintsB = 0; ///< b's
+  std::string a, b;          ///< program paths as given; a is the one given first
+  double shareA = 0;         ///< the fraction of a's fingerprints found in b
+  double shareB = 0;         ///< the fraction of b's fingerprints found in a
+  double score = 0;          ///< max(shareA, shareB)
+  size_t shared = 0;         ///< fingerprints (distinct hashes) in common
+  size_t fingerprintsA = 0;  ///< a's fingerprints that count (distinct, without template and boilerplate)
+  size_t fingerprintsB = 0;  ///< b's
   std::vector<SharedBlock> blocks;  ///< longest first (then by line in a)
 };
 
@@ -144,8 +147,7 @@ struct SimilarityReport {
 /// are noted and skipped), compares every pair, keeps pairs with score >= minScore, ranked by
 /// score (then shared, then names), at most maxPairs. Never throws for bad input: any file is
 /// read, skipped or cut with a note.
-SimilarityReport findSimilar(const std::vector<std::string>& programs,
-                             const SimilarityOptions& options = {});
+SimilarityReport findSimilar(const std::vector<std::string>& programs, const SimilarityOptions& options = {});
 
 /// Text for the terminal: a heading line, then one block per pair: its rank, the score as a
 /// percentage and both files, both shares, then at most 3 shared blocks (the longest) with both
