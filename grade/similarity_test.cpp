@@ -445,6 +445,9 @@ TEST_CASE("the JSON has every pair with its blocks and lines", "[grade][similari
   REQUIRE(b["lines_b"].size() == 18);
   CHECK(b["lines_a"][0] == "rLocate 400, 300");
   CHECK(b["lines_b"][17] == "RETURN");
+  REQUIRE(b["rows"].size() == 18);
+  CHECK(b["rows"][0] == nlohmann::json::array({2, 4}));
+  CHECK(b["rows"][2] == nlohmann::json::array({nullptr, 6}));  // a blank line of ben's alone
 
   CHECK(nlohmann::json::parse(similarityJson(SimilarityReport{})) == nlohmann::json::array());
 }
