@@ -453,42 +453,63 @@ std::vector<SharedBlock> findBlocks(const Program& pa, const Program& pb, const 
     return x.tokens != y.tokens ? x.tokens > y.tokens : x.s < y.s;
   });
 
+  // Longest first, each run becomes a block: the tokens that correspond in it (in order in
+  // both files: the widened start, each anchor's k-gram, the widened end; a pair only when it
+  // follows the last one in both files and its tokens are the same), without those a longer
+  // block has taken; of what is left, the longest stretch not broken by a taken pair, if it
+  // still holds k tokens.
   std::vector<SharedBlock> blocks;
   Taken takenA, takenB;
   const SourceFile& fa = la.sources->file(0);
   const SourceFile& fb = lb.sources->file(0);
+  std::vector<Match> pairs;
   for (const Run& r : runs) {
     if (blocks.size() >= kMaxBlocks) break;
-    if (r.tokens == 0 || takenA.overlaps(r.s, r.e) || takenB.overlaps(r.t, r.f)) continue;
-    takenA.add(r.s, r.e);
-    takenB.add(r.t, r.f);
-    SharedBlock b;
-    b.a = {ta[r.s].line, ta[r.e - 1].line};
-    b.b = {tb[r.t].line, tb[r.f - 1].line};
-    b.tokens = r.tokens;
-    b.linesA = linesOf(fa, b.a);
-    b.linesB = linesOf(fb, b.b);
-
-    // Tokens that correspond, in order in both files: the widened start, each anchor's k-gram,
-    // the widened end; each pair only when it follows the last one taken in both files and
-    // its tokens are the same. Their lines are the lines that match.
-    std::vector<SharedBlock::Row> pairs;
-    uint32_t lastI = 0, lastJ = 0;
-    bool any = false;
+    if (r.tokens == 0) continue;
+    pairs.clear();
     auto take = [&](uint32_t i, uint32_t j) {
       if (i < r.s || i >= r.e || j < r.t || j >= r.f || ta[i].code != tb[j].code) return;
-      if (any && (i <= lastI || j <= lastJ)) return;
-      any = true;
-      lastI = i, lastJ = j;
-      SharedBlock::Row row{ta[i].line, tb[j].line};
-      if (pairs.empty() || pairs.back().a != row.a || pairs.back().b != row.b) pairs.push_back(row);
+      if (!pairs.empty() && (i <= pairs.back().a || j <= pairs.back().b)) return;
+      pairs.push_back({i, j});
     };
     for (uint32_t n = 0; r.s + n < r.anchors.front().a; ++n) take(r.s + n, r.t + n);
     for (const Match& m : r.anchors)
       for (uint32_t d = 0; d < kk; ++d) take(m.a + d, m.b + d);
     const Match& end = r.anchors.back();
     for (uint32_t n = kk; end.a + n < r.e; ++n) take(end.a + n, end.b + n);
-    b.rows = alignRows(pairs, b.a, b.b);
+
+    size_t bestFrom = 0, bestTo = 0;  // pairs[bestFrom, bestTo): the longest free stretch
+    for (size_t from = 0; from < pairs.size();) {
+      // pairs[q] joins the stretch when neither it nor the tokens since the stretch's last pair
+      // are taken.
+      auto free = [&](size_t q) {
+        uint32_t a0 = q > from ? pairs[q - 1].a + 1 : pairs[q].a;
+        uint32_t b0 = q > from ? pairs[q - 1].b + 1 : pairs[q].b;
+        return !takenA.overlaps(a0, pairs[q].a + 1) && !takenB.overlaps(b0, pairs[q].b + 1);
+      };
+      size_t to = from;
+      while (to < pairs.size() && free(to)) ++to;
+      if (to - from > bestTo - bestFrom) bestFrom = from, bestTo = to;
+      from = to + 1;
+    }
+    if (bestTo - bestFrom < kk) continue;
+    const Match& first = pairs[bestFrom];
+    const Match& last = pairs[bestTo - 1];
+    takenA.add(first.a, last.a + 1);
+    takenB.add(first.b, last.b + 1);
+    SharedBlock b;
+    b.a = {ta[first.a].line, ta[last.a].line};
+    b.b = {tb[first.b].line, tb[last.b].line};
+    b.tokens = std::min(last.a - first.a, last.b - first.b) + 1;
+    b.linesA = linesOf(fa, b.a);
+    b.linesB = linesOf(fb, b.b);
+    // The lines that hold corresponding tokens, side by side.
+    std::vector<SharedBlock::Row> lines;
+    for (size_t p = bestFrom; p < bestTo; ++p) {
+      SharedBlock::Row row{ta[pairs[p].a].line, tb[pairs[p].b].line};
+      if (lines.empty() || lines.back().a != row.a || lines.back().b != row.b) lines.push_back(row);
+    }
+    b.rows = alignRows(lines, b.a, b.b);
     blocks.push_back(std::move(b));
   }
   std::stable_sort(blocks.begin(), blocks.end(), [](const SharedBlock& x, const SharedBlock& y) {

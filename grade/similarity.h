@@ -55,12 +55,15 @@
 //     both files, no more than window + k tokens apart, make one run (a run follows the match
 //     that keeps its step most alike in both files, as a copy does); each run is widened to the
 //     identical normalised tokens just around it (up to window + k tokens each way, which is
-//     what winnowing may have left unselected at its ends) but never into the template's code;
-//     runs that overlap a longer run in either file are dropped. A block's lines are those of
-//     its first and last tokens, so a line may hold the end of one block and the start of the
-//     next; its rows put the lines whose tokens match side by side. Code shorter than
-//     window + k - 1 tokens between two changes may match nothing, and the k-grams across the
-//     seams of moved code are lost: reordered parts keep their blocks, with a lower score.
+//     what winnowing may have left unselected at its ends) but never into the template's code.
+//     Longest first, a run's tokens that correspond in both files make a block, less those a
+//     longer block took: what is left is cut to its longest stretch, kept if it still holds k
+//     tokens, so no token is in two blocks (at most 100 blocks a pair). A block's lines are
+//     those of its first and last tokens, so a line may hold the end of one block and the
+//     start of the next; its rows put the lines whose tokens correspond side by side. Code
+//     shorter than window + k - 1 tokens between two changes may match nothing, and the
+//     k-grams across the seams of moved code are lost: reordered parts keep their blocks, with
+//     a lower score.
 //
 // Limits, so that no input can take unbounded time or memory: a file is read up to 4 MiB, a
 // line up to 16 KiB (the rest of a longer line is left out), a program up to 500,000 tokens

@@ -92,6 +92,100 @@ const char* kGuess =
     "wend\n"
     "end\n";
 
+/// Maria's house, with three subroutines.
+const char* kMaria =
+    "// Assignment 5: a house with a door\n"
+    "// Maria, 9B\n"
+    "\n"
+    "rLocate 300, 400\n"
+    "rInvisible BLUE\n"
+    "LineWidth 3\n"
+    "rPen DOWN\n"
+    "\n"
+    "wall = 150\n"
+    "gosub DrawWalls\n"
+    "gosub DrawRoof\n"
+    "gosub DrawDoor\n"
+    "rPen UP\n"
+    "print \"perimeter of the walls: \"; 4 * wall\n"
+    "end\n"
+    "\n"
+    "// the four walls, turning right each time\n"
+    "DrawWalls:\n"
+    "  for side = 1 to 4\n"
+    "    rForward wall\n"
+    "    rTurn 90\n"
+    "  next\n"
+    "return\n"
+    "\n"
+    "// the roof: the two slopes of a triangle\n"
+    "DrawRoof:\n"
+    "  rTurn 30\n"
+    "  rForward wall\n"
+    "  rTurn 120\n"
+    "  rForward wall\n"
+    "  rTurn 210\n"
+    "return\n"
+    "\n"
+    "// the door, a third of the wall high\n"
+    "DrawDoor:\n"
+    "  rPen UP\n"
+    "  rTurn 90\n"
+    "  rForward wall / 3\n"
+    "  rTurn -90\n"
+    "  rPen DOWN\n"
+    "  for side = 1 to 2\n"
+    "    rForward wall / 3\n"
+    "    rTurn -90\n"
+    "    rForward wall / 5\n"
+    "    rTurn -90\n"
+    "  next\n"
+    "return\n";
+
+/// Tom's copy: names, numbers, colours, comments and layout changed, the subroutines moved.
+const char* kTom =
+    "' House - Tom\n"
+    "rLocate 250,350\n"
+    "rInvisible RED\n"
+    "LineWidth 2\n"
+    "rPen DOWN\n"
+    "size = 120\n"
+    "gosub Walls\n"
+    "gosub Roof\n"
+    "gosub Door\n"
+    "rPen UP\n"
+    "print \"my walls are \"; 4 * size\n"
+    "end\n"
+    "\n"
+    "Door:\n"
+    "   rPen UP\n"
+    "   rTurn 90\n"
+    "   rForward size / 3   ' move to the door\n"
+    "   rTurn -90\n"
+    "   rPen DOWN\n"
+    "   for k = 1 to 2\n"
+    "      rForward size / 3\n"
+    "      rTurn -90\n"
+    "      rForward size / 4\n"
+    "      rTurn -90\n"
+    "   next\n"
+    "return\n"
+    "\n"
+    "Walls:\n"
+    "   for k = 1 to 4\n"
+    "      rForward size\n"
+    "      rTurn 90\n"
+    "   next\n"
+    "return\n"
+    "\n"
+    "Roof:\n"
+    "   rTurn 30\n"
+    "   rForward size\n"
+    "   rTurn 120\n"
+    "   rForward size\n"
+    "   rTurn 210\n"
+    "return\n";
+
 const SimilarPair* findPair(const SimilarityReport& r, const std::string& a, const std::string& b) {
   for (const SimilarPair& p : r.pairs)
     if ((p.a == a && p.b == b) || (p.a == b && p.b == a)) return &p;
@@ -217,6 +311,22 @@ TEST_CASE("swapped blocks are still matched where they went", "[grade][similarit
   CHECK(squareFound);
   // Blocks come longest first.
   for (size_t i = 1; i < p.blocks.size(); ++i) CHECK(p.blocks[i - 1].tokens >= p.blocks[i].tokens);
+}
+
+TEST_CASE("blocks that meet at a line share it out", "[grade][similarity]") {
+  // Tom's copy of Maria's house puts her subroutines in another order: the main part's end and
+  // the door's label meet in both, and each block keeps what it can.
+  fs::path dir = scratch();
+  std::string maria = write(dir, "maria.bas", kMaria);
+  std::string tom = write(dir, "tom.bas", kTom);
+  SimilarityReport r = findSimilar({maria, tom});
+  REQUIRE(r.pairs.size() == 1);
+  std::vector<std::vector<uint32_t>> blocks;
+  std::vector<std::vector<uint32_t>> expected = {{35, 47, 14, 26},   // the door
+                                                 {4, 15, 2, 12},     // the main part, up to `end`
+                                                 {18, 32, 28, 41}};  // the walls and the roof
+  for (const SharedBlock& b : r.pairs[0].blocks) blocks.push_back({b.a.first, b.a.last, b.b.first, b.b.last});
+  CHECK(blocks == expected);
 }
 
 TEST_CASE("code from the teacher's template does not count", "[grade][similarity]") {
