@@ -15,14 +15,23 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch() {
-  static int count = 0;
-  fs::path dir = fs::temp_directory_path() /
-                 ("rb_similarity_test_" + std::to_string(getpid()) + "_" + std::to_string(++count));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+/// A folder of its own for a test, removed with everything in it at the end of the test.
+struct Scratch {
+  fs::path dir;
+  Scratch() {
+    static int count = 0;
+    dir = fs::temp_directory_path() /
+          ("rb_similarity_test_" + std::to_string(getpid()) + "_" + std::to_string(++count));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+};
 
 std::string write(const fs::path& dir, const std::string& name, const std::string& text) {
   fs::path p = dir / name;
@@ -195,7 +204,8 @@ const SimilarPair* findPair(const SimilarityReport& r, const std::string& a, con
 }  // namespace
 
 TEST_CASE("a renamed, renumbered, re-indented and re-commented copy scores 1", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string ana = write(dir, "ana.bas", kSquare);
   std::string ben = write(dir, "ben.bas", kSquareDisguised);
   SimilarityReport r = findSimilar({ana, ben});
@@ -234,7 +244,8 @@ TEST_CASE("a renamed, renumbered, re-indented and re-commented copy scores 1", "
 }
 
 TEST_CASE("two unrelated programs score low", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string ana = write(dir, "ana.bas", kSquare);
   std::string cleo = write(dir, "cleo.bas", kGuess);
   SimilarityOptions all;
@@ -246,7 +257,8 @@ TEST_CASE("two unrelated programs score low", "[grade][similarity]") {
 }
 
 TEST_CASE("swapped blocks are still matched where they went", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   // Two subroutines and a main part; the copy puts them in the other order.
   std::string mainPart =
       "rLocate 400, 300\n"
@@ -316,7 +328,8 @@ TEST_CASE("swapped blocks are still matched where they went", "[grade][similarit
 TEST_CASE("blocks that meet at a line share it out", "[grade][similarity]") {
   // Tom's copy of Maria's house puts her subroutines in another order: the main part's end and
   // the door's label meet in both, and each block keeps what it can.
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string maria = write(dir, "maria.bas", kMaria);
   std::string tom = write(dir, "tom.bas", kTom);
   SimilarityReport r = findSimilar({maria, tom});
@@ -330,7 +343,8 @@ TEST_CASE("blocks that meet at a line share it out", "[grade][similarity]") {
 }
 
 TEST_CASE("code from the teacher's template does not count", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string templ =
       "// Assignment 4: draw your initials. Do not change the set-up.\n"
       "rLocate 400, 300\n"
@@ -395,7 +409,8 @@ TEST_CASE("code from the teacher's template does not count", "[grade][similarity
 }
 
 TEST_CASE("code most of the class has is boilerplate", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string common =
       "rLocate 400, 300\nrInvisible GREEN\nLineWidth 4\nrPen DOWN\n"
       "for side = 1 to 4\n  rForward 100\n  rTurn 90\nnext\n"
@@ -429,7 +444,8 @@ TEST_CASE("code most of the class has is boilerplate", "[grade][similarity]") {
 }
 
 TEST_CASE("pairs are ranked by score, then shared fingerprints, then names", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string own =
       "x = 0\n"
       "while x < 360\n"
@@ -483,7 +499,8 @@ TEST_CASE("pairs are ranked by score, then shared fingerprints, then names", "[g
 }
 
 TEST_CASE("the text shows the shared lines side by side", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string ana = write(dir, "ana.bas", kSquare);
   std::string ben =
       write(dir, "ben.bas",
@@ -509,7 +526,8 @@ TEST_CASE("the text shows the shared lines side by side", "[grade][similarity]")
   CHECK(text.find("never a verdict") != std::string::npos);
 
   // Long lines are cut to the column.
-  fs::path d2 = scratch();
+  Scratch scratch2;
+  const fs::path& d2 = scratch2.dir;
   std::string longText = "x = 1\nprint \"" + std::string(200, 'y') + "\" + x + 2 * 3 + 4 * 5 + 6\nend\n";
   std::string l1 = write(d2, "l1.bas", longText);
   std::string l2 = write(d2, "l2.bas", longText);
@@ -531,7 +549,8 @@ TEST_CASE("the text shows the shared lines side by side", "[grade][similarity]")
 }
 
 TEST_CASE("the JSON has every pair with its blocks and lines", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string ana = write(dir, "ana.bas", kSquare);
   std::string ben = write(dir, "ben.bas", kSquareDisguised);
   std::string cleo = write(dir, "cleo.bas", kGuess);
@@ -563,7 +582,8 @@ TEST_CASE("the JSON has every pair with its blocks and lines", "[grade][similari
 }
 
 TEST_CASE("bad input is skipped with a note, never a crash", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string ana = write(dir, "ana.bas", kSquare);
   std::string ben = write(dir, "ben.bas", kSquareDisguised);
   std::string binary = write(dir, "binary.bas",
@@ -608,7 +628,8 @@ TEST_CASE("bad input is skipped with a note, never a crash", "[grade][similarity
 }
 
 TEST_CASE("big files are cut, not a burden", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string ana = write(dir, "ana.bas", kSquare);
   std::string big;
   while (big.size() < (1u << 20)) big += kGuess;
@@ -635,7 +656,8 @@ TEST_CASE("big files are cut, not a burden", "[grade][similarity]") {
 }
 
 TEST_CASE("winnowing options: k and the window", "[grade][similarity]") {
-  fs::path dir = scratch();
+  Scratch scratch;
+  const fs::path& dir = scratch.dir;
   std::string ana = write(dir, "ana.bas", kSquare);
   std::string ben = write(dir, "ben.bas", kSquareDisguised);
   SimilarityOptions small;
@@ -740,7 +762,8 @@ std::vector<std::string> generateClass(const fs::path& dir, int count, int share
 // Not run by default: `rb_grade_tests "[perf]"` times classes of 1,000 generated programs.
 TEST_CASE("a class of 1,000 programs", "[.perf]") {
   for (int shared : {0, 3}) {
-    fs::path dir = scratch();
+    Scratch scratch;
+  const fs::path& dir = scratch.dir;
     std::vector<std::string> programs = generateClass(dir, 1000, shared, 12345 + uint64_t(shared));
     // Ten pairs of copies.
     for (size_t i = 0; i < 10; ++i)
@@ -757,6 +780,5 @@ TEST_CASE("a class of 1,000 programs", "[.perf]") {
       CHECK(r.pairs[i].score == 1.0);
       CHECK(r.pairs[i].b == programs[500 + std::stoul(r.pairs[i].a.substr(r.pairs[i].a.rfind('p') + 1))]);
     }
-    fs::remove_all(dir);
   }
 }
