@@ -714,8 +714,13 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
 
 namespace {
 
+/// A share as a whole percentage, rounded to the nearest, but 100% only for the whole and 0%
+/// only for nothing.
 std::string percent(double share) {
-  return std::to_string(static_cast<int>(std::floor(share * 100 + 1e-9))) + "%";
+  long p = std::lround(share * 100);
+  if (p >= 100 && share < 1) p = 99;
+  if (p <= 0 && share > 0) p = 1;
+  return std::to_string(p) + "%";
 }
 
 /// `raw` in exactly `width` columns (width >= 1): tabs as spaces to the next multiple of 4,

@@ -152,11 +152,13 @@ struct SimilarityReport {
 /// read, skipped or cut with a note.
 SimilarityReport findSimilar(const std::vector<std::string>& programs, const SimilarityOptions& options = {});
 
-/// Text for the terminal: a heading line, then one block per pair: its rank, the score as a
-/// percentage and both files, both shares, then at most 3 shared blocks (the longest) with both
-/// files' lines side by side: line number and text, each column 50 characters wide (longer
-/// lines cut, ending in "~"), the columns separated by " | ", at most 24 lines a block. Then
-/// the notes. Tabs show as spaces; text that is not UTF-8 is read as Latin-1.
+/// Text for the terminal: a heading (two lines; one when no pair is found), then one block per
+/// pair: its rank, the score as a percentage and both files, both shares, then at most 3 shared
+/// blocks (the longest) with both files' lines side by side (SharedBlock::rows): line number
+/// and text, each column 50 characters wide (longer lines cut, ending in "~"), the columns
+/// separated by " | ", at most 24 rows a block. Then the notes, each "note: ...". Percentages
+/// are rounded to the nearest, but only a whole is 100% and only nothing 0%. Tabs show as
+/// spaces; text that is not UTF-8 is read as Latin-1.
 std::string similarityText(const SimilarityReport& report);
 
 /// The pairs as a JSON array, for rb test's JSON report: one object per pair, best first:

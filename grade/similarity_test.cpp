@@ -540,6 +540,22 @@ TEST_CASE("the text shows the shared lines side by side", "[grade][similarity]")
   CHECK(cutRow.find("~ | ") == 3 + 49);
   CHECK(cutRow.size() == 3 + 50 + 3 + 50);
 
+  // Percentages round to the nearest, but only a whole is 100%.
+  SimilarityReport made;
+  made.programs = 3;
+  made.minScore = 0.3;
+  made.pairs.resize(2);
+  made.pairs[0] = {.a = "x.bas", .b = "y.bas", .shareA = 0.6667, .shareB = 0.996, .score = 0.996, .shared = 12,
+                   .fingerprintsA = 18, .fingerprintsB = 19, .blocks = {}};
+  made.pairs[1] = {.a = "x.bas", .b = "z.bas", .shareA = 0.3, .shareB = 0.004, .score = 0.3, .shared = 3,
+                   .fingerprintsA = 10, .fingerprintsB = 750, .blocks = {}};
+  std::string m = similarityText(made);
+  INFO(m);
+  CHECK(m.find("1. 99%  x.bas  and  y.bas\n   12 fingerprints in common: 67% of x.bas's 18, 99% of y.bas's 19\n") !=
+        std::string::npos);
+  CHECK(m.find("2. 30%  x.bas  and  z.bas\n   3 fingerprints in common: 30% of x.bas's 10, 1% of z.bas's 750\n") !=
+        std::string::npos);
+
   SimilarityReport none;
   none.programs = 5;
   none.minScore = 0.3;
