@@ -779,7 +779,7 @@ std::vector<std::string> generateClass(const fs::path& dir, int count, int share
 TEST_CASE("a class of 1,000 programs", "[.perf]") {
   for (int shared : {0, 3}) {
     Scratch scratch;
-  const fs::path& dir = scratch.dir;
+    const fs::path& dir = scratch.dir;
     std::vector<std::string> programs = generateClass(dir, 1000, shared, 12345 + uint64_t(shared));
     // Ten pairs of copies.
     for (size_t i = 0; i < 10; ++i)
