@@ -33,6 +33,8 @@ struct TestOptions {
   std::string roster;
   bool student = false;
   bool trustComments = false;
+  bool similarity = false;
+  std::vector<std::string> similarityIgnore;
   bool quiet = false;
 };
 
@@ -109,6 +111,8 @@ int executeTest(const TestOptions& opts) {
   g.roster = opts.roster;
   g.trustComments = opts.trustComments;
   g.compileProgram = firstError;
+  g.similarity = opts.similarity || !opts.similarityIgnore.empty();
+  g.similarityIgnore = opts.similarityIgnore;
   if ((!opts.include.empty() || !opts.roster.empty()) && opts.assignment.empty()) {
     std::fprintf(stderr, "rb test: --include and --roster grade a class folder against an assignment (-a FILE)\n");
     return exitcode::kUsage;
@@ -200,6 +204,14 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
   test->add_flag("--trust-comments", opts->trustComments,
                  "Let // args: grant what only the person running rb may (--allow-files, "
                  "--allow-spawn, --port, --real) and // timeout: go past 30 s");
+  test->add_flag("--similarity", opts->similarity,
+                 "Also list pairs of programs whose code is much alike (names, numbers, comments and "
+                 "layout ignored), with the matching lines side by side: an aid, never a verdict");
+  test->add_option("--similarity-ignore", opts->similarityIgnore,
+                   "Code of FILE (a template students started from) does not count as shared; "
+                   "repeatable; implies --similarity")
+      ->type_name("FILE")
+      ->check(CLI::ExistingFile);
   test->add_flag("-q,--quiet", opts->quiet, "Only the table: no details of failed checks, no progress");
   test->footer(
       "Each program runs in a child process of its own (rb itself), with a time and memory "

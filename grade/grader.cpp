@@ -562,6 +562,12 @@ ClassResult Grader::run() {
     else if (r.verdict == "missing") ++result_.missing;
     else ++result_.failed;
   }
+  if (opts_.similarity) {
+    // The programs graded (the solution and teacher files excluded, as from grading).
+    SimilarityOptions so;
+    so.ignore = opts_.similarityIgnore;
+    result_.similarity = findSimilar(programs_, so);
+  }
   result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result_;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "checks.h"
+#include "similarity.h"
 
 namespace rb::grade {
 
@@ -29,6 +30,10 @@ struct GradeOptions {
   /// Comment mode: let `// args:` grant access (--allow-files, --allow-spawn, --port, --real).
   /// Only the person running rb may; rb's own tests do.
   bool trustComments = false;
+  /// Also compare the programs with each other (a plagiarism aid): ClassResult::similarity.
+  bool similarity = false;
+  /// Template files whose code does not count as shared (--similarity-ignore).
+  std::vector<std::string> similarityIgnore;
   /// Loads and compiles a teacher's program (world, post): its first error as
   /// "FILE:LINE:COL: message", or "" when it compiles. Unset: not checked before grading.
   std::function<std::string(const std::string& file)> compileProgram;
@@ -68,6 +73,8 @@ struct ClassResult {
   bool studentView = false;
   double maxPoints = 0;            ///< the assignment's points
   std::string timestamp;           ///< ISO 8601, UTC, when grading started
+  /// Pairs of programs with much code alike (GradeOptions::similarity).
+  std::optional<SimilarityReport> similarity;
   // When grading could not happen at all: the message and rb's exit code (64 usage, 66 no
   // input, 74 I/O). 0 otherwise.
   int fatalCode = 0;

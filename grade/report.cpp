@@ -274,6 +274,7 @@ std::string textReport(const ClassResult& r, bool showDetails) {
       out += details(p, r.studentView);
     }
   }
+  if (r.similarity && !r.studentView) out += "\n" + similarityText(*r.similarity);
   size_t n = r.programs.size() - r.missing;
   out += "\n" + std::to_string(n) + " program" + (n == 1 ? "" : "s") + ": " + std::to_string(r.passed) +
          " passed, " + std::to_string(r.failed) + " failed";
@@ -332,6 +333,7 @@ std::string jsonReport(const ClassResult& r) {
     if (!p.errors.empty()) j["errors"] = cleanUtf8(p.errors, false);
     doc["programs"].push_back(std::move(j));
   }
+  if (r.similarity && !r.studentView) doc["similarity"] = json::parse(similarityJson(*r.similarity));
   doc["summary"] = {{"programs", r.programs.size() - r.missing}, {"passed", r.passed}, {"failed", r.failed},
                     {"errors", r.errors},           {"skipped", r.skipped}, {"missing", r.missing},
                     {"seconds", r.seconds}};

@@ -667,7 +667,7 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
       double si = double(shared) / double(programs[i].counted);
       double sj = double(shared) / double(programs[j].counted);
       double score = std::max(si, sj);
-      if (score < options.minScore) continue;
+      if (score < options.minScore || shared < options.minShared) continue;
       ++report.matching;
       kept.push_back({i, j, shared, score});
       if (limit > 0 && kept.size() >= 2 * limit + 1024) {

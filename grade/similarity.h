@@ -92,6 +92,9 @@ struct SimilarityOptions {
   /// A pair is reported when its score is at least this (0 to 1). Pairs with no fingerprint in
   /// common are never reported.
   double minScore = 0.3;
+  /// A pair is reported only when it has at least this many fingerprints in common: one or two
+  /// shared fingerprints (a line or two once boilerplate is gone) are no evidence of anything.
+  size_t minShared = 3;
   /// Files whose code does not count (a template the students started from): see above.
   std::vector<std::string> ignore;
   /// Fingerprints in more than this share of the compared programs are boilerplate and do not

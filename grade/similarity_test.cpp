@@ -531,7 +531,9 @@ TEST_CASE("the text shows the shared lines side by side", "[grade][similarity]")
   std::string longText = "x = 1\nprint \"" + std::string(200, 'y') + "\" + x + 2 * 3 + 4 * 5 + 6\nend\n";
   std::string l1 = write(d2, "l1.bas", longText);
   std::string l2 = write(d2, "l2.bas", longText);
-  std::string t2 = similarityText(findSimilar({l1, l2}));
+  SimilarityOptions few;
+  few.minShared = 1;  // two short programs: one fingerprint in common
+  std::string t2 = similarityText(findSimilar({l1, l2}, few));
   INFO(t2);
   size_t yy = t2.find("yyyy");
   REQUIRE(yy != std::string::npos);
@@ -797,4 +799,15 @@ TEST_CASE("a class of 1,000 programs", "[.perf]") {
       CHECK(r.pairs[i].b == programs[500 + std::stoul(r.pairs[i].a.substr(r.pairs[i].a.rfind('p') + 1))]);
     }
   }
+}
+
+TEST_CASE("one or two shared fingerprints are no evidence", "[grade][similarity]") {
+  Scratch scratch;
+  std::string text = "x = 1\nprint \"a\" + x + 2 * 3 + 4 * 5 + 6\nend\n";
+  std::string a = write(scratch.dir, "a.bas", text), b = write(scratch.dir, "b.bas", text);
+  SimilarityOptions one;
+  one.minShared = 1;
+  REQUIRE(findSimilar({a, b}, one).pairs.size() == 1);
+  CHECK(findSimilar({a, b}, one).pairs[0].shared < 3);
+  CHECK(findSimilar({a, b}).pairs.empty());  // the default asks for 3
 }

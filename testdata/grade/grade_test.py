@@ -531,6 +531,28 @@ def case_comment_limits(env):
     expect(r.returncode == 0, "granted by the person running rb test", r.stdout)
 
 
+def case_similarity(env):
+    # A disguised copy (names, numbers, comments and layout changed) is found with its lines side
+    # by side; a program of one's own is not; students never see it.
+    src = open(os.path.join(YARD, "class", "detour.bas")).read()
+    os.makedirs(env.path("class"))
+    env.write("class/chloe.bas", src)
+    disguised = (src.replace("n = ", "count = ").replace(" n\n", " count\n").replace("+ n", "+ count")
+                 .replace("n *", "count *").replace("120", "110").replace("// Chloe", "' my own work")
+                 .replace("  rForward", "    rForward"))
+    env.write("class/copy.bas", disguised)
+    env.write("class/own.bas", open(os.path.join(YARD, "class", "ccw.bas")).read())
+    a = env.write("a.toml", '[[check]]\nkind = "no-error"\n')
+    r = env.rb_run("test", "--format", "json", "--similarity", "-a", a, env.path("class"))
+    sim = json.loads(r.stdout)["similarity"]
+    expect(len(sim) == 1 and {os.path.basename(sim[0]["a"]), os.path.basename(sim[0]["b"])} == {"chloe.bas", "copy.bas"}
+           and sim[0]["score"] == 1.0, "the copy and only the copy", sim)
+    t = env.rb_run("test", "-q", "--similarity", "-a", a, env.path("class"))
+    expect("never a verdict" in t.stdout and "| " in t.stdout, "side by side in the text report", t.stdout)
+    s = env.rb_run("test", "-q", "--student", "--similarity", "-a", a, env.path("class"))
+    expect("Similar code" not in s.stdout, "not in a student's report", s.stdout)
+
+
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 
