@@ -59,12 +59,13 @@ std::string cleanUtf8(const std::string& s, bool xml) { return toUtf8(s, xml); }
 
 /// A check as a report shows it: hidden ones reduced to their verdict in a student's report.
 CheckResult shown(const CheckResult& c, bool student) {
-  if (!student || !c.hidden || c.passed) return c;
+  if (!student || !c.hidden) return c;
   CheckResult h;
   h.name = "hidden check";
-  h.passed = false;
+  h.passed = c.passed;
   h.checked = c.checked;
-  h.message = "a hidden check failed";
+  h.message = c.passed ? "passed" : "a hidden check failed";
+  h.note = c.note;
   h.points = c.points;
   h.earned = c.earned;
   h.hidden = true;
