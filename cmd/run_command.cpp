@@ -1,5 +1,7 @@
 #include "run_command.h"
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <string>
@@ -105,7 +107,20 @@ namespace {
 int executeRun(const RunOptions& opts) {
   if (opts.tui) return runTui(opts);
   HeadlessRun run;
-  return runHeadless("rb run", opts, CompileOptions{}, stdout, nullptr, run);
+  bool printed = false;
+  run.onCopy = [&printed](std::string_view text) { printed = printed || !text.empty(); };
+  int code = runHeadless("rb run", opts, CompileOptions{}, stdout, nullptr, run);
+  // A program that only draws shows nothing on a terminal: say once where the picture is. Not
+  // when the output goes to a pipe or a file (a script reads it), nor after an error.
+  if (code == exitcode::kOk && run.ran && !printed && ::isatty(STDOUT_FILENO) &&
+      (run.machine->canvas().version() != 0 || run.machine->robot().located())) {
+    std::string file = opts.file == "-" ? "prog.bas" : opts.file;
+    std::fprintf(stderr,
+                 "rb run: the program drew on the screen and printed nothing; watch it with "
+                 "'rb run --tui %s' or save the picture with 'rb render %s -o picture.png'\n",
+                 file.c_str(), file.c_str());
+  }
+  return code;
 }
 
 }  // namespace

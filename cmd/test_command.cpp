@@ -184,7 +184,8 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
   test->add_option("--junit", opts->junit, "Also write a JUnit XML report to FILE")->type_name("FILE");
   test->add_option("--csv", opts->csv, "Also write a CSV grade book to FILE")->type_name("FILE");
   test->add_option("--pictures", opts->pictures,
-                   "Write one PNG per program into DIR: its trail (red) over the solution's (green)")
+                   "Write one PNG per program into DIR: its trail (red) over the solution's (green), the "
+                   "waypoints and regions asked for, a legend (with --student: no solution)")
       ->type_name("DIR");
   test->add_option("--feedback", opts->feedback,
                    "Write one text file per program into DIR for its student: every check with its "

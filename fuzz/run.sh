@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets and runs them side by side, each for a bounded time:
 #   rb_fuzz      the front end (lexer, parser, checker, compiler, diagnostics), inputs <= 4 KiB
 #   rb_fuzz_run  whole runs (screen, robot, picture writers) under limits, inputs <= 64 KiB
+#   rb_fuzz_grade assignment files, rosters and similarity (rb test's inputs), inputs <= 16 KiB
 # Usage: fuzz/run.sh [seconds] [libFuzzer options...]   (seconds per target, default 60)
 # RB_FUZZ_TARGETS="rb_fuzz_run" picks targets; RB_FUZZ_BUILD=fuzz-fast uses the UBSan-only build
 # (build-fuzz-fast/, for long offline runs) instead of ASan + UBSan (build-fuzz/).
@@ -15,7 +16,7 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]]; then
   echo "usage: $0 [seconds] [libFuzzer options...]" >&2
   exit 64
 fi
-targets=${RB_FUZZ_TARGETS:-"rb_fuzz rb_fuzz_run"}
+targets=${RB_FUZZ_TARGETS:-"rb_fuzz rb_fuzz_run rb_fuzz_grade"}
 build=${RB_FUZZ_BUILD:-fuzz}
 case "$build" in
   fuzz|fuzz-fast) ;;
@@ -40,6 +41,14 @@ while IFS= read -r -d '' f; do
   n=$((n + 1))
 done < <(find "$root/testdata" "$root/examples" "$root/fuzz/repro" -name '*.bas' -type f -print0 2>/dev/null)
 echo "run.sh: $n seed programs"
+# rb test's inputs: the assignment files and rosters of the tests, and the programs.
+grade_seeds="$work/grade-seeds"
+mkdir -p "$grade_seeds"
+cp "$seeds"/* "$grade_seeds"/
+while IFS= read -r -d '' f; do
+  rel="${f#"$root"/}"
+  cp "$f" "$grade_seeds/${rel//\//_}"
+done < <(find "$root/testdata/grade" \( -name '*.toml' -o -name '*.csv' \) -type f -print0 2>/dev/null)
 
 # The dictionary: fuzz/bas.dict (keywords, operators, awkward numbers) plus every built-in name
 # from rb's own table, so the fuzzer reaches every command and function.
@@ -58,6 +67,7 @@ for target in $targets; do
     # Whole runs make strings of up to 64 MiB, which ASan's allocator keeps in its quarantine:
     # the process settles near 1.4 GiB.
     rb_fuzz_run) maxlen=65536; rss=3072 ;;
+    rb_fuzz_grade) maxlen=16384; rss=2048 ;;
     *) echo "run.sh: unknown target $target" >&2; exit 64 ;;
   esac
   corpus="$work/corpus-$target"
@@ -73,7 +83,7 @@ for target in $targets; do
     -artifact_prefix="$artifacts/$target-" \
     -print_final_stats=1 \
     "$@" \
-    "$corpus" "$seeds" > "$log" 2>&1 &
+    "$corpus" "$([ "$target" = rb_fuzz_grade ] && echo "$grade_seeds" || echo "$seeds")" > "$log" 2>&1 &
   pids[$target]=$!
 done
 failed=0

@@ -20,10 +20,10 @@ for arg in "$@"; do
     --sanitize) dir=build-asan; tests=ON; flags=(-DCMAKE_BUILD_TYPE=Debug -DRB_SANITIZE=ON) ;;
     --fuzz) dir=build-fuzz; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON
                                    -DCMAKE_CXX_COMPILER=clang++)
-            targets=(rb_fuzz rb_fuzz_run rb_fuzz_words) ;;
+            targets=(rb_fuzz rb_fuzz_run rb_fuzz_grade rb_fuzz_words) ;;
     --fuzz-fast) dir=build-fuzz-fast; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRB_FUZZ=ON
                                    -DRB_FUZZ_SANITIZERS=undefined -DCMAKE_CXX_COMPILER=clang++)
-            targets=(rb_fuzz rb_fuzz_run rb_fuzz_words) ;;
+            targets=(rb_fuzz rb_fuzz_run rb_fuzz_grade rb_fuzz_words) ;;
     *) echo "usage: $0 [--tests] [--sanitize|--fuzz|--fuzz-fast]" >&2; exit 64 ;;
   esac
 done

@@ -456,6 +456,19 @@ def test_input_terminal(rb):
         s.close()
 
 
+def test_draw_hint(rb):
+    """Headless on a terminal, a program that only draws is told where its picture is, once."""
+    s = Session(rb, "drawing.bas", tui=False)
+    try:
+        code = s.exit_code()
+        check(code == 0, f"exit status {code}")
+        err = s.stderr()
+        check(err.count("\n") == 1 and "rb run --tui drawing.bas" in err and "rb render drawing.bas -o" in err,
+              "stderr: " + err)
+    finally:
+        s.close()
+
+
 def test_real(rb):
     """With --real the status shows the link: the port, the commands sent, the last reply."""
     tmp = tempfile.mkdtemp(prefix="rbtui-robot-")
@@ -577,6 +590,7 @@ TESTS = {
     "real": test_real,
     "pixels": test_pixels,
     "input_terminal": test_input_terminal,
+    "draw_hint": test_draw_hint,
     "sixel": test_sixel,
 }
 
