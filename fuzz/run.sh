@@ -48,7 +48,7 @@ cp "$seeds"/* "$grade_seeds"/
 while IFS= read -r -d '' f; do
   rel="${f#"$root"/}"
   cp "$f" "$grade_seeds/${rel//\//_}"
-done < <(find "$root/testdata/grade" \( -name '*.toml' -o -name '*.csv' \) -type f -print0 2>/dev/null)
+done < <(find "$root/testdata/grade" "$root/fuzz/repro" \( -name '*.toml' -o -name '*.csv' \) -type f -print0 2>/dev/null)
 
 # The dictionary: fuzz/bas.dict (keywords, operators, awkward numbers) plus every built-in name
 # from rb's own table, so the fuzzer reaches every command and function.

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
 #include <filesystem>
 #include <set>
 #include <toml++/toml.h>
@@ -594,6 +597,91 @@ void readRun(const toml::table& run, const fs::path& dir, Assignment& a) {
   }
 }
 
+/// Where TOML's text may not have a byte of a non-ASCII character, by the TOML 1.0 grammar: outside
+/// strings and comments, and right after a multi-line basic string's line-ending backslash
+/// (where the reader skips white space). toml++ 3.3 classifies such characters with code that
+/// is undefined for many of them (upstream issues #190 and #295), so rb refuses them before
+/// toml++ reads the file, naming the line and column; it also refuses text that is not UTF-8.
+/// "" when the text is fine.
+std::string unreadableText(const std::string& text, toml::source_region& where) {
+  uint32_t line = 1, col = 1;
+  auto fail = [&](const std::string& why) {
+    where.begin.line = line;
+    where.begin.column = col;
+    return why;
+  };
+  enum { Plain, Comment, Basic, Literal, MultiBasic, MultiLiteral } state = Plain;
+  bool afterBackslashLine = false;  // in a multi-line basic string, skipping after "\" + newline
+  for (size_t i = 0; i < text.size();) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    size_t len = 1;
+    if (c >= 0x80) {
+      // A whole UTF-8 sequence, shortest form, no surrogates, at most U+10FFFF.
+      len = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
+      uint32_t cp = len == 4 ? c & 0x07u : len == 3 ? c & 0x0Fu : c & 0x1Fu;
+      bool ok = len >= 2 && c <= 0xF4 && i + len <= text.size();
+      for (size_t k = 1; ok && k < len; ++k) {
+        unsigned char d = static_cast<unsigned char>(text[i + k]);
+        ok = (d & 0xC0) == 0x80;
+        cp = cp << 6 | (d & 0x3Fu);
+      }
+      ok = ok && !(len == 2 && cp < 0x80) && !(len == 3 && cp < 0x800) && !(len == 4 && cp < 0x10000) &&
+           !(cp >= 0xD800 && cp <= 0xDFFF) && cp <= 0x10FFFF;
+      if (!ok) return fail("the file is not UTF-8 text: save it as UTF-8");
+      if (state == Plain) return fail("a character that is not ASCII outside a string or comment");
+      if (afterBackslashLine)
+        return fail("a character that is not ASCII first after a line-ending backslash in a string: "
+                    "end the line before without the backslash, or begin this text with an ASCII character");
+      i += len;
+      ++col;
+      continue;
+    }
+    auto starts = [&](const char* s) { return text.compare(i, std::strlen(s), s) == 0; };
+    if (c == '\n') {
+      ++line;
+      col = 1;
+      if (state == Comment) state = Plain;
+      ++i;
+      continue;
+    }
+    switch (state) {
+      case Plain:
+        if (c == '#') state = Comment;
+        else if (starts("\"\"\"")) state = MultiBasic, len = 3;
+        else if (starts("'''")) state = MultiLiteral, len = 3;
+        else if (c == '"') state = Basic;
+        else if (c == '\'') state = Literal;
+        break;
+      case Comment: break;
+      case Basic:
+        if (c == '\\') len = i + 1 < text.size() && text[i + 1] != '\n' ? 2 : 1;
+        else if (c == '"') state = Plain;
+        break;
+      case Literal:
+        if (c == '\'') state = Plain;
+        break;
+      case MultiBasic:
+        if (c == '\\') {
+          size_t j = i + 1;
+          while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r')) ++j;
+          if (j < text.size() && text[j] == '\n') afterBackslashLine = true;
+          else len = j < text.size() ? 2 : 1;
+        } else if (starts("\"\"\"")) {
+          state = Plain;
+          len = 3;
+        }
+        break;
+      case MultiLiteral:
+        if (starts("'''")) state = Plain, len = 3;
+        break;
+    }
+    if (afterBackslashLine && c != '\\' && c != ' ' && c != '\t' && c != '\r') afterBackslashLine = false;
+    i += len;
+    col += static_cast<uint32_t>(len);
+  }
+  return "";
+}
+
 }  // namespace
 
 const char* kindName(Check::Kind kind) {
@@ -684,7 +772,16 @@ std::optional<Assignment> loadAssignment(const std::string& path, std::string& e
   Assignment a;
   a.path = path;
   try {
-    toml::table root = toml::parse_file(path);
+    std::string content;
+    {
+      std::ifstream in(path, std::ios::binary);
+      std::ostringstream all;
+      all << in.rdbuf();
+      content = all.str();
+    }
+    toml::source_region where;
+    if (std::string why = unreadableText(content, where); !why.empty()) throw Bad{why, where};
+    toml::table root = toml::parse(content, path);
     onlyKeys(root, {"title", "solution", "world", "roster", "robot", "run", "check"}, "at the top of the assignment");
     a.title = fs::path(path).stem().string();
     if (const toml::node* n = root.get("title")) a.title = text(*n, "title");

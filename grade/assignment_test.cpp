@@ -144,3 +144,27 @@ TEST_CASE("mistakes in an assignment file say where and what", "[grade][assignme
   CHECK_FALSE(loadAssignment("/no/such/assignment.toml", error));
   CHECK(error == "/no/such/assignment.toml: no such file");
 }
+
+TEST_CASE("text toml++ cannot read safely is refused with its place", "[grade][assignment]") {
+  std::string error;
+  // Not ASCII outside a string or comment (toml++ 3.3 classifies it with undefined code).
+  CHECK_FALSE(load("x = 0%11\xCF\x91\n", error));
+  CHECK(error.find(":1:9: a character that is not ASCII outside a string or comment") != std::string::npos);
+  // First after a multi-line string's line-ending backslash, even after blanks.
+  CHECK_FALSE(load("title = \"\"\"\\\n   \xC2\xA7\"\"\"\n", error));
+  CHECK(error.find(":2:4: a character that is not ASCII first after a line-ending backslash") != std::string::npos);
+  // Not UTF-8.
+  CHECK_FALSE(load("title = \"a\xFF\"\n", error));
+  CHECK(error.find(":1:11: the file is not UTF-8 text") != std::string::npos);
+  CHECK_FALSE(load("title = \"\xED\xA0\x80\"\n", error));  // a surrogate
+  CHECK(error.find("not UTF-8") != std::string::npos);
+  // Strings, comments and keys in quotes may hold any character.
+  std::optional<Assignment> a = load("title = \"Caf\xC3\xA9 \xE2\x82\xAC\"  # \xC3\xA9t\xC3\xA9\n"
+                                     "[[check]]\nname = 'd\xC3\xA9j\xC3\xA0'\nkind = \"no-error\"\n"
+                                     "hint = \"\"\"\\\n  x \xC3\xA9\"\"\"\n", error);
+  INFO(error);
+  REQUIRE(a);
+  CHECK(a->title == "Caf\xC3\xA9 \xE2\x82\xAC");
+  CHECK(a->checks[0].name == "d\xC3\xA9j\xC3\xA0");
+  CHECK(a->checks[0].hint == "x \xC3\xA9");
+}

@@ -213,3 +213,85 @@ TEST_CASE("screens as runs compare as their pixels do", "[grade][checks]") {
   sb.width = 20;
   CHECK_FALSE(compareScreens(sa, sb));
 }
+
+TEST_CASE("output checks leave out what input showed unless prompts = true", "[grade][checks]") {
+  Assignment a;
+  References refs;
+  RunOutcome sol = finished(kSquare, {400, 300}, "How many sides? 4\nsides: 4\n");
+  sol.record->inputs = {{0, 16, 18}};
+  refs.solution.push_back(sol);
+  // Another prompt, and a print without a line end before it: the echo's line end ends it.
+  RunOutcome run = finished(kSquare, {400, 300}, "Go! Sides please: 4\nsides: 4\n");
+  run.record->inputs = {{4, 18, 20}};
+  CHECK(comparedOutput(run, false) == "Go! \nsides: 4\n");
+  CHECK(comparedOutput(sol, false) == "sides: 4\n");
+  CHECK(printedOutput("abc", {{1, 2, 9}}) == "a\n");  // a mark past the end of a cut output
+  Check same = check(Check::SolutionOutput);
+  Check text = check(Check::Output);
+  text.text = "sides: 4\n";
+  a.checks = {same, text};
+  RunOutcome quiet = finished(kSquare, {400, 300}, "Sides? 4\nsides: 4\n");
+  quiet.record->inputs = {{0, 7, 9}};
+  std::vector<CheckResult> r = checkAssignment(a, refs, {quiet}).checks;
+  CHECK(r[0].passed);
+  CHECK(r[1].passed);
+  a.checks[0].prompts = a.checks[1].prompts = true;
+  r = checkAssignment(a, refs, {quiet}).checks;
+  CHECK_FALSE(r[0].passed);
+  CHECK(r[0].message == "output differs at line 1: expected \"How many sides? 4\", got \"Sides? 4\" (the solution's output)");
+  CHECK_FALSE(r[1].passed);
+}
+
+TEST_CASE("required, after, gates and tiers decide what counts", "[grade][checks]") {
+  Assignment a;
+  References refs;
+  refs.aboutRobot = true;
+  Check noError = check(Check::NoError);
+  noError.required = true;
+  Check ends = check(Check::EndsIn);
+  Region box;
+  box.x1 = 390, box.y1 = 290, box.x2 = 410, box.y2 = 310;
+  ends.regions = {box};
+  Check later = check(Check::Trail, 3);
+  later.reference = kSquare;
+  later.after = "ends-in";
+  Check tiers = check(Check::Efficiency);
+  tiers.measure = Check::Statements;
+  tiers.tiers = {{10, 4}, {20, 2}};
+  tiers.points = 4;
+  a.checks = {noError, ends, later, tiers};
+
+  Grading g = checkAssignment(a, refs, {finished(kSquare, {400, 300})});  // 17 statements
+  CHECK(g.gate.empty());
+  CHECK(g.checks[3].passed);
+  CHECK(g.checks[3].earned == 2);  // the second tier
+
+  RunOutcome away = finished(kThree, {520, 300});
+  g = checkAssignment(a, refs, {away});
+  CHECK_FALSE(g.checks[1].passed);
+  CHECK_FALSE(g.checks[2].checked);
+  CHECK(g.checks[2].message == "not checked: needs \"ends-in\", which did not pass");
+  CHECK(g.checks[2].earned == 0);
+
+  RunOutcome crash = finished(kSquare, {400, 300});
+  crash.record->status = "error";
+  crash.record->error = DiagRecord{"p.bas", 3, 1, "error", "division by zero"};
+  g = checkAssignment(a, refs, {crash});
+  CHECK_FALSE(g.checks[0].passed);
+  CHECK(g.checks[1].passed);
+  CHECK(g.checks[1].earned == 0);
+  CHECK(g.checks[1].note == "not counted: the required check \"no-error\" did not pass");
+
+  RunOutcome empty = finished({}, {0, 0});
+  empty.record->statements = 0;
+  g = checkAssignment(a, refs, {empty});
+  CHECK(g.gate == "the program is empty: it has no statement");
+  for (const CheckResult& c : g.checks) CHECK((!c.checked && c.earned == 0));
+
+  RunOutcome still = finished({}, {400, 300});
+  still.record->moves = 0;
+  g = checkAssignment(a, refs, {still});
+  CHECK(g.gate == "the robot never moved: the program never places, moves or turns it");
+  refs.aboutRobot = false;
+  CHECK(checkAssignment(a, refs, {still}).gate.empty());
+}
