@@ -87,6 +87,7 @@ void Canvas::clear(Colour c) {
   forgetAllTraces();
   obstaclesChangedEverywhere();
   ++version_;
+  damageAll();
   cursor_ = {};
   ops_.clear();
   trailOpen_ = false;
@@ -232,6 +233,10 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
 
 void Canvas::rowChanged(int y, int first, int last, int firstFlip, int lastFlip) {
   ++version_;
+  if (damageOn_) {
+    damage_.add(first, y);
+    damage_.add(last, y);
+  }
   if (firstFlip >= 0) {
     ++obstacleVersion_;
     obstacleChanges_.addRow(y, firstFlip, lastFlip);
@@ -602,6 +607,7 @@ void Canvas::scrollUp(int pixels) {
   forgetAllTraces();
   obstaclesChangedEverywhere();
   ++version_;
+  damageAll();
   record([&] { return DrawOp{DrawOp::Raster, {}}; });
 }
 

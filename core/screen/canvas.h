@@ -210,6 +210,17 @@ class Canvas {
   }
   /// Changes whenever any pixel changes.
   uint64_t version() const { return version_; }
+  /// Where pixels changed since trackDamage(true) or the last takeDamage(): a recording of the
+  /// run encodes only that part of the screen. Not kept unless asked for.
+  void trackDamage(bool on) {
+    damageOn_ = on;
+    damage_ = {};
+  }
+  PixelBox takeDamage() {
+    PixelBox d = damage_;
+    damage_ = {};
+    return d;
+  }
 
   /// The display list: what was drawn since the last clearScr, for the SVG writer. Kept only
   /// when asked for (rb render -o x.svg); a run that never writes an SVG keeps none, so its
@@ -238,6 +249,7 @@ class Canvas {
     }
     p = c;
     ++version_;
+    if (damageOn_) [[unlikely]] damage_.add(x, y);
     if (liveTraces_ != 0) [[unlikely]] forgetTraces(y, x, x);
   }
   void brush(int x, int y, int width, Colour c);
@@ -320,6 +332,11 @@ class Canvas {
     obstacleChanges_.all = true;
   }
   uint64_t version_ = 1;
+  bool damageOn_ = false;
+  PixelBox damage_;
+  void damageAll() {
+    if (damageOn_) damage_.add(0, 0), damage_.add(kWidth - 1, kHeight - 1);
+  }
   Point cursor_;  ///< text cursor in pixels (top-left of the next character)
   bool keepOps_ = false;
   std::vector<DrawOp> ops_;
