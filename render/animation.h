@@ -1,0 +1,56 @@
+#pragma once
+// Replays of a recorded run (core/machine/recording.h): an animated GIF (giflib), an animated
+// SVG that plays in any browser without a script (CSS or SMIL), and one self-contained HTML page
+// with a player (the screen on a canvas, play/pause, speed, a timeline slider, step forward and
+// back, the source with the current line highlighted, the output so far, the robot's pose and
+// sensors). `rb render --animate OUT` writes them; rb test's replays use the same writers.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "machine/recording.h"
+#include "png_writer.h"
+
+namespace rb::render {
+
+/// Which moments of the recording become frames, and how fast they play.
+struct AnimationOptions {
+  double fps = 10;                      ///< frames per second of the animation (0.1 .. 100)
+  std::optional<double> duration;       ///< seconds the whole run should take (frames sampled)
+  std::optional<uint64_t> every;        ///< one frame every N statements
+  double hold = 2;                      ///< seconds the last frame stays before a GIF loops
+  int scale = 1;                        ///< pixels per screen pixel (1 .. kMaxScale)
+  size_t maxFrames = 2000;              ///< frames are sampled evenly down to this many
+};
+
+/// What the HTML player shows beside the screen: the program's text.
+struct PlayerSource {
+  std::string name;     ///< the file's name, shown as the title
+  std::string text;     ///< the main file's text (its lines, for highlighting)
+  uint32_t file = 0;    ///< the file index of the main file in the recording's locations
+};
+
+/// The recorded steps that become frames (indices into recording.steps()), first and last
+/// included, evenly sampled by the options.
+std::vector<size_t> animationFrames(const Recording& recording, const AnimationOptions& options);
+
+/// The picture of one recorded step: the keyframe in effect with the robot drawn at its pose,
+/// the same pixels `rb render` writes for the run stopped at that step.
+RgbImage frameImage(const Recording& recording, size_t step, int scale = 1);
+
+/// An animated GIF (GIF89a, looping, the RobotBASIC palette where it fits, frame delays from the
+/// fps, the last frame held). Throws std::runtime_error when giflib fails.
+std::vector<uint8_t> encodeGif(const Recording& recording, const AnimationOptions& options);
+/// An animated SVG (no script): the frames in turn, the last one held.
+std::string animatedSvg(const Recording& recording, const AnimationOptions& options);
+/// One self-contained HTML page (no network: everything inline) with the player.
+std::string htmlPlayer(const Recording& recording, const PlayerSource& source, const AnimationOptions& options);
+
+/// Writes the animation OUT's extension names (.gif, .svg, .html or .htm). On failure returns
+/// false with a message naming the file (or the unknown extension) in `error`.
+bool writeAnimation(const std::string& path, const Recording& recording, const PlayerSource& source,
+                    const AnimationOptions& options, std::string& error);
+
+}  // namespace rb::render
