@@ -138,6 +138,7 @@ int executeTest(const TestOptions& opts) {
     return result.fatalCode;
   }
   result.studentView = opts.student;
+  for (const std::string& w : result.warnings) std::fprintf(stderr, "rb test: warning: %s\n", w.c_str());
   bool written = true;
   if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result, g.paths) && written;
   if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;

@@ -488,6 +488,24 @@ ClassResult Grader::run() {
     bool solutionMoves = false;
     for (const RunOutcome& s : refs_.solution) solutionMoves = solutionMoves || (s.record && s.record->moves > 0);
     refs_.aboutRobot = assignment_->aboutRobot.value_or(assignment_->robotChecks() || solutionMoves);
+    // The solution graded by its own assignment: a teacher's post check it fails is a mistake
+    // in the assignment (every student would fail it too); any other check it fails is said.
+    if (!refs_.solution.empty()) {
+      Grading own = checkAssignment(*assignment_, refs_, refs_.solution);
+      for (size_t i = 0; i < own.checks.size(); ++i) {
+        const CheckResult& c = own.checks[i];
+        if (c.passed || !c.checked) continue;
+        std::string what = "the solution fails its own check '" + c.name + "': " + c.message;
+        if (assignment_->checks[i].kind == Check::Post) {
+          result_.fatal = what;
+          result_.fatalCode = 1;
+          fs::remove_all(temp_);
+          return result_;
+        }
+        result_.warnings.push_back(what);
+      }
+      if (!own.gate.empty()) result_.warnings.push_back("the solution earns nothing: " + own.gate);
+    }
   }
 
   // The class.

@@ -73,6 +73,8 @@ struct ClassResult {
   bool studentView = false;
   double maxPoints = 0;            ///< the assignment's points
   std::string timestamp;           ///< ISO 8601, UTC, when grading started
+  /// Things the teacher should know that do not stop grading ("the solution fails its own check").
+  std::vector<std::string> warnings;
   /// Pairs of programs with much code alike (GradeOptions::similarity).
   std::optional<SimilarityReport> similarity;
   // When grading could not happen at all: the message and rb's exit code (64 usage, 66 no

@@ -452,6 +452,17 @@ def case_goals(env):
     r = env.rb_run("test", "--format", "json", "-a", env.path("goals2.toml"), short)
     checks = {c["name"]: c for c in json.loads(r.stdout)["programs"][0]["checks"]}
     expect(checks["goal"]["message"] == "the robot stops at x = 500, short of the finish", "fail:", checks["goal"])
+    # The solution graded by its own assignment: a check it fails is said; a post check it fails
+    # stops grading (every student would fail it).
+    env.write("goals3.toml", open(a).read() + '[[check]]\nname = "far corner"\nkind = "visits"\nwaypoints = [[10, 10]]\n')
+    r = env.rb_run("test", "-q", "-a", env.path("goals3.toml"), good)
+    expect("rb test: warning: the solution fails its own check 'far corner': the robot misses point 1 (10, 10)"
+           in r.stderr, "warning", r.stderr)
+    env.write("strict.bas", 'print "fail: never good enough"\n')
+    env.write("goals4.toml", open(a).read() + '[[check]]\nname = "strict"\npost = "strict.bas"\n')
+    r = env.rb_run("test", "-q", "-a", env.path("goals4.toml"), good)
+    expect(r.returncode == 1 and "the solution fails its own check 'strict': never good enough" in r.stderr,
+           f"exit {r.returncode}", r.stderr)
 
 
 def case_class_files(env):
