@@ -13,6 +13,7 @@ packages=(
   libtomlplusplus-dev nlohmann-json3-dev   # rb test's assignment files (TOML); JSON everywhere
   libserialport-dev     # rb ports: the serial ports and what is known of each
   libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
+  libgif-dev            # rb render --animate OUT.gif: giflib writes the animated GIF
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
 )
 test_packages=(
