@@ -1,6 +1,7 @@
 #include "animation.h"
 
 #include <gif_lib.h>
+#include <png.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -133,9 +134,9 @@ struct FrameChange {
 };
 
 /// Walks the recorded steps in order and gives each one's picture as what changed since the
-/// last: the keyframes are applied one after the other (each once), and only the part where
-/// the screen changed or the robot was or is now is composed and compared. The pictures are
-/// frameImage()'s, pixel for pixel.
+/// last: the keyframes are applied one after the other (each once), noting the screen pixels
+/// that change; only those and the pixels the robot covered or covers now are composed and
+/// compared with the picture shown. The pictures are frameImage()'s, pixel for pixel.
 class Composer {
  public:
   Composer(const Recording& recording, int scale)
@@ -152,54 +153,50 @@ class Composer {
       robot.push_back(static_cast<uint32_t>(y) * static_cast<uint32_t>(width_) + static_cast<uint32_t>(x));
     });
     const uint32_t robotRgb = colourToRgb(s.robotColour);
-    const bool first = shown_.empty();
-    PixelBox region;
-    if (first) {
-      shown_.assign(static_cast<size_t>(width_) * static_cast<size_t>(height_), 0);
-      region = {0, 0, width_ - 1, height_ - 1};
-    } else {
-      if (!dirty_.empty()) {
-        region.add(dirty_.x0 * scale_, dirty_.y0 * scale_);
-        region.add((dirty_.x1 + 1) * scale_ - 1, (dirty_.y1 + 1) * scale_ - 1);
-      }
-      for (const std::vector<uint32_t>* list : {&robot_, &robot})
-        for (uint32_t p : *list) region.add(static_cast<int>(p % static_cast<uint32_t>(width_)), static_cast<int>(p / static_cast<uint32_t>(width_)));
-    }
-    dirty_ = {};
     FrameChange change;
-    if (region.empty()) {
+    if (shown_.empty()) {  // the first picture: all of it
+      const size_t area = static_cast<size_t>(width_) * static_cast<size_t>(height_);
+      shown_.resize(area);
+      for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) shown_[index(x, y)] = screenRgb(x, y);
+      for (uint32_t q : robot) shown_[q] = robotRgb;
+      want_ = shown_;
+      changed_.assign(area, 0);
+      for (uint32_t p : touched_) mark_[p] = 0;
+      touched_.clear();
       robot_ = std::move(robot);
+      change.width = width_;
+      change.height = height_;
+      change.rgb = shown_;
+      change.changed.assign(area, 1);
       return change;
     }
-    // The region's new pixels: the screen, then the robot on top.
-    const int rw = region.x1 - region.x0 + 1, rh = region.y1 - region.y0 + 1;
-    scratch_.resize(static_cast<size_t>(rw) * static_cast<size_t>(rh));
-    for (int y = 0; y < rh; ++y) {
-      const Colour* row = screen_.data() + static_cast<size_t>((region.y0 + y) / scale_) * kW;
-      uint32_t* out = scratch_.data() + static_cast<size_t>(y) * static_cast<size_t>(rw);
-      Colour last = row[region.x0 / scale_];
-      uint32_t rgb = colourToRgb(last);
-      for (int x = 0; x < rw; ++x) {
-        const Colour c = row[(region.x0 + x) / scale_];
-        if (c != last) {
-          last = c;
-          rgb = colourToRgb(c);
-        }
-        out[x] = rgb;
-      }
+    // What the picture should now be where it may have changed: the screen's new pixels, the
+    // screen where the robot was, then the robot where it is.
+    for (uint32_t p : touched_) {
+      const uint32_t rgb = colourToRgb(screen_[p]);
+      const int sx = static_cast<int>(p % kW) * scale_, sy = static_cast<int>(p / kW) * scale_;
+      for (int y = sy; y < sy + scale_; ++y)
+        for (int x = sx; x < sx + scale_; ++x) want_[index(x, y)] = rgb;
     }
-    for (uint32_t p : robot) {
-      const int x = static_cast<int>(p % static_cast<uint32_t>(width_)), y = static_cast<int>(p / static_cast<uint32_t>(width_));
-      scratch_[static_cast<size_t>(y - region.y0) * static_cast<size_t>(rw) + static_cast<size_t>(x - region.x0)] = robotRgb;
-    }
-    // The box of what differs from the picture shown.
+    for (uint32_t q : robot_) want_[q] = screenRgb(static_cast<int>(q % static_cast<uint32_t>(width_)), static_cast<int>(q / static_cast<uint32_t>(width_)));
+    for (uint32_t q : robot) want_[q] = robotRgb;
     PixelBox box;
-    for (int y = 0; y < rh; ++y) {
-      const uint32_t* now = scratch_.data() + static_cast<size_t>(y) * static_cast<size_t>(rw);
-      const uint32_t* was = shown_.data() + static_cast<size_t>(region.y0 + y) * static_cast<size_t>(width_) + static_cast<size_t>(region.x0);
-      for (int x = 0; x < rw; ++x)
-        if (first || now[x] != was[x]) box.add(region.x0 + x, region.y0 + y);
+    auto compare = [&](uint32_t q) {
+      if (want_[q] == shown_[q]) return;
+      shown_[q] = want_[q];
+      changed_[q] = 1;
+      box.add(static_cast<int>(q % static_cast<uint32_t>(width_)), static_cast<int>(q / static_cast<uint32_t>(width_)));
+    };
+    for (uint32_t p : touched_) {
+      mark_[p] = 0;
+      const int sx = static_cast<int>(p % kW) * scale_, sy = static_cast<int>(p / kW) * scale_;
+      for (int y = sy; y < sy + scale_; ++y)
+        for (int x = sx; x < sx + scale_; ++x) compare(static_cast<uint32_t>(index(x, y)));
     }
+    touched_.clear();
+    for (uint32_t q : robot_) compare(q);
+    for (uint32_t q : robot) compare(q);
     robot_ = std::move(robot);
     if (box.empty()) return change;
     change.x = box.x0;
@@ -210,74 +207,72 @@ class Composer {
     change.rgb.resize(area);
     change.changed.resize(area);
     for (int y = 0; y < change.height; ++y) {
-      const uint32_t* now = scratch_.data() + static_cast<size_t>(box.y0 + y - region.y0) * static_cast<size_t>(rw) +
-                            static_cast<size_t>(box.x0 - region.x0);
-      uint32_t* was = shown_.data() + static_cast<size_t>(box.y0 + y) * static_cast<size_t>(width_) + static_cast<size_t>(box.x0);
-      const size_t at = static_cast<size_t>(y) * static_cast<size_t>(change.width);
-      for (int x = 0; x < change.width; ++x) {
-        change.rgb[at + static_cast<size_t>(x)] = now[x];
-        change.changed[at + static_cast<size_t>(x)] = first || now[x] != was[x];
-        was[x] = now[x];
-      }
+      const size_t from = index(box.x0, box.y0 + y), at = static_cast<size_t>(y) * static_cast<size_t>(change.width);
+      std::copy_n(shown_.begin() + static_cast<long>(from), change.width, change.rgb.begin() + static_cast<long>(at));
+      std::copy_n(changed_.begin() + static_cast<long>(from), change.width, change.changed.begin() + static_cast<long>(at));
+      std::fill_n(changed_.begin() + static_cast<long>(from), change.width, uint8_t{0});
     }
     return change;
   }
 
  private:
-  /// Brings the screen to keyframe `frame`, noting where pixels changed.
-  void advance(uint32_t frame) {
-    const std::vector<RecordedFrame>& frames = rec_.frames();
-    if (frames.empty()) {
-      if (screen_.empty()) screen_.assign(kPixels, colours::kWhite);
-      return;
+  size_t index(int x, int y) const { return static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x); }
+  uint32_t screenRgb(int x, int y) const {
+    const Colour c = screen_[static_cast<size_t>(y / scale_) * kW + static_cast<size_t>(x / scale_)];
+    if (c != lastColour_) {
+      lastColour_ = c;
+      lastRgb_ = colourToRgb(c);
     }
-    frame = std::min<uint32_t>(frame, static_cast<uint32_t>(frames.size() - 1));
-    if (applied_ >= 0 && frame < static_cast<uint32_t>(applied_)) {  // steps go forward; be safe
-      screen_ = rec_.screen(frame);
-      applied_ = frame;
-      dirty_ = {0, 0, kW - 1, kH - 1};
-      return;
-    }
-    if (screen_.empty()) screen_.assign(kPixels, colours::kWhite);  // as Recording::screen starts
-    for (size_t f = static_cast<size_t>(applied_ + 1); f <= frame; ++f) apply(frames[f]);
-    applied_ = frame;
+    return lastRgb_;
   }
 
-  void apply(const RecordedFrame& f) {
-    size_t at = 0;
-    for (const ScreenRun& r : f.runs) {
-      const size_t n = std::min<size_t>(r.count, kPixels - at);
-      if (r.colour != kSameColour) {
-        size_t first = kPixels, last = 0;
-        for (size_t p = at; p < at + n; ++p)
-          if (screen_[p] != r.colour) {
-            screen_[p] = r.colour;
-            first = std::min(first, p);
-            last = p;
-          }
-        if (first != kPixels) {
-          const int y0 = static_cast<int>(first / kW), y1 = static_cast<int>(last / kW);
-          if (y0 == y1) {
-            dirty_.add(static_cast<int>(first % kW), y0);
-            dirty_.add(static_cast<int>(last % kW), y1);
-          } else {
-            dirty_.add(0, y0);
-            dirty_.add(kW - 1, y1);
-          }
-        }
+  /// Brings the screen to keyframe `frame`, noting the pixels that change.
+  void advance(uint32_t frame) {
+    if (screen_.empty()) {
+      screen_.assign(kPixels, colours::kWhite);  // as Recording::screen starts
+      mark_.assign(kPixels, 0);
+    }
+    const std::vector<RecordedFrame>& frames = rec_.frames();
+    if (frames.empty()) return;
+    frame = std::min<uint32_t>(frame, static_cast<uint32_t>(frames.size() - 1));
+    if (applied_ >= 0 && frame < static_cast<uint32_t>(applied_)) {  // steps go forward; be safe
+      const std::vector<Colour> now = rec_.screen(frame);
+      for (size_t p = 0; p < kPixels; ++p) set(p, now[p]);
+      applied_ = frame;
+      return;
+    }
+    for (size_t f = static_cast<size_t>(applied_ + 1); f <= frame; ++f) {
+      size_t at = 0;
+      for (const ScreenRun& r : frames[f].runs) {
+        const size_t n = std::min<size_t>(r.count, kPixels - at);
+        if (r.colour != kSameColour)
+          for (size_t p = at; p < at + n; ++p) set(p, r.colour);
+        at += n;
       }
-      at += n;
+    }
+    applied_ = frame;
+  }
+  void set(size_t p, Colour c) {
+    if (screen_[p] == c) return;
+    screen_[p] = c;
+    if (!mark_[p]) {
+      mark_[p] = 1;
+      touched_.push_back(static_cast<uint32_t>(p));
     }
   }
 
   const Recording& rec_;
   int scale_, width_, height_;
-  std::vector<Colour> screen_;    ///< the screen of keyframe applied_ (colour numbers)
+  std::vector<Colour> screen_;     ///< the screen of keyframe applied_ (colour numbers)
   long applied_ = -1;
-  PixelBox dirty_;                ///< screen pixels changed since the last moveTo
-  std::vector<uint32_t> shown_;   ///< the picture last given (0xRRGGBB); empty before the first
-  std::vector<uint32_t> robot_;   ///< the image pixels the robot covers in it
-  std::vector<uint32_t> scratch_;
+  std::vector<uint8_t> mark_;      ///< screen pixels changed since the last moveTo
+  std::vector<uint32_t> touched_;  ///< ... and their list
+  std::vector<uint32_t> shown_;    ///< the picture last given (0xRRGGBB); empty before the first
+  std::vector<uint32_t> want_;     ///< the picture being made
+  std::vector<uint8_t> changed_;   ///< image pixels that changed (cleared as they are given)
+  std::vector<uint32_t> robot_;    ///< the image pixels the robot covers in shown_
+  mutable Colour lastColour_ = kSameColour;
+  mutable uint32_t lastRgb_ = 0;
 };
 
 /// A GIF's delay in hundredths of a second: at least 2 (browsers slow shorter delays down to
@@ -512,18 +507,70 @@ std::string seconds(double s) {
   return out;
 }
 
+/// A frame's image as a data: URI of a PNG. In palette colours with the pixels that did not
+/// change transparent (they show what is under them, as in the GIF), which compresses a thin
+/// trail across a large box to little; a box of more than 255 colours is written whole, in RGB.
 std::string pngDataUri(const FrameChange& c) {
-  RgbImage image;
-  image.width = c.width;
-  image.height = c.height;
-  image.rgb.resize(c.rgb.size() * 3);
-  for (size_t i = 0; i < c.rgb.size(); ++i) {
-    image.rgb[i * 3] = static_cast<uint8_t>(c.rgb[i] >> 16);
-    image.rgb[i * 3 + 1] = static_cast<uint8_t>(c.rgb[i] >> 8);
-    image.rgb[i * 3 + 2] = static_cast<uint8_t>(c.rgb[i]);
+  const size_t area = c.rgb.size();
+  std::vector<uint8_t> indices(area);
+  std::vector<uint8_t> map = {0, 0, 0, 0};  // index 0: transparent
+  std::unordered_map<uint32_t, uint8_t> index;
+  bool fits = true;
+  uint32_t lastRgb = 0;
+  uint8_t last = 0;
+  for (size_t i = 0; i < area && fits; ++i) {
+    if (!c.changed[i]) continue;
+    const uint32_t rgb = c.rgb[i];
+    if (last == 0 || rgb != lastRgb) {
+      auto it = index.find(rgb);
+      if (it == index.end()) {
+        if (index.size() == 255) {
+          fits = false;
+          break;
+        }
+        it = index.emplace(rgb, static_cast<uint8_t>(index.size() + 1)).first;
+        map.insert(map.end(), {static_cast<uint8_t>(rgb >> 16), static_cast<uint8_t>(rgb >> 8), static_cast<uint8_t>(rgb), 255});
+      }
+      last = it->second;
+      lastRgb = rgb;
+    }
+    indices[i] = last;
   }
-  const std::vector<uint8_t> png = encodePng(image);
+  std::vector<uint8_t> png;
+  if (fits) {
+    png_image image;
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    image.width = static_cast<png_uint_32>(c.width);
+    image.height = static_cast<png_uint_32>(c.height);
+    image.format = PNG_FORMAT_RGBA_COLORMAP;
+    image.colormap_entries = static_cast<png_uint_32>(map.size() / 4);
+    png_alloc_size_t size = 0;
+    // The first call measures, the second writes.
+    if (!png_image_write_to_memory(&image, nullptr, &size, 0, indices.data(), 0, map.data()))
+      throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+    png.resize(size);
+    if (!png_image_write_to_memory(&image, png.data(), &size, 0, indices.data(), 0, map.data()))
+      throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+    png.resize(size);
+  } else {
+    RgbImage image;
+    image.width = c.width;
+    image.height = c.height;
+    image.rgb.resize(area * 3);
+    for (size_t i = 0; i < area; ++i) {
+      image.rgb[i * 3] = static_cast<uint8_t>(c.rgb[i] >> 16);
+      image.rgb[i * 3 + 1] = static_cast<uint8_t>(c.rgb[i] >> 8);
+      image.rgb[i * 3 + 2] = static_cast<uint8_t>(c.rgb[i]);
+    }
+    png = encodePng(image);
+  }
   return "data:image/png;base64," + base64(png.data(), png.size());
+}
+
+std::string svgImage(const FrameChange& c, const std::string& attributes) {
+  return "<image" + attributes + " x=\"" + std::to_string(c.x) + "\" y=\"" + std::to_string(c.y) + "\" width=\"" + std::to_string(c.width) +
+         "\" height=\"" + std::to_string(c.height) + "\" xlink:href=\"" + pngDataUri(c) + "\"/>";
 }
 
 }  // namespace
@@ -539,11 +586,9 @@ std::string animatedSvg(const Recording& recording, const AnimationOptions& opti
   for (size_t k = 0; k < times.steps.size(); ++k) {
     const FrameChange c = composer.moveTo(times.steps[k]);
     if (c.width == 0) continue;
-    body += "<image";
-    if (shown > 0) body += " class=\"f\" style=\"animation-delay:" + seconds(times.seconds[k]) + "s\"";
-    body += " x=\"" + std::to_string(c.x) + "\" y=\"" + std::to_string(c.y) + "\" width=\"" +
-            std::to_string(c.width) + "\" height=\"" + std::to_string(c.height) + "\" xlink:href=\"" +
-            pngDataUri(c) + "\"/>\n";
+    // Each image after the first appears at its frame's time and stays.
+    body += svgImage(c, shown == 0 ? "" : " class=\"f\" style=\"animation-delay:" + seconds(times.seconds[k]) + "s\"");
+    body += "\n";
     ++shown;
     end = times.seconds[k];
   }
@@ -552,8 +597,8 @@ std::string animatedSvg(const Recording& recording, const AnimationOptions& opti
       "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"" + w +
       "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n"
       "<!-- rb render --animate: " + std::to_string(shown) + " frames in " + seconds(end) +
-      " s. The first image is the whole screen; each one after it is the part that changed, shown from its "
-      "animation-delay on and kept, so the last frame stays. -->\n"
+      " s. The first image is the whole screen; each one after it is the box that changed (the pixels that did "
+      "not, transparent), shown from its animation-delay on and kept, so the last frame stays. -->\n"
       "<style>image{image-rendering:optimizeSpeed;image-rendering:pixelated}"
       ".f{visibility:hidden;animation:rb-show 0s forwards}"
       "@keyframes rb-show{to{visibility:visible}}</style>\n";
@@ -592,7 +637,7 @@ class Packer {
 std::vector<uint8_t> deflateBytes(const std::string& in) {
   uLongf size = compressBound(static_cast<uLong>(in.size()));
   std::vector<uint8_t> out(size);
-  if (compress2(out.data(), &size, reinterpret_cast<const Bytef*>(in.data()), static_cast<uLong>(in.size()), 9) != Z_OK)
+  if (compress2(out.data(), &size, reinterpret_cast<const Bytef*>(in.data()), static_cast<uLong>(in.size()), Z_DEFAULT_COMPRESSION) != Z_OK)
     throw std::runtime_error("zlib: cannot compress the player's data");
   out.resize(size);
   return out;
@@ -772,15 +817,47 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   const uint32_t white = indexOf(colours::kWhite);
 
   Packer p;
+  // The keyframes: the first whole, every other one as what changed since the one before (the
+  // recording's whole frames, there to make its own seeking quick, would be most of the page;
+  // the page keeps screens of its own to seek).
   size_t runs = 0;
-  for (const RecordedFrame& f : frames) {
-    p.u(f.full ? 1 : 0);
-    p.u(f.runs.size());
-    for (const ScreenRun& r : f.runs) {
-      p.u(r.count);
-      p.u(r.colour == kSameColour ? 0 : indexOf(r.colour) + 1);
+  {
+    std::vector<Colour> screen(kPixels, colours::kWhite);
+    std::vector<ScreenRun> changes;
+    for (size_t k = 0; k < frames.size(); ++k) {
+      const RecordedFrame& f = frames[k];
+      const std::vector<ScreenRun>* list = &f.runs;
+      if (k > 0 && f.full) {
+        const std::vector<Colour> now = screenFromRuns(f.runs, kPixels);
+        changes.clear();
+        for (size_t i = 0; i < kPixels;) {
+          size_t j = i;
+          if (now[i] == screen[i]) {
+            while (j < kPixels && now[j] == screen[j]) ++j;
+            changes.push_back({static_cast<uint32_t>(j - i), kSameColour});
+          } else {
+            while (j < kPixels && now[j] == now[i] && now[j] != screen[j]) ++j;
+            changes.push_back({static_cast<uint32_t>(j - i), now[i]});
+          }
+          i = j;
+        }
+        screen = now;
+        list = &changes;
+      } else {
+        size_t at = 0;
+        for (const ScreenRun& r : f.runs) {
+          const size_t len = std::min<size_t>(r.count, kPixels - at);
+          if (r.colour != kSameColour) std::fill_n(screen.begin() + static_cast<long>(at), len, r.colour);
+          at += len;
+        }
+      }
+      p.u(list->size());
+      for (const ScreenRun& r : *list) {
+        p.u(r.count);
+        p.u(r.colour == kSameColour ? 0 : indexOf(r.colour) + 1);
+      }
+      runs += list->size();
     }
-    runs += f.runs.size();
   }
 
   // The steps, a column at a time (each as differences from the step before: they compress).
@@ -1037,11 +1114,10 @@ const pal = meta.palette.map((rgb) => {
 function decode(r) {
   const d = {};
   const nf = meta.frames;
-  d.runStart = new Uint32Array(nf + 1); d.full = new Uint8Array(nf);
+  d.runStart = new Uint32Array(nf + 1);
   d.runLen = new Uint32Array(meta.runs); d.runCol = new Int32Array(meta.runs);
   let k = 0;
   for (let f = 0; f < nf; f++) {
-    d.full[f] = r.u();
     const c = r.u();
     d.runStart[f] = k;
     for (let j = 0; j < c; j++, k++) { d.runLen[k] = r.u(); d.runCol[k] = r.u() - 1; }
@@ -1083,10 +1159,11 @@ function start(d) {
   const ctx = $('screen').getContext('2d');
   const image = ctx.createImageData(W, H);
   const view = new Uint32Array(image.data.buffer);
-  const screen = new Uint32Array(W * H);
+  // The screen as palette indices; each keyframe is what changed since the one before, so the
+  // page keeps the screen of every SNAP-th keyframe to seek backwards quickly.
+  const screen = pal.length <= 65536 ? new Uint16Array(W * H) : new Uint32Array(W * H);
+  const SNAP = 256;
   let frameShown = -1;
-  const lastFull = new Int32Array(meta.frames);
-  for (let f = 0, g = 0; f < meta.frames; f++) { if (d.full[f]) g = f; lastFull[f] = g; }
   const poseStart = new Int32Array(n);
   for (let i = 0; i < n; i++) poseStart[i] = i === 0 || d.flags[i] & 8 ? i : poseStart[i - 1];
 
@@ -1094,15 +1171,22 @@ function start(d) {
     let pos = 0;
     for (let k = d.runStart[f], e = d.runStart[f + 1]; k < e; k++) {
       const len = d.runLen[k], c = d.runCol[k];
-      if (c >= 0) screen.fill(pal[c], pos, pos + len);
+      if (c >= 0) screen.fill(c, pos, pos + len);
       pos += len;
     }
   }
+  const snaps = [];
+  screen.fill(meta.white);
+  for (let f = 0; f < meta.frames; f++) {
+    apply(f);
+    if (f % SNAP === 0) snaps.push(screen.slice());
+  }
+  frameShown = meta.frames - 1;
   function toFrame(f) {
     if (f === frameShown || meta.frames === 0) return;
     let g;
-    if (frameShown >= 0 && f > frameShown && f - frameShown <= 256) g = frameShown + 1;
-    else { g = lastFull[f]; screen.fill(pal[meta.white]); }
+    if (f > frameShown && f - frameShown <= SNAP) g = frameShown + 1;
+    else { const s = Math.floor(f / SNAP); screen.set(snaps[s]); g = s * SNAP + 1; }
     for (; g <= f; g++) apply(g);
     frameShown = f;
   }
@@ -1246,7 +1330,7 @@ function start(d) {
     i = Math.max(0, Math.min(n - 1, Math.round(i)));
     current = i;
     toFrame(d.frame[i]);
-    view.set(screen);
+    for (let p = 0; p < W * H; p++) view[p] = pal[screen[p]];
     const c = pal[d.colour[i]];
     for (const p of robotPixels(i)) view[p] = c;
     ctx.putImageData(image, 0, 0);
