@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -42,6 +43,27 @@ enum class Format { Png, Svg, Text };
 
 /// The largest --cols / --rows: far beyond any terminal, small enough to stay fast.
 constexpr int kMaxCells = 2000;
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+/// A number option's valid range, in the message a bad value gets ("--fps: must be a number
+/// from 0.1 to 100, not '0'"); `whole`: whole numbers only.
+CLI::Validator numberFrom(double lo, double hi, bool whole = false) {
+  const std::string range = std::isinf(hi) ? number(lo) + " or more" : number(lo) + " to " + number(hi);
+  return CLI::Validator(
+      [lo, hi, whole, range](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        const bool ok = !text.empty() && end && *end == '\0' && v >= lo && v <= hi && (!whole || v == std::floor(v));
+        return ok ? "" : std::string("must be a ") + (whole ? "whole number" : "number") + (std::isinf(hi) ? ", " : " from ") +
+                             range + ", not '" + text + "'";
+      },
+      range);
+}
 
 /// OUT's extension, lower-cased (".PNG" is as good as ".png").
 std::string extensionOf(const std::string& path) {
@@ -243,29 +265,29 @@ void addRenderCommand(CLI::App& app, int& exitCode, bool withOptions) {
       "the extension. With -o or --ascii both are written from the one run")
       ->type_name("OUT");
   render->add_option("--fps", opts->animation.fps,
-                     "Frames per second of the replay (0.1..100, default 10)")
+                     "Frames per second of the replay (0.1 to 100, default 10)")
       ->type_name("N")
-      ->check(CLI::Range(render::kMinFps, render::kMaxFps))
+      ->check(numberFrom(render::kMinFps, render::kMaxFps))
       ->needs(animate);
   CLI::Option* duration = render->add_option(
       "--duration", opts->duration,
-      "Play the whole run in S seconds (0.01..3600): frames at evenly spaced statements, --fps "
+      "Play the whole run in S seconds (0.01 to 3600): frames at evenly spaced statements, --fps "
       "of them a second (at most 2000)")
       ->type_name("S")
-      ->check(CLI::Range(1 / render::kMaxFps, render::kMaxDuration))
+      ->check(numberFrom(1 / render::kMaxFps, render::kMaxDuration))
       ->needs(animate);
   CLI::Option* every = render->add_option(
       "--every", opts->every,
       "One frame every N statements (at most 2000 frames, then evenly sampled) instead of one per "
       "visible change")
       ->type_name("N")
-      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 62))
+      ->check(numberFrom(1, 1e18, true))
       ->needs(animate);
   every->excludes(duration);
   render->add_option("--hold", opts->animation.hold,
-                     "Seconds the GIF shows its last frame before it loops (0..600, default 2)")
+                     "Seconds the GIF shows its last frame before it loops (0 to 600, default 2)")
       ->type_name("S")
-      ->check(CLI::Range(0.0, render::kMaxHold))
+      ->check(numberFrom(0, render::kMaxHold))
       ->needs(animate);
   addRunLimitOptions(*render, opts->run);
   render->footer(

@@ -596,7 +596,7 @@ std::string animatedSvg(const Recording& recording, const AnimationOptions& opti
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"" + w +
       "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n"
-      "<!-- rb render --animate: " + std::to_string(shown) + " frames in " + seconds(end) +
+      "<!-- A replay written by rb render: " + std::to_string(shown) + " frames in " + seconds(end) +
       " s. The first image is the whole screen; each one after it is the box that changed (the pixels that did "
       "not, transparent), shown from its animation-delay on and kept, so the last frame stays. -->\n"
       "<style>image{image-rendering:optimizeSpeed;image-rendering:pixelated}"
@@ -1031,9 +1031,9 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
       "<header><h1 id=\"title\"></h1><span id=\"ending\"></span></header>\n"
       "<main>\n<section id=\"stage\">\n<canvas id=\"screen\" width=\"800\" height=\"600\"></canvas>\n"
       "<div id=\"controls\">"
-      "<button id=\"back\" title=\"one recorded step back (Left)\" aria-label=\"step back\">&#x23EE;</button>"
-      "<button id=\"play\" title=\"play or pause (Space)\" aria-label=\"play\">&#x25B6;</button>"
-      "<button id=\"forward\" title=\"one recorded step forward (Right)\" aria-label=\"step forward\">&#x23ED;</button>"
+      "<button id=\"back\" title=\"one recorded step back (Left)\">&#x25C0; step</button>"
+      "<button id=\"play\" title=\"play or pause (Space)\">&#x25B6; play</button>"
+      "<button id=\"forward\" title=\"one recorded step forward (Right)\">step &#x25B6;</button>"
       "<input id=\"timeline\" type=\"range\" min=\"0\" max=\"0\" value=\"0\" aria-label=\"timeline\">"
       "<label>speed <select id=\"speed\"><option>0.25</option><option>0.5</option><option selected>1</option>"
       "<option>2</option><option>4</option><option>8</option><option>16</option></select></label>"
@@ -1065,7 +1065,7 @@ main{display:flex;flex-wrap:wrap;gap:1em;padding:1em}
 #stage{flex:0 0 auto;max-width:100%}
 canvas{display:block;image-rendering:pixelated;border:1px solid var(--line);max-width:100%;height:auto}
 #controls{display:flex;gap:.4em;align-items:center;margin-top:.5em}
-#controls button{font-size:1.1em;min-width:2.2em}
+#controls button{font:inherit;white-space:nowrap}
 #timeline{flex:1}
 #position{font-variant-numeric:tabular-nums;margin-top:.3em}
 #banner{margin-top:.5em;padding:.4em .6em;border-left:4px solid var(--err);background:var(--pane)}
@@ -1250,7 +1250,7 @@ function start(d) {
     'stopped': 'stopped',
   }[meta.status] || meta.status;
   $('ending').textContent = ended + ' after ' + meta.totalSteps + ' statements' +
-      (meta.stride > 1 ? ' (every ' + meta.stride + 'th statement kept)' : '');
+      (meta.stride > 1 ? ' (1 statement in ' + meta.stride + ' kept)' : '');
   const fmt = (v) => (Math.round(v * 100) / 100).toFixed(2);
   const where = (file, line) => (file === meta.file ? 'line ' + line : 'line ' + line + ' of an included file');
 
@@ -1362,8 +1362,7 @@ function start(d) {
     if (playing) return;
     if (current >= n - 1) show(0);
     playing = true;
-    playButton.innerHTML = '&#x23F8;';
-    playButton.setAttribute('aria-label', 'pause');
+    playButton.textContent = '\u25A0 pause';
     next = firstAfter(current);
     baseMs = next > 0 ? d.playMs[next - 1] : 0;
     anchor = performance.now();
@@ -1374,8 +1373,7 @@ function start(d) {
     playing = false;
     if (timer) clearTimeout(timer);
     timer = 0;
-    playButton.innerHTML = '&#x25B6;';
-    playButton.setAttribute('aria-label', 'play');
+    playButton.textContent = '\u25B6 play';
   }
   playButton.addEventListener('click', () => (playing ? pause() : play()));
   $('back').addEventListener('click', () => { pause(); show(current - 1); });
@@ -1406,17 +1404,18 @@ function start(d) {
   };
 }
 
-window.rbPlayer = {
-  ready: (async () => {
+// window.rbPlayer: the player's state and actions once `ready` resolves (tests drive it).
+const player = {};
+window.rbPlayer = player;
+player.ready = (async () => {
     try {
-      Object.assign(window.rbPlayer, start(decode(new Reader(await unpack()))));
+      Object.defineProperties(player, Object.getOwnPropertyDescriptors(start(decode(new Reader(await unpack())))));
     } catch (e) {
       $('banner').hidden = false;
       $('banner').textContent = 'This replay cannot play here: ' + e;
       throw e;
     }
-  })(),
-};
+})();
 })();
 )JS";
 

@@ -404,6 +404,9 @@ TEST_CASE("the animated SVG: the first frame whole, then the parts that changed,
   CHECK(svg.rfind("<?xml", 0) == 0);
   CHECK(svg.find("<script") == std::string::npos);
   CHECK(svg.find("@keyframes") != std::string::npos);
+  // Well-formed XML: a comment holds no "--".
+  for (size_t at = svg.find("<!--"); at != std::string::npos; at = svg.find("<!--", at + 4))
+    CHECK(svg.substr(at + 4, svg.find("-->", at) - at - 4).find("--") == std::string::npos);
   // Put the images together in order, as a browser shows them once all have appeared: each
   // after the first at a later time, its opaque pixels over what is there.
   const std::regex image(R"re(<image( class="f" style="animation-delay:([0-9.]+)s")? x="(\d+)" y="(\d+)" width="(\d+)" height="(\d+)" xlink:href="data:image/png;base64,([A-Za-z0-9+/=]+)"/>)re");

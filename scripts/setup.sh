@@ -22,6 +22,8 @@ test_packages=(
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks
+  chromium              # the replays of rb render --animate played in a real browser (headless, driven
+                        # over the DevTools protocol on a pipe by testdata/render/replay_browser.py)
 )
 bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers
