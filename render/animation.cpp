@@ -126,11 +126,17 @@ namespace {
 
 /// What changed in the picture from one frame to the next: the smallest box of image pixels
 /// holding every pixel that differs, the box's new pixels (0xRRGGBB, row-major) and which of
-/// them differ. `width` 0: nothing changed.
+/// them differ. `width` 0: nothing changed. The first picture is all of it: `whole` points to
+/// its pixels (not copied: at --scale 8 it is 123 MB) and every pixel counts as changed.
 struct FrameChange {
   int x = 0, y = 0, width = 0, height = 0;
   std::vector<uint32_t> rgb;
   std::vector<uint8_t> changed;
+  const std::vector<uint32_t>* whole = nullptr;
+
+  size_t area() const { return static_cast<size_t>(width) * static_cast<size_t>(height); }
+  uint32_t pixel(size_t i) const { return whole ? (*whole)[i] : rgb[i]; }
+  bool changedAt(size_t i) const { return whole || changed[i]; }
 };
 
 /// Walks the recorded steps in order and gives each one's picture as what changed since the
@@ -160,33 +166,26 @@ class Composer {
       for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) shown_[index(x, y)] = screenRgb(x, y);
       for (uint32_t q : robot) shown_[q] = robotRgb;
-      want_ = shown_;
       changed_.assign(area, 0);
       for (uint32_t p : touched_) mark_[p] = 0;
       touched_.clear();
       robot_ = std::move(robot);
       change.width = width_;
       change.height = height_;
-      change.rgb = shown_;
-      change.changed.assign(area, 1);
+      change.whole = &shown_;
       return change;
     }
-    // What the picture should now be where it may have changed: the screen's new pixels, the
-    // screen where the robot was, then the robot where it is.
-    for (uint32_t p : touched_) {
-      const uint32_t rgb = colourToRgb(screen_[p]);
-      const int sx = static_cast<int>(p % kW) * scale_, sy = static_cast<int>(p / kW) * scale_;
-      for (int y = sy; y < sy + scale_; ++y)
-        for (int x = sx; x < sx + scale_; ++x) want_[index(x, y)] = rgb;
-    }
-    for (uint32_t q : robot_) want_[q] = screenRgb(static_cast<int>(q % static_cast<uint32_t>(width_)), static_cast<int>(q / static_cast<uint32_t>(width_)));
-    for (uint32_t q : robot) want_[q] = robotRgb;
+    // Where the picture may have changed (the screen's changed pixels, where the robot was and
+    // where it is), what it is now: the robot (rasterize gives its pixels in order) or else the
+    // screen.
     PixelBox box;
     auto compare = [&](uint32_t q) {
-      if (want_[q] == shown_[q]) return;
-      shown_[q] = want_[q];
+      const int x = static_cast<int>(q % static_cast<uint32_t>(width_)), y = static_cast<int>(q / static_cast<uint32_t>(width_));
+      const uint32_t now = std::binary_search(robot.begin(), robot.end(), q) ? robotRgb : screenRgb(x, y);
+      if (now == shown_[q]) return;
+      shown_[q] = now;
       changed_[q] = 1;
-      box.add(static_cast<int>(q % static_cast<uint32_t>(width_)), static_cast<int>(q / static_cast<uint32_t>(width_)));
+      box.add(x, y);
     };
     for (uint32_t p : touched_) {
       mark_[p] = 0;
@@ -268,7 +267,6 @@ class Composer {
   std::vector<uint8_t> mark_;      ///< screen pixels changed since the last moveTo
   std::vector<uint32_t> touched_;  ///< ... and their list
   std::vector<uint32_t> shown_;    ///< the picture last given (0xRRGGBB); empty before the first
-  std::vector<uint32_t> want_;     ///< the picture being made
   std::vector<uint8_t> changed_;   ///< image pixels that changed (cleared as they are given)
   std::vector<uint32_t> robot_;    ///< the image pixels the robot covers in shown_
   mutable Colour lastColour_ = kSameColour;
@@ -403,6 +401,12 @@ class GifWriter {
   GifWriter& operator=(const GifWriter&) = delete;
 
   GifFileType* gif() { return gif_; }
+  size_t size() const { return bytes_.size(); }
+  /// Sets the delay (hundredths of a second) of a frame already written, at `at`.
+  void setDelay(size_t at, int centis) {
+    bytes_.at(at) = static_cast<uint8_t>(centis & 255);
+    bytes_.at(at + 1) = static_cast<uint8_t>(centis >> 8);
+  }
   void check(int result) {
     if (result == GIF_ERROR) fail(gif_->Error);
   }
@@ -423,14 +427,17 @@ class GifWriter {
   GifFileType* gif_ = nullptr;
 };
 
-void putGifFrame(GifWriter& w, GifColours& colours, const FrameChange& c, int delay, bool first) {
+/// Writes a frame with a delay to be set later (setDelay) and returns where that delay is.
+size_t putGifFrame(GifWriter& w, GifColours& colours, const FrameChange& c, bool first) {
   GraphicsControlBlock gcb{};
   gcb.DisposalMode = DISPOSE_DO_NOT;  // the next frame draws over this one
   gcb.UserInputFlag = false;
-  gcb.DelayTime = delay;
+  gcb.DelayTime = 0;
   gcb.TransparentColor = first ? NO_TRANSPARENT_COLOR : colours.transparent();
   GifByteType ext[4];
   EGifGCBToExtension(&gcb, ext);
+  // giflib writes at once: the extension is 21 F9 04, the packed byte, then the delay.
+  const size_t delayAt = w.size() + 4;
   w.check(EGifPutExtension(w.gif(), GRAPHICS_EXT_FUNC_CODE, 4, ext));
   w.check(EGifPutImageDesc(w.gif(), c.x, c.y, c.width, c.height, false, nullptr));
   std::vector<GifPixelType> line(static_cast<size_t>(c.width));
@@ -438,10 +445,11 @@ void putGifFrame(GifWriter& w, GifColours& colours, const FrameChange& c, int de
     const size_t at = static_cast<size_t>(y) * static_cast<size_t>(c.width);
     for (int x = 0; x < c.width; ++x) {
       const size_t i = at + static_cast<size_t>(x);
-      line[static_cast<size_t>(x)] = c.changed[i] ? colours.of(c.rgb[i]) : colours.transparent();
+      line[static_cast<size_t>(x)] = c.changedAt(i) ? colours.of(c.pixel(i)) : colours.transparent();
     }
     w.check(EGifPutLine(w.gif(), line.data(), c.width));
   }
+  return delayAt;
 }
 
 }  // namespace
@@ -468,29 +476,25 @@ std::vector<uint8_t> encodeGif(const Recording& recording, const AnimationOption
   w.check(EGifPutExtensionBlock(w.gif(), 3, loop));
   w.check(EGifPutExtensionTrailer(w.gif()));
 
-  // A frame is written once the next one's time gives its delay. One that would show for less
-  // than 2/100 s is skipped: its changes come with the next frame, and the times stay.
-  std::optional<FrameChange> pending;
-  long pendingStart = 0;
-  bool first = true;
+  // Each frame's delay is set once the next frame's time is known. A frame that would show for
+  // less than 2/100 s is skipped: its changes come with the next frame, and the times stay.
+  std::optional<size_t> delayAt;  // of the frame written last
+  long shownFrom = 0;             // ... and its time
   const size_t count = times.steps.size();
   for (size_t k = 0; k < count; ++k) {
     long start = std::lround(times.seconds[k] * 100);
     const bool last = k + 1 == count;
-    if (pending && start - pendingStart < 2) {
+    if (delayAt && start - shownFrom < 2) {
       if (!last) continue;
-      start = pendingStart + 2;
+      start = shownFrom + 2;
     }
-    FrameChange change = composer.moveTo(times.steps[k]);
-    if (pending && change.width == 0) continue;  // nothing new shows: the frame before lasts
-    if (pending) {
-      putGifFrame(w, colours, *pending, gifDelay(start - pendingStart), first);
-      first = false;
-    }
-    pending = std::move(change);
-    pendingStart = start;
+    const FrameChange change = composer.moveTo(times.steps[k]);
+    if (delayAt && change.width == 0) continue;  // nothing new shows: the frame before lasts
+    if (delayAt) w.setDelay(*delayAt, gifDelay(start - shownFrom));
+    delayAt = putGifFrame(w, colours, change, !delayAt);
+    shownFrom = start;
   }
-  if (pending) putGifFrame(w, colours, *pending, gifDelay(std::lround(std::clamp(options.hold, 0.0, kMaxHold) * 100)), first);
+  if (delayAt) w.setDelay(*delayAt, gifDelay(std::lround(std::clamp(options.hold, 0.0, kMaxHold) * 100)));
   return w.finish();
 }
 
@@ -511,7 +515,7 @@ std::string seconds(double s) {
 /// change transparent (they show what is under them, as in the GIF), which compresses a thin
 /// trail across a large box to little; a box of more than 255 colours is written whole, in RGB.
 std::string pngDataUri(const FrameChange& c) {
-  const size_t area = c.rgb.size();
+  const size_t area = c.area();
   std::vector<uint8_t> indices(area);
   std::vector<uint8_t> map = {0, 0, 0, 0};  // index 0: transparent
   std::unordered_map<uint32_t, uint8_t> index;
@@ -519,8 +523,8 @@ std::string pngDataUri(const FrameChange& c) {
   uint32_t lastRgb = 0;
   uint8_t last = 0;
   for (size_t i = 0; i < area && fits; ++i) {
-    if (!c.changed[i]) continue;
-    const uint32_t rgb = c.rgb[i];
+    if (!c.changedAt(i)) continue;
+    const uint32_t rgb = c.pixel(i);
     if (last == 0 || rgb != lastRgb) {
       auto it = index.find(rgb);
       if (it == index.end()) {
@@ -559,9 +563,10 @@ std::string pngDataUri(const FrameChange& c) {
     image.height = c.height;
     image.rgb.resize(area * 3);
     for (size_t i = 0; i < area; ++i) {
-      image.rgb[i * 3] = static_cast<uint8_t>(c.rgb[i] >> 16);
-      image.rgb[i * 3 + 1] = static_cast<uint8_t>(c.rgb[i] >> 8);
-      image.rgb[i * 3 + 2] = static_cast<uint8_t>(c.rgb[i]);
+      const uint32_t rgb = c.pixel(i);
+      image.rgb[i * 3] = static_cast<uint8_t>(rgb >> 16);
+      image.rgb[i * 3 + 1] = static_cast<uint8_t>(rgb >> 8);
+      image.rgb[i * 3 + 2] = static_cast<uint8_t>(rgb);
     }
     png = encodePng(image);
   }
@@ -1160,9 +1165,10 @@ function start(d) {
   const image = ctx.createImageData(W, H);
   const view = new Uint32Array(image.data.buffer);
   // The screen as palette indices; each keyframe is what changed since the one before, so the
-  // page keeps the screen of every SNAP-th keyframe to seek backwards quickly.
+  // page keeps the screen of every SNAP-th keyframe to seek backwards quickly (at most 64 of
+  // them: about 60 MB).
   const screen = pal.length <= 65536 ? new Uint16Array(W * H) : new Uint32Array(W * H);
-  const SNAP = 256;
+  const SNAP = Math.max(256, Math.ceil(meta.frames / 64));
   let frameShown = -1;
   const poseStart = new Int32Array(n);
   for (let i = 0; i < n; i++) poseStart[i] = i === 0 || d.flags[i] & 8 ? i : poseStart[i - 1];
@@ -1322,8 +1328,11 @@ function start(d) {
       out.textContent = text;
       out.scrollTop = out.scrollHeight;
     }
-    const read = meta.inputs.filter((x) => x[0] < s);
-    $('inputs').textContent = read.length ? 'input read: ' + read.map((x) => JSON.stringify(x[1])).join(', ') : '';
+    let read = 0;
+    while (read < meta.inputs.length && meta.inputs[read][0] < s) read++;
+    const last = meta.inputs.slice(Math.max(0, read - 10), read).map((x) => JSON.stringify(x[1]));
+    $('inputs').textContent = read === 0 ? '' : 'input read: ' + read + ' line' + (read > 1 ? 's' : '') +
+        (read > 10 ? ', the last 10: \u2026 ' : ': ') + last.join(', ');
   }
 
   function show(i) {
@@ -1388,6 +1397,8 @@ function start(d) {
   });
   document.addEventListener('keydown', (e) => {
     if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+    // A focused button takes Space and Enter itself (a click).
+    if (e.target instanceof HTMLButtonElement && (e.key === ' ' || e.key === 'Enter')) return;
     if (e.key === ' ') { e.preventDefault(); playing ? pause() : play(); }
     else if (e.key === 'ArrowLeft') { pause(); show(current - 1); }
     else if (e.key === 'ArrowRight') { pause(); show(current + 1); }

@@ -359,8 +359,8 @@ class Env:
             f.write(text)
         return p
 
-    def render(self, *args, code=0):
-        r = subprocess.run([self.rb, "render", *args], capture_output=True, text=True, timeout=120)
+    def render(self, *args, code=0, stdin=""):
+        r = subprocess.run([self.rb, "render", *args], capture_output=True, text=True, timeout=120, input=stdin)
         expect(r.returncode == code, f"rb render {' '.join(args)}: exit {r.returncode}, expected {code}\n{r.stderr}")
         return r
 
@@ -445,12 +445,12 @@ def case_html_steps(env):
     that step (the GIF's frames are rb render's pictures, render/animation_test.cpp), the robot
     drawn pixel for pixel; the sensors and the output follow."""
     prog = env.program("roam.bas",
-                       "rLocate 400, 300\nrInvisible RED\nrPen DOWN\nfor i = 1 to 150\n"
-                       "  if rFeel() then rTurn 77 else rForward 3\n  if i % 50 = 0 then rTurn 33.3\n"
+                       "input \"turn? \", t\nrLocate 400, 300\nrInvisible RED\nrPen DOWN\nfor i = 1 to 150\n"
+                       "  if rFeel() then rTurn 77 else rForward 3\n  if i % 50 = 0 then rTurn t\n"
                        "  if i % 60 = 0 then print \"i = \" + i\nnext\n")
     html, gif, png = env.path("roam.html"), env.path("roam.gif"), env.path("roam.png")
-    env.render(prog, "--animate", html, "--every", "1")
-    env.render(prog, "--animate", gif, "--every", "1", "-o", png)
+    env.render(prog, "--animate", html, "--every", "1", stdin="33.3\n")
+    env.render(prog, "--animate", gif, "--every", "1", "-o", png, stdin="33.3\n")
     width, _, frames, delays = read_gif(open(gif, "rb").read())
     b = env.start()
     env.open_player(html)
@@ -482,9 +482,12 @@ def case_html_steps(env):
     sensors = b.js("document.getElementById('sensors').textContent")
     expect("rFeel" in sensors, f"no sensor shown: {sensors!r}")
     output = b.js("document.getElementById('output').textContent")
-    expect(output == "i = 60\ni = 120\n", f"the output at the end is {output!r}")
+    expect(output == "turn? 33.3\ni = 60\ni = 120\n", f"the output at the end is {output!r}")
+    inputs = b.js("document.getElementById('inputs').textContent")
+    expect(inputs == 'input read: 1 line: "33.3"', f"the input read shows as {inputs!r}")
     b.js("rbPlayer.show(0); true")
     expect(b.js("document.getElementById('output').textContent") == "", "output shows before anything printed")
+    expect(b.js("document.getElementById('inputs').textContent") == "", "input shows before it was read")
     env.expect_quiet()
 
 
