@@ -485,7 +485,7 @@ TEST_CASE("the HTML player is one page with its data inline", "[render][animatio
   CHECK(scripts == 3);
 }
 
-TEST_CASE("writeAnimation: the format from the extension; errors name the file", "[render][animation]") {
+TEST_CASE("writeAnimation: the format from the extension, errors that name the file", "[render][animation]") {
   auto rec = record(figure17());
   PlayerSource source{"fig_1_7.bas", figure17(), 0};
   AnimationOptions options;
