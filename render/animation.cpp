@@ -10,8 +10,8 @@
 #include <cstring>
 #include <filesystem>
 #include <iterator>
-#include <optional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -93,9 +93,9 @@ FrameTimes animationTimes(const Recording& recording, const AnimationOptions& op
       if (candidates.empty() || candidates.back() != i) candidates.push_back(i);
       if (i + 1 >= steps.size()) break;
       const uint64_t next = steps[i + 1].step;
-      if (next / every > (std::numeric_limits<uint64_t>::max() - every) / every) break;
-      target = (next + every - 1) / every * every;
-      if (target > last) break;
+      const uint64_t multiple = next / every + (next % every != 0 ? 1 : 0);
+      if (multiple > last / every) break;  // past the end (and no overflow below)
+      target = multiple * every;
     }
   } else {
     // One frame per step whose picture differs from the step before.
