@@ -402,11 +402,11 @@ def case_html_plays(env):
     expect(b.js("rbPlayer.step") == 0, "the player does not start at the first step")
     white = b.js("__rgb().every((v) => v === 255)")
     expect(white, "the first step is not the white screen")
-    # Play at 4 times the speed (11 frames at 10 a second: a quarter of a second), noting each
-    # position the player shows.
+    # Play at twice the speed (11 frames at 10 a second: half a second), noting each position
+    # the player shows.
     b.js("window.__seen = []; new MutationObserver(() => __seen.push(rbPlayer.step))"
          ".observe(document.getElementById('position'), {childList: true, characterData: true, subtree: true});"
-         "document.getElementById('speed').value = '4'; document.getElementById('speed')"
+         "document.getElementById('speed').value = '2'; document.getElementById('speed')"
          ".dispatchEvent(new Event('change')); document.getElementById('play').click(); true")
     expect(b.js("rbPlayer.playing"), "play did not start")
     deadline = time.monotonic() + 20
@@ -414,8 +414,11 @@ def case_html_plays(env):
         expect(time.monotonic() < deadline, "the player did not reach the end")
         time.sleep(0.05)
     expect(b.js("rbPlayer.step") == 17, f"playing stopped at step {b.js('rbPlayer.step')}, not the end")
-    seen = b.js("__seen")
-    expect(seen == [1, 6, 7, 9, 10, 12, 13, 15, 16, 17], f"playing showed the steps {seen}")
+    # The animation's frames in order (a machine too busy to draw every frame in time skips
+    # some, never the end).
+    seen, frames = b.js("__seen"), [1, 6, 7, 9, 10, 12, 13, 15, 16, 17]
+    expect(seen == sorted(set(seen)) and set(seen) <= set(frames) and seen[-1] == 17 and len(seen) >= 5,
+           f"playing showed the steps {seen}, not the frames {frames} in order")
     env.expect_canvas(png, "after the last frame")
     banner = b.js("document.getElementById('banner').textContent")
     expect("the program ended" in banner, f"the end is not named: {banner!r}")
@@ -519,11 +522,15 @@ def case_svg(env):
     text = open(svg).read()
     expect("<script" not in text, "the SVG has a script")
     b = env.start()
-    started = time.monotonic()
     b.open(svg)
-    # Played in real time: after its last frame's time (1 s) it shows rb render's picture.
-    while time.monotonic() < started + 1.6:
-        time.sleep(0.05)
+    # Played in real time: once its animations have run (the last frame at 1 s) it shows rb
+    # render's picture.
+    count = b.js("document.getAnimations().length")
+    expect(count == len(frames) - 1, f"{count} animations for the {len(frames) - 1} frames after the first")
+    deadline = time.monotonic() + 30
+    while not b.js("document.getAnimations().every((a) => a.playState === 'finished')"):
+        expect(time.monotonic() < deadline, "the SVG's animations did not finish")
+        time.sleep(0.1)
     b.js("new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true))))")
     w, h, shot = b.screenshot(width, height)
     _, _, want = read_png(open(png, "rb").read())
