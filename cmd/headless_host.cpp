@@ -95,6 +95,7 @@ std::optional<std::string> HeadlessHost::inputLine(std::string_view prompt) {
     output("\n");
   }
   span.end = written_;
+  span.line = *line;
   if (inputHook) inputHook(span);
   return line;
 }

@@ -46,6 +46,7 @@ class HeadlessHost : public Host {
   /// the prompt from `start` to `promptEnd`, then the echo of the line read up to `end`.
   struct InputSpan {
     uint64_t start = 0, promptEnd = 0, end = 0;
+    std::string_view line;  ///< the line read (without its line end), valid during the call
   };
   /// Called after each `input` that read a line.
   std::function<void(const InputSpan&)> inputHook;

@@ -15,6 +15,11 @@
 
 namespace rb::render {
 
+/// The valid ranges of the options (rb render checks them before it runs anything).
+constexpr double kMinFps = 0.1, kMaxFps = 100;
+constexpr double kMaxDuration = 3600;  ///< seconds (--duration), from 1 / kMaxFps
+constexpr double kMaxHold = 600;       ///< seconds (a GIF frame lasts at most 655.35 s)
+
 /// Which moments of the recording become frames, and how fast they play.
 struct AnimationOptions {
   double fps = 10;                      ///< frames per second of the animation (0.1 .. 100)
@@ -47,6 +52,18 @@ std::vector<uint8_t> encodeGif(const Recording& recording, const AnimationOption
 std::string animatedSvg(const Recording& recording, const AnimationOptions& options);
 /// One self-contained HTML page (no network: everything inline) with the player.
 std::string htmlPlayer(const Recording& recording, const PlayerSource& source, const AnimationOptions& options);
+
+/// The frames' moments: `steps` as animationFrames() gives them and, for each, the second at
+/// which it appears (k / fps, or spread over --duration).
+struct FrameTimes {
+  std::vector<size_t> steps;
+  std::vector<double> seconds;
+};
+FrameTimes animationTimes(const Recording& recording, const AnimationOptions& options);
+
+/// The format OUT's extension names, in any case: "gif", "svg", "html" (.html or .htm), or ""
+/// when it names none of them.
+std::string animationFormat(const std::string& path);
 
 /// Writes the animation OUT's extension names (.gif, .svg, .html or .htm). On failure returns
 /// false with a message naming the file (or the unknown extension) in `error`.

@@ -13,6 +13,7 @@ packages=(
   libtomlplusplus-dev nlohmann-json3-dev   # rb test's assignment files (TOML); JSON everywhere
   libserialport-dev     # rb ports: the serial ports and what is known of each
   libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
+  libgif-dev            # rb render --animate OUT.gif: giflib writes the animated GIF
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
 )
 test_packages=(
@@ -21,6 +22,8 @@ test_packages=(
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks
+  chromium              # the replays of rb render --animate played in a real browser (headless, driven
+                        # over the DevTools protocol on a pipe by testdata/render/replay_browser.py)
 )
 bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers

@@ -268,7 +268,10 @@ Value flip(Machine& m, Args& a) {
     m.flipMode = a.num(0) != 0;
     if (!m.flipMode) m.flipped.clear();
   }
-  if (m.flipMode) m.flipped = m.canvas().pixels();
+  if (m.flipMode) {
+    m.flipped = m.canvas().pixels();
+    ++m.flips;
+  }
   return {};
 }
 

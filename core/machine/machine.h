@@ -113,6 +113,7 @@ class Machine {
   // the screen as it was at the last flip.
   bool flipMode = false;
   Pixels flipped;  ///< the screen at the last flip
+  uint64_t flips = 0;  ///< how many times `flipped` was taken: a recording sees the shown screen change
   /// The screen's pixels as a viewer sees them: the last flip's while flip is on, else the
   /// canvas itself.
   const Pixels& shownScreen() const {

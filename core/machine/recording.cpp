@@ -38,10 +38,10 @@ RecordedStep Recording::stateOf(SourceLoc loc, const Machine& machine, uint64_t 
   const Robot& robot = machine.robot();
   s.located = robot.located();
   s.pen = robot.penDown();
-  s.x = static_cast<float>(robot.pose().pos.x());
-  s.y = static_cast<float>(robot.pose().pos.y());
-  s.heading = static_cast<float>(robot.pose().heading);
-  s.radius = static_cast<float>(robot.radius());
+  s.x = robot.pose().pos.x();
+  s.y = robot.pose().pos.y();
+  s.heading = robot.pose().heading;
+  s.radius = robot.radius();
   s.robotColour = robot.colour();
   s.frame = frames_.empty() ? 0 : static_cast<uint32_t>(frames_.size() - 1);
   s.output = outputBytes_;
@@ -86,12 +86,21 @@ void applyFrame(const RecordedFrame& f, std::vector<Colour>& screen) {
 }
 }  // namespace
 
-void Recording::keyframe(Canvas& canvas, uint64_t step) {
-  // What a viewer sees (the last flip while flip is on) is the canvas here: the live view and
-  // the pictures draw the canvas the recording keeps.
-  const Pixels& pixels = canvas.pixels();
+uint64_t Recording::shownVersion(const Machine& machine) {
+  return machine.showsFlip() ? machine.flips | uint64_t{1} << 63 : machine.canvas().version();
+}
+
+void Recording::keyframe(Machine& machine, uint64_t step) {
+  // What a viewer sees: with flip on, the screen at the last flip (as rb render and the live
+  // view show it), else the canvas.
+  Canvas& canvas = machine.canvas();
+  const Pixels& pixels = machine.shownScreen();
   if (pixels.size() < kScreenPixels) return;
   PixelBox box = canvas.takeDamage();
+  // The canvas's damage says nothing of a flip's screen: compare all of it.
+  bool flipShown = machine.showsFlip();
+  if (flipShown || lastShownFlip_) box = PixelBox{0, 0, Canvas::kWidth - 1, Canvas::kHeight - 1};
+  lastShownFlip_ = flipShown;
   bool full = frames_.size() % kFullEvery == 0 || last_.size() != kScreenPixels;
   if (full) {
     frames_.push_back(encode(pixels.data(), {}, step, true));
@@ -132,7 +141,7 @@ void Recording::keyframe(Canvas& canvas, uint64_t step) {
     frames_.push_back(std::move(f));
   }
   frameBytes_ += sizeOf(frames_.back());
-  canvasVersion_ = canvas.version();
+  shownVersion_ = shownVersion(machine);
   lastFrameStep_ = step;
   thinFrames();
 }
@@ -141,8 +150,8 @@ void Recording::statement(SourceLoc loc, Machine& machine) {
   uint64_t step = total_++;
   Canvas& canvas = machine.canvas();
   if (frames_.empty()) canvas.trackDamage(true);
-  bool changed = frames_.empty() || canvas.version() != canvasVersion_;
-  if (changed && (frames_.empty() || step - lastFrameStep_ >= frameStride_)) keyframe(canvas, step);
+  bool changed = frames_.empty() || shownVersion(machine) != shownVersion_;
+  if (changed && (frames_.empty() || step - lastFrameStep_ >= frameStride_)) keyframe(machine, step);
   if (step % stepStride_ != 0) return;
   steps_.push_back(stateOf(loc, machine, step));
   if (stepBytes() > budget_ * 3 / 8) thinSteps();
@@ -175,11 +184,10 @@ void Recording::finish(Machine& machine, const RunResult& result) {
   finished_ = true;
   status_ = result.status;
   error_ = result.error;
-  Canvas& canvas = machine.canvas();
-  if (frames_.empty() || canvas.version() != canvasVersion_) {
+  if (frames_.empty() || shownVersion(machine) != shownVersion_) {
     uint64_t stride = frameStride_;
     frameStride_ = 1;  // the last screen is always kept
-    keyframe(canvas, total_);
+    keyframe(machine, total_);
     frameStride_ = std::max(frameStride_, stride);
   }
   SourceLoc end;

@@ -47,9 +47,11 @@ struct RecordedFrame {
 struct RecordedStep {
   uint64_t step = 0;       ///< statements run before it
   SourceLoc loc;           ///< the statement (loc.line 0: the end of the run)
-  float x = 0, y = 0;      ///< the robot's centre
-  float heading = 0;       ///< degrees, 0 up, clockwise
-  float radius = 20;
+  // Doubles, as the robot keeps them: the replays draw the robot from these, pixel for pixel as
+  // `rb render` draws it from the robot itself (a float moves a pixel on the rim now and then).
+  double x = 0, y = 0;     ///< the robot's centre
+  double heading = 0;      ///< degrees, 0 up, clockwise
+  double radius = 20;
   Colour robotColour = 0;
   bool located = false;    ///< rLocate placed the robot
   bool pen = false;        ///< the pen is down
@@ -115,7 +117,10 @@ class Recording {
 
  private:
   size_t stepBytes() const { return steps_.capacity() * sizeof(RecordedStep); }
-  void keyframe(Canvas& canvas, uint64_t step);
+  void keyframe(Machine& machine, uint64_t step);
+  /// Changes whenever what a viewer sees changes: the canvas's version while the canvas is
+  /// shown, the count of flips (tagged apart) while flip on shows the last flip's screen.
+  static uint64_t shownVersion(const Machine& machine);
   /// The frame of `pixels`, whole or as changes since `before` (what the frame before shows).
   RecordedFrame encode(const Colour* pixels, const std::vector<Colour>& before, uint64_t step, bool full) const;
   RecordedStep stateOf(SourceLoc loc, const Machine& machine, uint64_t step) const;
@@ -131,7 +136,8 @@ class Recording {
   uint64_t outputBytes_ = 0;
   uint64_t total_ = 0;         ///< statements seen so far
   uint64_t stepStride_ = 1, frameStride_ = 1;
-  uint64_t canvasVersion_ = 0;  ///< the canvas's version at the last keyframe (0: none yet)
+  uint64_t shownVersion_ = 0;  ///< shownVersion() at the last keyframe
+  bool lastShownFlip_ = false;  ///< the last keyframe is of a flip's screen, not the canvas
   uint64_t lastFrameStep_ = 0;
   size_t frameBytes_ = 0, eventBytes_ = 0;
   std::vector<Colour> last_;  ///< the screen of the last frame kept

@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <map>
 
 #include "machine/test_support.h"
@@ -152,4 +153,30 @@ TEST_CASE("every kept frame is the screen as its statement starts, also after th
   }
   std::vector<Colour> last = rec.screen(rec.frames().size() - 1);
   CHECK(std::equal(last.begin(), last.end(), machine.canvas().pixels().begin()));
+}
+
+TEST_CASE("with flip on, the frames are the screen a viewer sees: the last flip's", "[machine][recording]") {
+  Recording rec;
+  record("flip on\nrectangle 0, 0, 100, 100, RED, RED\nx = 1\nflip\nrectangle 200, 200, 300, 300, BLUE, BLUE\n"
+         "flip off\nx = 2\n",
+         rec);
+  REQUIRE(rec.steps().size() == 8);
+  auto at = [&rec](size_t step, int x, int y) {
+    return rec.screen(rec.steps()[step].frame)[static_cast<size_t>(y) * Canvas::kWidth + static_cast<size_t>(x)];
+  };
+  CHECK(at(2, 50, 50) == colours::kWhite);  // drawn, not flipped yet
+  CHECK(at(4, 50, 50) == colours::kRed);    // flipped
+  CHECK(at(5, 250, 250) == colours::kWhite);
+  CHECK(at(6, 250, 250) == colours::kBlue);  // flip off shows the canvas again
+  CHECK(at(7, 250, 250) == colours::kBlue);
+}
+
+TEST_CASE("the robot's pose is kept as the robot has it, not rounded", "[machine][recording]") {
+  Recording rec;
+  record("rLocate 400, 300\nrTurn 77\nrForward 3\nrTurn 0.1\n", rec);
+  const RecordedStep& end = rec.steps().back();
+  double rad = 77 * 3.14159265358979323846 / 180;
+  CHECK(end.x == Approx(400 + 3 * std::sin(rad)).margin(1e-9));
+  CHECK(end.x != static_cast<double>(static_cast<float>(end.x)));  // a float would round it
+  CHECK(end.heading == Approx(77.1));
 }

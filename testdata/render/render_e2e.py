@@ -7,7 +7,9 @@ Each CASE is one CTest test (testdata/render/CMakeLists.txt); WORK_DIR is emptie
 """
 
 import argparse
+import json
 import os
+import resource
 import shutil
 import struct
 import subprocess
@@ -174,8 +176,123 @@ def case_help(env):
     r = subprocess.run([env.rb, "render", "--help"], capture_output=True, text=True, timeout=60)
     env.expect_exit(r, 0)
     for option in ["--output", "--scale", "--ascii", "--cols", "--rows", "--cells", "--max-steps",
-                   "--seed", "--timeout"]:
+                   "--seed", "--timeout", "--animate", "--fps", "--duration", "--every", "--hold"]:
         expect(option in r.stdout, f"--help does not list {option}")
+
+
+def gif_frames(path):
+    """How many images a GIF file holds, and whether it loops (NETSCAPE2.0), by its blocks."""
+    data = open(path, "rb").read()
+    expect(data[:6] == b"GIF89a", f"{path} is not a GIF89a file")
+    flags = data[10]
+    pos = 13 + (3 * (2 << (flags & 7)) if flags & 0x80 else 0)
+    images, loops = 0, False
+    while data[pos] != 0x3B:
+        block = data[pos]
+        if block == 0x21:
+            if data[pos + 1] == 0xFF and data[pos + 3:pos + 14] == b"NETSCAPE2.0":
+                loops = True
+            pos += 2
+        else:
+            expect(block == 0x2C, f"unexpected block {block:#x} in {path}")
+            images += 1
+            iflags = data[pos + 9]
+            pos += 10 + (3 * (2 << (iflags & 7)) if iflags & 0x80 else 0) + 1
+        while data[pos]:
+            pos += 1 + data[pos]
+        pos += 1
+    return images, loops
+
+
+def case_animate(env):
+    """--animate writes a GIF, an SVG or an HTML page by OUT's extension, beside -o's picture."""
+    gif, png = env.path("square.gif"), env.path("square.png")
+    r = env.run(env.fig17, "--animate", gif, "-o", png)
+    env.expect_exit(r, 0)
+    expect(png_size(png) == (800, 600), "no picture beside the animation")
+    images, loops = gif_frames(gif)
+    expect(images == 10 and loops, f"{images} images, loops {loops}: expected the 10 moments of the square, looping")
+    expect(os.path.getsize(gif) < 200 * 1024, f"the square's GIF is {os.path.getsize(gif)} bytes")
+    svg = env.path("square.SVG")
+    env.expect_exit(env.run(env.fig17, "--animate", svg, "--fps", "25"), 0)
+    text = open(svg).read()
+    expect(text.startswith("<?xml") and "@keyframes" in text and "<script" not in text, "not an animated SVG")
+    if shutil.which("xmllint"):
+        x = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+        expect(x.returncode == 0, f"the SVG is not well-formed XML: {x.stderr}")
+    html = env.path("square.htm")
+    env.expect_exit(env.run(env.fig17, "--animate", html, "--every", "2"), 0)
+    page = open(html).read()
+    expect(page.startswith("<!DOCTYPE html>") and "rbPlayer" in page, "not the player page")
+    expect('"name":"fig_1_7.bas"' in page, "the page does not name the program")
+    expect("fig_1_7.bas" in page and "rForward 120" in page, "the page lacks the program's source")
+    # --duration and --hold; the step limit stops the run and the replay ends there.
+    env.expect_exit(env.run(env.fig17, "--animate", gif, "--duration", "3", "--fps", "5", "--hold", "0"), 0)
+    forever = env.program("forever.bas", "rLocate 400, 300\nrInvisible BLACK\nrPen DOWN\nwhile 1\n  rForward 1\n"
+                                         "  rTurn 1\nwend\n")
+    r = env.run(forever, "--animate", gif, "--max-steps", "2000")
+    env.expect_exit(r, 0)
+    expect("stopped after 2000 steps" in r.stderr, f"no note of the step limit: {r.stderr}")
+    expect(gif_frames(gif)[0] > 100, "the step-limited run's GIF is short")
+
+
+def case_animate_error(env):
+    """A run that ends in a runtime error: the replay is written, the error on stderr, exit 70."""
+    prog = env.program("crash.bas", "rLocate 400, 60\nrPen DOWN\nfor i = 1 to 20\n  rForward 10\nnext\n")
+    for ext in ["gif", "svg", "html"]:
+        out = env.path("crash." + ext)
+        r = env.run(prog, "--animate", out)
+        env.expect_exit(r, 70)
+        expect("error:" in r.stderr and "crash.bas:4" in r.stderr, f"the error is not on stderr: {r.stderr}")
+        expect(os.path.getsize(out) > 1000, f"no {ext} replay after the error")
+    expect('"status":"runtime error"' in open(env.path("crash.html")).read(), "the page does not say how the run ended")
+
+
+def case_animate_usage(env):
+    """Bad --animate command lines: clear messages naming the option, exit 64 (74 when OUT
+    cannot be written), before anything runs."""
+    def bad(args, code, *words):
+        r = env.run(env.fig17, *args)
+        env.expect_exit(r, code)
+        for w in words:
+            expect(w in r.stderr, f"{' '.join(args)}: the message lacks {w!r}: {r.stderr}")
+    gif = env.path("x.gif")
+    bad(["--animate", env.path("x.mp4")], 64, "--animate", "x.mp4", ".gif, .svg or .html")
+    bad(["--animate", env.path("x")], 64, "--animate", ".gif, .svg or .html")
+    missing = os.path.join(env.work, "no_such_dir", "x.gif")
+    bad(["--animate", missing], 74, "--animate", missing, "no such folder")
+    bad(["--animate", env.work], 64, "--animate")
+    for fps in ["0", "-3", "1000", "abc", "nan"]:
+        bad(["--animate", gif, "--fps", fps], 64, "--fps", "0.1 to 100")
+    bad(["--fps", "5", "-o", env.path("x.png")], 64, "--fps", "--animate")
+    bad(["--animate", gif, "--every", "2", "--duration", "3"], 64, "--every", "--duration")
+    bad(["--animate", gif, "--every", "0"], 64, "--every")
+    bad(["--animate", gif, "--duration", "0"], 64, "--duration")
+    bad(["--animate", gif, "--hold", "-1"], 64, "--hold")
+    bad([], 64, "-o OUT", "--animate OUT")
+    expect(not os.path.exists(gif), "a bad command line wrote the animation")
+
+
+def case_animate_long(env):
+    """10,000,000 statements: the recording keeps a sample within its budget, the frames are
+    sampled, memory stays bounded and nothing crashes."""
+    prog = env.program("long.bas",
+                       "rLocate 400, 300\nrInvisible RED\nrPen DOWN\nfor i = 1 to 3333332\n"
+                       "  if i % 200 = 0 then rForward 1\n  if i % 20000 = 0 then rTurn 91\nnext\n")
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    for ext in ["gif", "html"]:
+        out = env.path("long." + ext)
+        r = env.run(prog, "--animate", out)
+        env.expect_exit(r, 0)
+        expect(os.path.getsize(out) < 20 << 20, f"the {ext} replay is {os.path.getsize(out)} bytes")
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss  # KiB, of the largest child
+    expect(peak < 400 * 1024, f"rb render --animate used {peak // 1024} MiB (before: {before // 1024})")
+    images, _ = gif_frames(env.path("long.gif"))
+    expect(100 < images <= 2000, f"{images} images in the GIF")
+    page = open(env.path("long.html")).read()
+    meta = json.loads(page[page.index('id="rb-meta">') + 13:page.index("</script>", page.index('id="rb-meta">'))])
+    expect(meta["totalSteps"] == 10000000, f"{meta['totalSteps']} statements recorded")
+    expect(meta["stride"] > 1 and meta["steps"] < 1000000, f"{meta['steps']} steps kept, stride {meta['stride']}")
 
 
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
