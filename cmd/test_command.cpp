@@ -28,7 +28,7 @@ struct TestOptions {
   std::optional<uint64_t> maxSteps;
   std::optional<double> timeout;
   std::string format = "text";
-  std::string junit, csv, pictures, feedback;
+  std::string junit, csv, pictures, feedback, replays;
   std::vector<std::string> include;
   std::string roster;
   bool student = false;
@@ -107,6 +107,11 @@ int executeTest(const TestOptions& opts) {
   g.timeout = opts.timeout;
   g.picturesDir = opts.pictures;
   g.studentPictures = opts.student;
+  g.replayFormat = opts.replays;
+  if (!opts.replays.empty() && opts.pictures.empty()) {
+    std::fprintf(stderr, "rb test: --replays writes beside the pictures: give --pictures DIR too\n");
+    return exitcode::kUsage;
+  }
   g.include = opts.include;
   g.roster = opts.roster;
   g.trustComments = opts.trustComments;
@@ -188,6 +193,11 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
                    "Write one PNG per program into DIR: its trail (red) over the solution's (green), the "
                    "waypoints and regions asked for, a legend (with --student: no solution)")
       ->type_name("DIR");
+  test->add_option("--replays", opts->replays,
+                   "With --pictures: also a replay of each program's run in DIR, as an animated "
+                   "gif, an animated svg or an html player")
+      ->type_name("FORMAT")
+      ->check(CLI::IsMember({"gif", "svg", "html"}));
   test->add_option("--feedback", opts->feedback,
                    "Write one text file per program into DIR for its student: every check with its "
                    "points and hints, hidden checks only as 'a hidden check failed'")

@@ -2,8 +2,10 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
+#include "animation.h"
 #include "exit_codes.h"
 #include "headless_run.h"
 #include "lang/checker.h"
@@ -24,6 +26,7 @@ struct JobOptions {
   std::string world;        ///< a program run before the student's, on the same screen
   std::vector<std::string> posts;      ///< programs run after it, on the final state
   std::vector<std::string> watch;      ///< colours (RRGGBB hex) the robot must avoid or touch
+  std::string replay;                  ///< where to write the run's replay (.gif, .svg, .html), or ""
 };
 
 grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
@@ -120,7 +123,11 @@ class JobObserver : public RobotObserver {
                              e.kind == RobotEvent::Crash))
       sweep(e);
     recorder.robotEvent(e);
+    if (recording) recording->robotEvent(e);
   }
+
+  /// The replay's recording, when one is asked for.
+  Recording* recording = nullptr;
 
   /// Where the robot is when the student's program starts (a world program may have placed it):
   /// the path starts there, without counting as the student's move.
@@ -228,9 +235,12 @@ int executeJob(JobOptions opts) {
     std::vector<TeacherProgram> posts;
     if (!opts.world.empty()) world = loadTeacherProgram(opts.world);
     for (const std::string& p : opts.posts) posts.push_back(loadTeacherProgram(p));
-    if (!opts.posts.empty())
-      run.onCopy = [&output](std::string_view text) {
-        if (output.size() < (1u << 20)) output.append(text.substr(0, (1u << 20) - output.size()));
+    std::optional<Recording> recording;
+    if (!opts.replay.empty()) recording.emplace();
+    if (!opts.posts.empty() || recording)
+      run.onCopy = [&output, &recording, keep = !opts.posts.empty()](std::string_view text) {
+        if (keep && output.size() < (1u << 20)) output.append(text.substr(0, (1u << 20) - output.size()));
+        if (recording) recording->output(text);
       };
     run.beforeRun = [&](HeadlessRun& r) -> std::string {
       observer.emplace(colours, *r.machine);
@@ -240,7 +250,10 @@ int executeJob(JobOptions opts) {
         HeadlessHost& host = r.headlessHost();
         auto saved = std::move(host.outputHook);
         host.outputHook = [](std::string_view) {};  // the world's prints are not the student's
+        // Nor is the student's input the world's: its `input` reads empty lines.
+        host.inputSource = []() -> std::optional<std::string> { return std::string(); };
         RunResult w = runTeacherProgram(*world, r, opts.run);
+        host.inputSource = nullptr;
         host.outputHook = std::move(saved);
         if (w.error) {
           grade::DiagRecord d = diagRecord(&world->loaded.program->sources, *w.error);
@@ -249,11 +262,13 @@ int executeJob(JobOptions opts) {
         }
         observer->startAt(r.machine->robot());
       }
+      if (recording) observer->recording = &*recording;
       r.machine->setObserver(&*observer);
       return "";
     };
     run.afterRun = [&](HeadlessRun& r) {
       r.machine->setObserver(nullptr);
+      if (recording) recording->finish(*r.machine, r.result);  // before the post programs
       if (posts.empty()) return;
       HeadlessHost& host = r.headlessHost();
       host.flush();
@@ -292,7 +307,10 @@ int executeJob(JobOptions opts) {
     CompileOptions compile;
     compile.lineTracing = true;  // to count the statements exactly, up to a runtime error
     uint64_t started = 0;
-    code = runHeadless("rb run", opts.run, compile, stdout, nullptr, run, [&](SourceLoc) { ++started; });
+    code = runHeadless("rb run", opts.run, compile, stdout, nullptr, run, [&](SourceLoc loc) {
+      ++started;
+      if (recording) recording->statement(loc, *run.machine);
+    });
     const SourceSet* sources = run.loaded.program ? &run.loaded.program->sources : nullptr;
     if (run.loaded.program) rec.statements = run.loaded.program->stmtCount();
     if (run.loaded.program && !run.loaded.compiled) {
@@ -328,6 +346,13 @@ int executeJob(JobOptions opts) {
         rec.truncated = recorder.truncated;
         rec.touches = observer->touches;
       }
+      if (recording && recording->finished()) {
+        const SourceFile& main = run.loaded.program->sources.file(0);
+        render::PlayerSource source{std::filesystem::path(main.name()).filename().string(), main.text(), 0};
+        std::string error;
+        if (!render::writeAnimation(opts.replay, *recording, source, render::AnimationOptions{}, error))
+          std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
+      }
       if (!opts.screen.empty()) {
         const Machine& m = *run.machine;
         std::string error;
@@ -360,6 +385,7 @@ void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
   job->add_option("--world", opts->world, "A program run first, on the same screen");
   job->add_option("--post", opts->posts, "A program run after, on the final state; repeatable");
   job->add_option("--watch-colour", opts->watch, "A colour (RRGGBB) to record touches of; repeatable");
+  job->add_option("--replay", opts->replay, "Write the run's replay here (.gif, .svg or .html)");
   job->callback([opts, &exitCode] { exitCode = executeJob(*opts); });
 }
 

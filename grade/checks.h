@@ -25,6 +25,7 @@ struct RunOutcome {
   std::optional<RunRecord> record;
   std::string recordError;       ///< why there is no record
   std::optional<Screen> screen;
+  std::string replayFile;        ///< the replay the run wrote (a temporary file), or ""
 };
 
 /// The most output of a run rb test keeps (and compares).

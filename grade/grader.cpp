@@ -81,7 +81,7 @@ struct Task {
   uint64_t seed;
   bool screen;       ///< capture the final screen
   Job job;
-  std::string record, screenFile;
+  std::string record, screenFile, replayFile;
 };
 
 /// Options of `// args:` that widen what a program may reach: only the person running rb
@@ -181,6 +181,10 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
   job.argv = opts_.childCommand;
   job.argv.insert(job.argv.end(), {"--record", t.record});
   if (screen) job.argv.insert(job.argv.end(), {"--screen", t.screenFile});
+  if (!opts_.replayFormat.empty() && seedIndex == 0 && program != SIZE_MAX) {
+    t.replayFile = base + "." + opts_.replayFormat;
+    job.argv.insert(job.argv.end(), {"--replay", t.replayFile});
+  }
   job.stdoutPath = base + ".out";
   job.stderrPath = base + ".err";
   job.fileBytes = kFileLimit;
@@ -272,6 +276,7 @@ RunOutcome Grader::collect(const Task& t, const JobOutcome& outcome) const {
     std::string error;
     run.screen = readScreenFile(t.screenFile, error);
   }
+  if (!t.replayFile.empty() && fs::exists(t.replayFile, ec)) run.replayFile = t.replayFile;
   for (const std::string& f : {t.record, t.screenFile, t.job.stdoutPath, t.job.stderrPath, t.job.stdinPath})
     if (!f.empty()) fs::remove(f, ec);
   return run;
@@ -627,6 +632,13 @@ void Grader::finishProgram(size_t index) {
   r.output = first.output.substr(0, kReportCap);
   r.errors = first.errors.substr(0, kReportCap);
   if (!opts_.picturesDir.empty()) writePicture(r, runs);
+  if (!first.replayFile.empty()) {
+    fs::path to = fs::path(opts_.picturesDir) / fs::path(reportName(r.program, opts_.paths)).replace_extension("." + opts_.replayFormat);
+    std::error_code ec;
+    fs::rename(first.replayFile, to, ec);
+    if (ec) fs::copy_file(first.replayFile, to, fs::copy_options::overwrite_existing, ec);
+    if (!ec) r.replay = to.string();
+  }
   for (RunOutcome& run : runs) run.screen.reset();  // a class's screens would not fit in memory
   ++finished_;
   if (opts_.progress) opts_.progress(finished_, toGrade_);

@@ -24,6 +24,9 @@ struct GradeOptions {
   std::optional<double> timeout;          ///< seconds: overrides the assignment's / // timeout
   std::string picturesDir;                ///< "" : no pictures
   bool studentPictures = false;           ///< pictures for students: no solution drawn
+  /// With picturesDir: also a replay of each program's run in this format ("gif", "svg",
+  /// "html"), or "" for none.
+  std::string replayFormat;
   /// Assignment mode: file names (globs like "*.txt") graded as programs besides *.bas.
   std::vector<std::string> include;
   std::string roster;                     ///< a roster CSV overriding the assignment's
@@ -60,6 +63,7 @@ struct ProgramResult {
   std::vector<RunRecord::InputMark> inputs;
   std::string errors;              ///< the first run's standard error, shortened
   std::string picture;             ///< the PNG written for it, or ""
+  std::string replay;              ///< the replay written for it, or ""
 };
 
 struct ClassResult {

@@ -325,6 +325,7 @@ std::string jsonReport(const ClassResult& r) {
     if (!p.student.empty()) j["student"] = cleanUtf8(p.student, false);
     if (!p.gate.empty()) j["gate"] = cleanUtf8(p.gate, false);
     if (!p.picture.empty()) j["picture"] = p.picture;
+    if (!p.replay.empty()) j["replay"] = p.replay;
     if (!p.output.empty()) j["output"] = cleanUtf8(p.output, false);
     if (!p.inputs.empty()) {
       j["inputs"] = json::array();

@@ -372,6 +372,17 @@ def case_yard(env):
     pics = sorted(os.listdir(env.path("pictures")))
     expect(len(pics) == 11 and all(png_size(os.path.join(env.path("pictures"), p)) == (800, 664) for p in pics),
            "one picture per program that ran", pics)
+    # Replays beside the pictures: each program's own run, never the solution's.
+    r, rdoc, rby = yard_grades(env, "--pictures", env.path("replays"), "--replays", "html")
+    ana = rby["class/correct.bas"]
+    expect(ana.get("replay", "").endswith("correct.html") and os.path.getsize(ana["replay"]) > 1000, "replay", ana)
+    with open(ana["replay"], encoding="utf-8") as f:
+        page = f.read()
+    expect(page.lstrip().lower().startswith("<!doctype html") and "http://" not in page.replace("http://www.w3.org", ""),
+           "a self-contained page", page[:200])
+    expect("replay" not in rby["class/empty.bas"] or os.path.exists(rby["class/empty.bas"]["replay"]), "empty", rby)
+    r = env.rb_run("test", "-a", os.path.join(YARD, "assignment.toml"), "--replays", "gif", os.path.join(YARD, "class"))
+    expect(r.returncode == 64 and "--pictures" in r.stderr, "--replays needs --pictures", r.stderr)
     t = env.rb_run("test", "--student", "-a", os.path.join(YARD, "assignment.toml"), os.path.join(YARD, "class"))
     expect("facing 90" not in t.stdout and "a hidden check failed" in t.stdout, "student text report", t.stdout)
 
