@@ -762,26 +762,30 @@ void TuiHost::drawOutput() {
   TermStyle dim;
   dim.dim = true;
   screen_.drawText(r.col, r.row, header, dim);
-  std::vector<std::string> shown;
-  for (const std::string& l : lines_) shown.push_back(l);
-  if (inputActive_) shown.push_back(partial_ + inputPrompt_ + inputText_ + "_");
-  else if (!partial_.empty()) shown.push_back(partial_);
+  std::vector<std::string_view> shown(lines_.begin(), lines_.end());
+  std::string last;
+  if (inputActive_) last = partial_ + inputPrompt_ + inputText_ + "_";
+  else last = partial_;
+  if (!last.empty()) shown.push_back(last);
   int room = r.height - 1;
-  TermStyle errorStyle;
   if (!error_.empty()) {
-    --room;
+    // The error wraps like output, so that its hint ("did you mean ...") is never cut off; it
+    // keeps its rows at the bottom and the output above gets what is left.
+    std::vector<std::string> rows = wrapRows(error_, r.width);
+    if (static_cast<int>(rows.size()) > room) rows.resize(static_cast<size_t>(std::max(room, 0)));
+    room -= static_cast<int>(rows.size());
+    TermStyle errorStyle;
     errorStyle.bold = true;
     errorStyle.colour = screen_.colour();
     errorStyle.fg = 0xFF5555;
     errorStyle.bg = 0x000000;
     errorStyle.reverse = !screen_.colour();
-    screen_.drawText(r.col, r.row + r.height - 1, error_.substr(0, static_cast<size_t>(r.width)),
-                     errorStyle);
+    for (size_t i = 0; i < rows.size(); ++i)
+      screen_.drawText(r.col, r.row + 1 + room + static_cast<int>(i), rows[i], errorStyle);
   }
-  int first = std::max(0, static_cast<int>(shown.size()) - room);
-  for (int i = 0; i < room && first + i < static_cast<int>(shown.size()); ++i)
-    screen_.drawText(r.col, r.row + 1 + i,
-                     shown[static_cast<size_t>(first + i)].substr(0, static_cast<size_t>(r.width)));
+  std::vector<std::string> rows = lastRows(shown, r.width, room);
+  for (size_t i = 0; i < rows.size(); ++i)
+    screen_.drawText(r.col, r.row + 1 + static_cast<int>(i), rows[i]);
 }
 
 }  // namespace rb::cli

@@ -80,6 +80,44 @@ std::string valueText(const Value& v, size_t width) {
   return out;
 }
 
+std::string outputCells(std::string_view line) {
+  std::string out;
+  out.reserve(line.size());
+  for (char c : line) {
+    if (c == '\t') {
+      do out += ' ';
+      while (out.size() % kOutputTab != 0);
+    } else if (static_cast<unsigned char>(c) < 32 || c == 127) {
+      out += '?';
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> wrapRows(std::string_view line, int width) {
+  std::string cells = outputCells(line);
+  size_t w = static_cast<size_t>(std::max(width, 1));
+  std::vector<std::string> rows;
+  for (size_t at = 0; at < cells.size(); at += w) rows.push_back(cells.substr(at, w));
+  if (rows.empty()) rows.emplace_back();
+  return rows;
+}
+
+std::vector<std::string> lastRows(const std::vector<std::string_view>& lines, int width, int rows) {
+  std::vector<std::string> out;
+  if (rows <= 0) return out;
+  // From the newest line back, until the rows are filled: a pane never wraps more than it shows.
+  for (size_t i = lines.size(); i-- > 0 && static_cast<int>(out.size()) < rows;) {
+    std::vector<std::string> wrapped = wrapRows(lines[i], width);
+    for (size_t j = wrapped.size(); j-- > 0 && static_cast<int>(out.size()) < rows;)
+      out.push_back(std::move(wrapped[j]));
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
 std::vector<std::string> variableLines(const std::vector<VariableView>& vars, std::string_view sub,
                                        int width) {
   std::vector<std::string> out;

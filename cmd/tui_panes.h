@@ -36,6 +36,19 @@ std::vector<std::string> variableLines(const std::vector<VariableView>& vars, st
 /// A value as the variables pane shows it, at most `width` characters (0: no limit).
 std::string valueText(const Value& v, size_t width);
 
+/// Tab stops of the output pane: every 8 columns, as a terminal sets them.
+constexpr size_t kOutputTab = 8;
+
+/// One line of program output as terminal cells: each tab becomes the spaces to the next tab
+/// stop (kOutputTab), other control characters '?' (a byte is a cell, as the screen draws it).
+std::string outputCells(std::string_view line);
+/// A line cut into rows of `width` cells (at least one row, "" for an empty line), after
+/// outputCells: nothing of a long line is lost.
+std::vector<std::string> wrapRows(std::string_view line, int width);
+/// The last `rows` rows that `lines` (oldest first) take in a pane `width` cells wide, each line
+/// wrapped by wrapRows; fewer when they take fewer.
+std::vector<std::string> lastRows(const std::vector<std::string_view>& lines, int width, int rows);
+
 // ---- the template's body
 
 /// One source line as a pane shows it.

@@ -143,3 +143,21 @@ TEST_CASE("variables pane: values, strings, arrays, locals", "[tui]") {
   CHECK(lines[5] == "r     2.5");
   CHECK(valueText(Value::string(std::string(50, 'x')), 10) == "\"xxxxxx...");
 }
+
+TEST_CASE("output pane: tabs to 8-column stops, long lines wrapped", "[tui]") {
+  // `print "with " ; n ; " sides"` writes a tab at each ';'.
+  CHECK(outputCells("with \t8\t sides") == "with    8        sides");
+  CHECK(outputCells("\tx") == "        x");
+  CHECK(outputCells("1234567\tx") == "1234567 x");
+  CHECK(outputCells("12345678\tx") == "12345678        x");
+  CHECK(outputCells("bell\a") == "bell?");
+  CHECK(wrapRows("", 10) == std::vector<std::string>{""});
+  CHECK(wrapRows("abcdefghijkl", 5) == std::vector<std::string>{"abcde", "fghij", "kl"});
+  CHECK(wrapRows("a\tb", 4) == std::vector<std::string>{"a   ", "    ", "b"});
+  // The last rows, wrapped lines counted as the rows they take.
+  std::vector<std::string_view> lines = {"one", "two", "a long line that wraps", "end"};
+  CHECK(lastRows(lines, 10, 4) ==
+        std::vector<std::string>{"a long lin", "e that wra", "ps", "end"});
+  CHECK(lastRows(lines, 80, 10) == std::vector<std::string>{"one", "two", "a long line that wraps", "end"});
+  CHECK(lastRows(lines, 10, 0).empty());
+}

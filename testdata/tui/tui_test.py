@@ -425,6 +425,29 @@ def test_text(rb):
         s.close()
 
 
+def test_output(rb):
+    """The output pane shows the tab that ';' writes as spaces to the next 8-column stop (never
+    '?'), wraps a long line instead of cutting it, and wraps a runtime error so that its hint
+    stays readable."""
+    s = Session(rb, "output.bas", rows=40)
+    try:
+        t = s.wait_for("the error", lambda t: status(t, "state") == "error")
+        out = output_pane(t)
+        check("with    8        sides" in out, "the tabs are not expanded:\n" + t)
+        check("?" not in out.replace("did you mean 'total'?", ""), "a control character drawn as '?':\n" + t)
+        # The pane is as wide as the arena's box; a wrapped line fills its rows to that width.
+        lines = t.split("\n")
+        width = lines[1].index("+", 1) + 1
+        top = next(i for i, l in enumerate(lines) if l.startswith("-- output"))
+        joined = "".join(l[:width].ljust(width) for l in lines[top + 1:])
+        check("wraps onto the rows after it: END" in joined, "the long line is cut:\n" + t)
+        check("did you mean 'total'?" in joined, "the error's hint is cut:\n" + t)
+        s.keys("Enter")
+        check(s.exit_code() == 70, "exit status")
+    finally:
+        s.close()
+
+
 def test_dumb(rb):
     """A terminal that cannot show the view: one line on stderr, exit 74, nothing drawn."""
     s = Session(rb, "square.bas", env={"TERM": "dumb"})
@@ -587,6 +610,7 @@ TESTS = {
     "speed": test_speed,
     "text": test_text,
     "dumb": test_dumb,
+    "output": test_output,
     "real": test_real,
     "pixels": test_pixels,
     "input_terminal": test_input_terminal,
