@@ -13,6 +13,7 @@ bool Debugger::pauseAtStatement(SourceLoc loc, size_t depth) {
   bool arrived = loc.file != last_.file || loc.line != last_.line || loc.col <= last_.col;
   last_ = loc;
   bool pause = arrived && hasBreakpoint(loc.file, loc.line);
+  atBreakpoint_ = pause;
   switch (step_) {
     case Step::None: break;
     case Step::Into:

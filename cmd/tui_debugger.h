@@ -30,6 +30,9 @@ class Debugger {
   /// Before a statement at `loc`, `depth` frames deep: true when the run pauses here (an armed
   /// step ends here, or the line has a breakpoint and the run just came to it).
   bool pauseAtStatement(SourceLoc loc, size_t depth);
+  /// After pauseAtStatement returned true: whether a breakpoint stopped the run there (also
+  /// when a step ended on the same statement).
+  bool stoppedAtBreakpoint() const { return atBreakpoint_; }
   /// After a pixel or degree of robot motion: true when a robot step ends here.
   bool pauseAtRobotStep();
 
@@ -45,6 +48,7 @@ class Debugger {
   Step step_ = Step::None;
   size_t depth_ = 0;
   SourceLoc last_;  ///< the previous statement
+  bool atBreakpoint_ = false;
   std::set<std::pair<uint32_t, uint32_t>> breaks_;
 };
 

@@ -153,6 +153,7 @@ void TuiHost::onLine(SourceLoc loc) {
   loc_ = loc;
   depth_ = interp_ ? interp_->callDepth() : 0;
   if (debugger_.pauseAtStatement(loc, depth_)) {
+    breakAt_ = debugger_.stoppedAtBreakpoint() ? loc : SourceLoc{};
     pauseHere();
     return;
   }
@@ -442,8 +443,12 @@ Rect TuiHost::controlCells(int x, int y, int width, int height) const {
 void TuiHost::setPaused(bool paused) {
   if (ended_) return;
   paused_ = paused;
-  if (!paused) debugger_.cancelStep();
-  else held_.clear();  // keys held when the view paused are let go
+  if (!paused) {
+    debugger_.cancelStep();
+    breakAt_ = {};
+  } else {
+    held_.clear();  // keys held when the view paused are let go
+  }
   clock_.setRunning(!paused);
 }
 
@@ -452,6 +457,7 @@ void TuiHost::step(Debugger::Step kind) {
   // Paused: run to the step's end, then pause again. Running: pause at the step's end.
   debugger_.step(kind, depth_);
   paused_ = false;
+  breakAt_ = {};
   clock_.setRunning(true);
 }
 
@@ -498,6 +504,23 @@ std::string TuiHost::stateText() const {
   return "running";
 }
 
+std::string TuiHost::titleState() const {
+  if (ended_ || !paused_ || !breakAt_.valid() || !(breakAt_ == loc_) || (waitingFor_ && *waitingFor_))
+    return stateText();
+  // The title says why the run stopped; the status panel keeps the short state.
+  std::string s = "paused at breakpoint, line " + std::to_string(loc_.line);
+  if (loc_.file != 0 && sources_ && loc_.file < sources_->size()) {
+    const std::string& name = sources_->file(loc_.file).name();
+    s += " of " + name.substr(name.find_last_of('/') + 1);
+  }
+  return s;
+}
+
+ViewState TuiHost::viewState() const {
+  if (ended_) return ViewState::Ended;
+  return paused_ ? ViewState::Paused : ViewState::Running;
+}
+
 void TuiHost::draw() {
   lastFrame_ = Clock::now();
   // A real robot connected (or gone, rCommPort 0) changes the status panel's size.
@@ -526,11 +549,10 @@ void TuiHost::draw() {
   if (!paused_ && !ended_ && lastFrame_ - lastVariables_ >= kVariablesInterval) refreshVariables();
   TermStyle bar;
   bar.reverse = true;
-  std::string title = " rb run " + settings_.fileName + "   " + stateText() + "   view " +
+  std::string title = " rb run " + settings_.fileName + "   " + titleState() + "   view " +
                       (pixels_ ? "pixels" : modeName(mode_));
   if (!pixelsNote_.empty()) title += "   " + pixelsNote_;
-  if (ended_) title += "   (press any key to exit)";
-  else if (!notice_.empty() && loc_ == noticeLoc_) title += "   " + notice_;
+  if (!ended_ && !notice_.empty() && loc_ == noticeLoc_) title += "   " + notice_;
   title.resize(static_cast<size_t>(layout_.title.width), ' ');
   screen_.drawText(0, 0, title, bar);
   screen_.drawBox(layout_.arenaBox.col, layout_.arenaBox.row, layout_.arenaBox.width,
@@ -546,7 +568,7 @@ void TuiHost::draw() {
   TermStyle dim;
   dim.dim = true;
   screen_.drawText(layout_.keys.col, layout_.keys.row,
-                   keysLine(layout_.keys.width, paused_, programKeys_), dim);
+                   keysLine(layout_.keys.width, viewState(), programKeys_), dim);
   screen_.present();
 }
 
@@ -720,7 +742,9 @@ void TuiHost::drawSource() {
     screen_.drawBox(box.col, box.row, box.width, box.height, name);
   }
   auto marked = [&](uint32_t line) { return debugger_.hasBreakpoint(fileIndex, line); };
-  std::vector<PaneLine> lines = sourceLines(file, loc_.line, inner.height, inner.width, marked);
+  // After the end nothing runs: no line is marked as the one about to.
+  std::vector<PaneLine> lines =
+      sourceLines(file, loc_.line, inner.height, inner.width, marked, !ended_);
   for (size_t i = 0; i < lines.size(); ++i) {
     TermStyle s;
     std::string text = lines[i].text;

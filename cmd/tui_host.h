@@ -152,7 +152,11 @@ class TuiHost : public Host, public RobotObserver {
   void drawSource();
   void drawVariables();
   void drawOutput();
+  /// The run state as the status panel shows it ("paused", "waiting for a key", "finished").
   std::string stateText() const;
+  /// The same for the title, which also says why the run stopped ("paused at breakpoint, line 7").
+  std::string titleState() const;
+  ViewState viewState() const;
 
   render::CursesScreen& screen_;
   Machine* machine_ = nullptr;
@@ -183,6 +187,7 @@ class TuiHost : public Host, public RobotObserver {
   std::string notice_;  ///< shown in the title while the run stays at noticeLoc_
   SourceLoc noticeLoc_;
   SourceLoc loc_;      ///< the statement running now (or about to, when paused)
+  SourceLoc breakAt_;  ///< where a breakpoint paused the run (invalid: not paused by one)
   size_t depth_ = 0;   ///< its gosub/call depth
 
   // Keyboard.

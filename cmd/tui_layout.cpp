@@ -223,12 +223,22 @@ std::vector<std::string> compactStatusLines(const TuiStatus& s, int width) {
   return out;
 }
 
-std::string keysLine(int width, bool paused, bool programKeys) {
+std::string keysLine(int width, ViewState state, bool programKeys) {
   // The most useful first; as many as fit.
-  std::vector<std::string> keys = {paused ? "F2 run" : "F2 pause", "F3 step", "F7 over",
-                                   "F8 pixel", "F9 break", "F4/F5 speed", "F6 view", "F10 quit"};
-  if (paused) keys.push_back("PgUp/PgDn variables");
-  if (!programKeys) keys.push_back("(or p s n r b - + v q)");
+  std::vector<std::string> keys;
+  switch (state) {
+    case ViewState::Running:
+    case ViewState::Paused:
+      keys = {state == ViewState::Paused ? "F2 run" : "F2 pause", "F3 step", "F7 over",
+              "F8 pixel", "F9 break", "F4/F5 speed", "F6 view", "F10 quit"};
+      if (state == ViewState::Paused) keys.push_back("PgUp/PgDn variables");
+      if (!programKeys) keys.push_back("(or p s n r b - + v q)");
+      break;
+    case ViewState::Ended:
+      // Nothing runs any more: pausing, stepping, breakpoints and the speed are gone.
+      keys = {"F6 view", "F10 quit", "PgUp/PgDn variables", "any other key exits"};
+      break;
+  }
   std::string line;
   for (const std::string& k : keys) {
     size_t need = line.empty() ? k.size() : k.size() + 2;

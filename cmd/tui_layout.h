@@ -78,8 +78,14 @@ struct TuiStatus {
 std::vector<std::string> statusLines(const TuiStatus& s, int width);
 /// The same in at most three lines, for a short panel or a narrow terminal.
 std::vector<std::string> compactStatusLines(const TuiStatus& s, int width);
-/// The bottom line: rb's keys, as many as fit in `width`.
-std::string keysLine(int width, bool paused, bool programKeys);
+/// What the view is doing, for the keys it offers.
+enum class ViewState {
+  Running,
+  Paused,
+  Ended,  ///< the run is over: only what can still be done (the view, quitting)
+};
+/// The bottom line: rb's keys for `state`, as many as fit in `width`.
+std::string keysLine(int width, ViewState state, bool programKeys);
 /// The bits of rBumper() or rFeel() in words: "4 front", "0", "6 right+front".
 std::string bumperText(int bits);
 std::string feelText(int bits);

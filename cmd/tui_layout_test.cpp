@@ -107,13 +107,20 @@ TEST_CASE("tui status panel", "[tui]") {
 }
 
 TEST_CASE("tui keys line: the most useful keys that fit", "[tui]") {
-  CHECK(keysLine(200, false, false).starts_with("F2 pause  F3 step  F7 over"));
-  CHECK(keysLine(200, false, false).ends_with("(or p s n r b - + v q)"));
-  CHECK(keysLine(200, true, true).find("F2 run") == 0);
-  CHECK(keysLine(200, true, true).find("(or") == std::string::npos);
-  CHECK(keysLine(200, true, true).find("PgUp/PgDn") != std::string::npos);
-  CHECK(keysLine(17, false, false) == "F2 pause  F3 step");
-  CHECK(keysLine(3, false, false).empty());
+  using V = ViewState;
+  CHECK(keysLine(200, V::Running, false).starts_with("F2 pause  F3 step  F7 over"));
+  CHECK(keysLine(200, V::Running, false).ends_with("(or p s n r b - + v q)"));
+  CHECK(keysLine(200, V::Paused, true).find("F2 run") == 0);
+  CHECK(keysLine(200, V::Paused, true).find("(or") == std::string::npos);
+  CHECK(keysLine(200, V::Paused, true).find("PgUp/PgDn") != std::string::npos);
+  CHECK(keysLine(17, V::Running, false) == "F2 pause  F3 step");
+  CHECK(keysLine(3, V::Running, false).empty());
+  // After the end only what can still be done: no pause, step, breakpoint or speed.
+  std::string ended = keysLine(200, V::Ended, false);
+  CHECK(ended.find("F6 view") != std::string::npos);
+  CHECK(ended.find("F10 quit") != std::string::npos);
+  for (const char* gone : {"F2", "F3", "F7", "F8", "F9", "F4", "(or"})
+    CHECK(ended.find(gone) == std::string::npos);
 }
 
 TEST_CASE("tui layout: source and variables panes beside the arena", "[tui]") {

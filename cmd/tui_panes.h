@@ -23,9 +23,11 @@ struct PaneLine {
 /// `height` rows and `width` columns. Each is a marker column ('>' the running line, '*' a
 /// breakpoint), the line number and the text, tabs expanded, cut at `width`. The running line
 /// stays about a third of the way down. `hasBreakpoint(line)` tells which lines are marked.
+/// `running` false (the run is over): the pane stays where it was, but no line is marked
+/// running.
 template <typename HasBreakpoint>
 std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int height, int width,
-                                  HasBreakpoint hasBreakpoint);
+                                  HasBreakpoint hasBreakpoint, bool running = true);
 
 /// The variables pane's lines, `width` columns each: "name  value", names padded to a column;
 /// strings in quotes, arrays as `name[3,4]` and their first elements; a variable without a value
@@ -57,7 +59,7 @@ std::string paneLineText(std::string_view text, uint32_t number, int numberWidth
 
 template <typename HasBreakpoint>
 std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int height, int width,
-                                  HasBreakpoint hasBreakpoint) {
+                                  HasBreakpoint hasBreakpoint, bool running) {
   std::vector<PaneLine> out;
   if (height <= 0 || width <= 0) return out;
   uint32_t count = file.lineCount();
@@ -69,7 +71,7 @@ std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int hei
   int numberWidth = static_cast<int>(std::to_string(count).size());
   for (uint32_t n = first; n < first + rows && n <= count; ++n) {
     PaneLine l;
-    l.highlight = n == line;
+    l.highlight = running && n == line;
     l.marked = hasBreakpoint(n);
     char marker = l.highlight ? '>' : l.marked ? '*' : ' ';
     l.text = paneLineText(file.lineText(n), n, numberWidth, marker, width);

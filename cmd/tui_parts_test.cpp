@@ -24,6 +24,7 @@ TEST_CASE("debugger: a statement step pauses at the next statement", "[tui]") {
   CHECK_FALSE(d.pauseAtStatement(at(1), 0));
   d.step(Debugger::Step::Into, 0);
   CHECK(d.pauseAtStatement(at(2), 1));  // into a gosub
+  CHECK_FALSE(d.stoppedAtBreakpoint());
   CHECK(d.armed() == Debugger::Step::None);
   CHECK_FALSE(d.pauseAtStatement(at(3), 1));
 }
@@ -51,6 +52,7 @@ TEST_CASE("debugger: a breakpoint stops on arriving at its line", "[tui]") {
   d.addBreakpoint(0, 5);
   CHECK_FALSE(d.pauseAtStatement(at(4), 0));
   CHECK(d.pauseAtStatement(at(5, 1), 0));
+  CHECK(d.stoppedAtBreakpoint());
   // Further statements of the same line do not stop again...
   CHECK_FALSE(d.pauseAtStatement(at(5, 10), 0));
   // ...but coming back to the line's start (a loop) does.
@@ -117,6 +119,11 @@ TEST_CASE("source pane: the running line highlighted, breakpoints marked", "[tui
   lines = sourceLines(f, 30, 9, 20, [](uint32_t) { return false; });
   CHECK(lines.back().text == ">30 x = 30");
   CHECK(lines.size() == 9);
+  // After the end the pane stays where the run was, without the running line's marker.
+  lines = sourceLines(f, 12, 9, 20, [](uint32_t n) { return n == 13; }, false);
+  CHECK(lines[3].text == " 12 x = 12");
+  CHECK_FALSE(lines[3].highlight);
+  CHECK(lines[4].text == "*13 x = 13");
   // Before the first statement: from the top; lines cut at the width, tabs expanded.
   SourceFile g("b.bas", "\tprint 1234567890\n");
   lines = sourceLines(g, 0, 5, 12, [](uint32_t) { return false; });

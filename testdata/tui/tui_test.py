@@ -378,11 +378,18 @@ def test_break(rb):
         t = s.wait_for("the breakpoint", lambda t: running_line(t) == 7
                        and status(t, "state") == "paused")
         t = s.wait_for("total 1", lambda t: variable(t, "total") == "1")
+        check("paused at breakpoint, line 7" in t.split("\n")[0], "the title does not say why:\n" + t)
         check(variable(t, "name") == '"rb"', "a string in the variables pane:\n" + t)
         check(variable(t, "n") == "1", "the loop counter:\n" + t)
         s.keys("F2")
         t = s.wait_for("the second stop", lambda t: running_line(t) == 7
                        and variable(t, "total") == "3" and status(t, "state") == "paused")
+        s.keys("F3")  # a step from the breakpoint: paused, but not at a breakpoint any more
+        t = s.wait_for("the step", lambda t: running_line(t) == 8 and status(t, "state") == "paused")
+        check("breakpoint" not in t.split("\n")[0], "the title after a step:\n" + t)
+        s.keys("F2")
+        t = s.wait_for("the third stop", lambda t: running_line(t) == 7
+                       and variable(t, "total") == "6" and status(t, "state") == "paused")
         s.keys("F9")  # clears the breakpoint on the shown line: the run goes on to its end
         s.wait_for("the title's notice", lambda t: "breakpoint cleared on line 7" in t.split("\n")[0])
         s.keys("F2")
@@ -392,6 +399,29 @@ def test_break(rb):
         check(s.exit_code() == 0, "exit status")
         after = s.wait_text("total 6")
         check("rb run debug.bas" not in after, "the view is still shown after the exit:\n" + after)
+    finally:
+        s.close()
+
+
+def keys_line(screen):
+    lines = screen.rstrip("\n").split("\n")
+    return lines[-1] if lines else ""
+
+
+def test_finished(rb):
+    """After the end the source pane marks no line as running and the keys line offers only
+    what can still be done (no pause, step, breakpoint or speed)."""
+    s = Session(rb, "debug.bas")
+    try:
+        t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        t = s.settled()
+        check(running_line(t) is None, "a line is still marked running:\n" + t)
+        keys = keys_line(t)
+        check("F6 view" in keys and "F10 quit" in keys, "keys line: " + keys)
+        for gone in ("F2", "F3", "F7", "F8", "F9", "F4/F5"):
+            check(gone not in keys, f"the keys line still offers {gone}: " + keys)
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status")
     finally:
         s.close()
 
@@ -611,6 +641,7 @@ TESTS = {
     "text": test_text,
     "dumb": test_dumb,
     "output": test_output,
+    "finished": test_finished,
     "real": test_real,
     "pixels": test_pixels,
     "input_terminal": test_input_terminal,
