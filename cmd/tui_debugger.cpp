@@ -1,6 +1,47 @@
 #include "tui_debugger.h"
 
+#include <algorithm>
+
 namespace rb::cli {
+
+StatementLines::StatementLines(const Program& program) {
+  for (size_t pc = 0; pc < program.code.size() && pc < program.locs.size(); ++pc) {
+    if (program.code[pc].op != Op::Line) continue;
+    const SourceLoc& loc = program.locs[pc];
+    if (!loc.valid()) continue;
+    if (loc.file >= lines_.size()) lines_.resize(loc.file + 1);
+    lines_[loc.file].push_back(loc.line);
+  }
+  for (std::vector<uint32_t>& l : lines_) {
+    std::sort(l.begin(), l.end());
+    l.erase(std::unique(l.begin(), l.end()), l.end());
+  }
+}
+
+bool StatementLines::has(uint32_t file, uint32_t line) const {
+  return file < lines_.size() && std::binary_search(lines_[file].begin(), lines_[file].end(), line);
+}
+
+uint32_t StatementLines::atOrAfter(uint32_t file, uint32_t line) const {
+  if (file >= lines_.size()) return 0;
+  auto it = std::lower_bound(lines_[file].begin(), lines_[file].end(), line);
+  return it == lines_[file].end() ? 0 : *it;
+}
+
+BreakpointPlace placeBreakpoint(const StatementLines& lines, uint32_t file, uint32_t line) {
+  BreakpointPlace p;
+  p.line = lines.atOrAfter(file, line);
+  if (p.line == line) return p;
+  if (p.line == 0) {
+    p.note = "no statement on or after line " + std::to_string(line) +
+             ": nothing there can stop the run";
+    return p;
+  }
+  p.moved = true;
+  p.note = "line " + std::to_string(line) + " holds no statement: the breakpoint is on line " +
+           std::to_string(p.line) + ", the next that does";
+  return p;
+}
 
 void Debugger::step(Step kind, size_t depth) {
   step_ = kind;

@@ -6,11 +6,42 @@
 #include <cstddef>
 #include <cstdint>
 #include <set>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "base/source.h"
+#include "lang/bytecode.h"
 
 namespace rb::cli {
+
+/// The lines of each file of a program where a run can stop: those that hold a statement, as
+/// the compiler marks them for line tracing (the host's onLine is called only there). Comments,
+/// blank lines, labels, `sub` and `endsub` lines hold none; `else`, `next`, `wend` and `until`
+/// lines do (their statement runs when the run comes to them).
+class StatementLines {
+ public:
+  /// From `program`, compiled with CompileOptions::lineTracing.
+  explicit StatementLines(const Program& program);
+  bool has(uint32_t file, uint32_t line) const;
+  /// The first line at or after `line` of `file` that holds a statement; 0 when none does.
+  uint32_t atOrAfter(uint32_t file, uint32_t line) const;
+
+ private:
+  std::vector<std::vector<uint32_t>> lines_;  ///< by file: sorted, each once
+};
+
+/// Where a breakpoint asked for on a line goes (a breakpoint must be on a statement to stop).
+struct BreakpointPlace {
+  uint32_t line = 0;  ///< the line it goes on; 0: refused (no statement on or after the line)
+  bool moved = false;  ///< the line asked for holds no statement: the next one that does
+  /// What happened, for the title and standard error ("" when the line was taken as asked):
+  /// "line 3 holds no statement: the breakpoint is on line 5, the next that does" or
+  /// "no statement on or after line 40: nothing there can stop the run".
+  std::string note;
+};
+/// Places a breakpoint asked for on `line` of `file`.
+BreakpointPlace placeBreakpoint(const StatementLines& lines, uint32_t file, uint32_t line);
 
 class Debugger {
  public:

@@ -470,6 +470,13 @@ void TuiHost::toggleBreakpoint() {
   noticeLoc_ = loc_;
 }
 
+void TuiHost::startNotice(std::string text) {
+  constexpr auto kStartNotice = std::chrono::seconds(5);
+  notice_ = std::move(text);
+  noticeLoc_ = {};
+  noticeUntil_ = Clock::now() + kStartNotice;
+}
+
 void TuiHost::changeSpeed(double by) {
   clock_.setFactor(std::clamp(clock_.factor() * by, kMinFactor, kMaxFactor));
 }
@@ -552,7 +559,8 @@ void TuiHost::draw() {
   std::string title = " rb run " + settings_.fileName + "   " + titleState() + "   view " +
                       (pixels_ ? "pixels" : modeName(mode_));
   if (!pixelsNote_.empty()) title += "   " + pixelsNote_;
-  if (!ended_ && !notice_.empty() && loc_ == noticeLoc_) title += "   " + notice_;
+  if (!ended_ && !notice_.empty() && (loc_ == noticeLoc_ || lastFrame_ < noticeUntil_))
+    title += "   " + notice_;
   title.resize(static_cast<size_t>(layout_.title.width), ' ');
   screen_.drawText(0, 0, title, bar);
   screen_.drawBox(layout_.arenaBox.col, layout_.arenaBox.row, layout_.arenaBox.width,

@@ -57,6 +57,9 @@ class TuiHost : public Host, public RobotObserver {
     sources_ = &sources;
   }
   Debugger& debugger() { return debugger_; }
+  /// A notice for the title at the start of the run (a breakpoint that moved), shown for a
+  /// few seconds.
+  void startNotice(std::string text);
 
   void output(std::string_view text) override;
   std::optional<std::string> inputLine(std::string_view prompt) override;
@@ -184,8 +187,9 @@ class TuiHost : public Host, public RobotObserver {
   bool endKey_ = false;
   const char* waitingFor_ = nullptr;  ///< what a blocking read waits for, for the state line
   std::string endState_;
-  std::string notice_;  ///< shown in the title while the run stays at noticeLoc_
+  std::string notice_;  ///< shown in the title while the run stays at noticeLoc_ ...
   SourceLoc noticeLoc_;
+  Clock::time_point noticeUntil_{};  ///< ... or until then
   SourceLoc loc_;      ///< the statement running now (or about to, when paused)
   SourceLoc breakAt_;  ///< where a breakpoint paused the run (invalid: not paused by one)
   size_t depth_ = 0;   ///< its gosub/call depth

@@ -2,6 +2,7 @@
 // and variables panes.
 #include <catch2/catch.hpp>
 
+#include "machine/test_support.h"
 #include "tui_debugger.h"
 #include "tui_keyboard.h"
 #include "tui_panes.h"
@@ -167,4 +168,57 @@ TEST_CASE("output pane: tabs to 8-column stops, long lines wrapped", "[tui]") {
         std::vector<std::string>{"a long lin", "e that wra", "ps", "end"});
   CHECK(lastRows(lines, 80, 10) == std::vector<std::string>{"one", "two", "a long line that wraps", "end"});
   CHECK(lastRows(lines, 10, 0).empty());
+}
+
+namespace {
+std::unique_ptr<Program> traced(const std::string& text) {
+  test::MemoryReader reader;
+  reader.files["test.bas"] = text;
+  DiagnosticList diags;
+  auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
+  CompileOptions options;
+  options.lineTracing = true;
+  return compileProgram(*loaded, options, diags);
+}
+}  // namespace
+
+TEST_CASE("statement lines: where a run can stop", "[tui]") {
+  auto program = traced(
+      "// a comment\n"     // 1
+      "x = 1\n"            // 2
+      "\n"                 // 3
+      "if x = 1\n"         // 4
+      "  print 1\n"        // 5
+      "else\n"             // 6
+      "  print 2\n"        // 7
+      "endif\n"            // 8
+      "for i = 1 to 2\n"   // 9
+      "next\n"             // 10
+      "Done:\n"            // 11
+      "end\n"              // 12
+      "sub Foo()\n"        // 13
+      "  print 3\n"        // 14
+      "endsub\n"           // 15
+      "// the end\n");     // 16
+  REQUIRE(program);
+  StatementLines lines(*program);
+  for (uint32_t n : {2u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 12u, 14u}) CHECK(lines.has(0, n));
+  for (uint32_t n : {1u, 3u, 11u, 13u, 15u, 16u}) CHECK_FALSE(lines.has(0, n));
+  CHECK(lines.atOrAfter(0, 1) == 2);
+  CHECK(lines.atOrAfter(0, 11) == 12);
+  CHECK(lines.atOrAfter(0, 13) == 14);
+  CHECK(lines.atOrAfter(0, 15) == 0);
+  CHECK(lines.atOrAfter(1, 1) == 0);  // no such file
+
+  BreakpointPlace same = placeBreakpoint(lines, 0, 5);
+  CHECK(same.line == 5);
+  CHECK_FALSE(same.moved);
+  CHECK(same.note.empty());
+  BreakpointPlace moved = placeBreakpoint(lines, 0, 3);
+  CHECK(moved.line == 4);
+  CHECK(moved.moved);
+  CHECK(moved.note == "line 3 holds no statement: the breakpoint is on line 4, the next that does");
+  BreakpointPlace refused = placeBreakpoint(lines, 0, 16);
+  CHECK(refused.line == 0);
+  CHECK(refused.note == "no statement on or after line 16: nothing there can stop the run");
 }

@@ -2,7 +2,9 @@
 
 #include <cstdio>
 #include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "curses_screen.h"
 #include "diagnostic_output.h"
@@ -76,6 +78,33 @@ int runTui(const RunOptions& opts) {
   ProgramRun run;
   if (int code = run.load(kCommand, opts, compile)) return code;
 
+  // Breakpoints go on statements: one asked for on a line without one (a comment, a blank
+  // line, a label) moves to the next line that has one, and says so here, before the view
+  // hides the terminal, and in the view's title.
+  const SourceSet& sources = run.loaded.program->sources;
+  StatementLines statements(*run.loaded.compiled);
+  std::vector<std::pair<uint32_t, uint32_t>> breaks;
+  std::vector<std::string> moved;
+  for (const std::string& b : opts.breaks) {
+    std::optional<std::pair<uint32_t, uint32_t>> at = breakpointLine(b, sources);
+    if (!at) {
+      std::fprintf(stderr, "%s: --break %s: no such line in the program\n", kCommand, b.c_str());
+      return exitcode::kUsage;
+    }
+    BreakpointPlace place = placeBreakpoint(statements, at->first, at->second);
+    if (place.line == 0) {
+      std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
+      return exitcode::kUsage;
+    }
+    if (place.moved) {
+      std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
+      moved.push_back("breakpoint moved: line " + std::to_string(at->second) + " -> " +
+                      std::to_string(place.line) + " (no statement on " +
+                      std::to_string(at->second) + ")");
+    }
+    breaks.emplace_back(at->first, place.line);
+  }
+
   std::string why;
   std::unique_ptr<render::CursesScreen> screen = render::CursesScreen::open(why);
   if (!screen) {
@@ -93,16 +122,8 @@ int runTui(const RunOptions& opts) {
   auto host = std::make_unique<TuiHost>(*screen, settings);
   TuiHost& view = *host;
   view.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
-  const SourceSet& sources = run.loaded.program->sources;
-  for (const std::string& b : opts.breaks) {
-    std::optional<std::pair<uint32_t, uint32_t>> at = breakpointLine(b, sources);
-    if (!at) {
-      screen.reset();
-      std::fprintf(stderr, "%s: --break %s: no such line in the program\n", kCommand, b.c_str());
-      return exitcode::kUsage;
-    }
-    view.debugger().addBreakpoint(at->first, at->second);
-  }
+  for (auto [file, line] : breaks) view.debugger().addBreakpoint(file, line);
+  if (!moved.empty()) view.startNotice(moved.size() == 1 ? moved[0] : std::to_string(moved.size()) + " breakpoints moved to the next line with a statement");
   run.keepDisplayList = true;  // the text the program draws, shown as characters
   if (std::string failed = run.start(opts, std::move(host), &view); !failed.empty()) {
     screen.reset();

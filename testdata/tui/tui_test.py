@@ -403,6 +403,40 @@ def test_break(rb):
         s.close()
 
 
+def test_break_moved(rb):
+    """A breakpoint on a line without a statement (a comment, a blank line before a label) moves
+    to the next line that has one, said on stderr and in the title; one with no statement after
+    it is refused with the reason (exit 64), as is a line past the end."""
+    s = Session(rb, "debug.bas", args="--break 1 --break 11")
+    try:
+        t = s.wait_for("the stop on line 2", lambda t: running_line(t) == 2
+                       and status(t, "state") == "paused")
+        title = t.split("\n")[0]
+        check("paused at breakpoint, line 2" in title, "title: " + title)
+        check("breakpoints moved" in title or "line 1 -> 2" in title, "the title does not say it moved: " + title)
+        s.keys("F2")
+        t = s.wait_for("the stop in the gosub", lambda t: running_line(t) == 13
+                       and status(t, "state") == "paused")
+        check("paused at breakpoint, line 13" in t.split("\n")[0], "title:\n" + t)
+        s.keys("F10")
+        check(s.exit_code() == 0, "exit status")
+        err = s.stderr()
+        check("--break 1: line 1 holds no statement: the breakpoint is on line 2, the next that does" in err,
+              "stderr: " + err)
+        check("--break 11: line 11 holds no statement: the breakpoint is on line 13" in err, "stderr: " + err)
+    finally:
+        s.close()
+    for line, message in (("15", "--break 15: no statement on or after line 15: nothing there can stop the run"),
+                          ("16", "--break 16: no such line in the program")):
+        s = Session(rb, "debug.bas", args=f"--break {line}")
+        try:
+            code = s.exit_code()
+            check(code == 64, f"exit status {code} for --break {line}")
+            check(message in s.stderr(), "stderr: " + s.stderr())
+        finally:
+            s.close()
+
+
 def keys_line(screen):
     lines = screen.rstrip("\n").split("\n")
     return lines[-1] if lines else ""
@@ -642,6 +676,7 @@ TESTS = {
     "dumb": test_dumb,
     "output": test_output,
     "finished": test_finished,
+    "break_moved": test_break_moved,
     "real": test_real,
     "pixels": test_pixels,
     "input_terminal": test_input_terminal,
