@@ -154,6 +154,10 @@ void addRunCommand(CLI::App& app, int& exitCode, bool withOptions) {
                   "repeatable")
       ->type_name("[FILE:]LINE")
       ->needs(tui);
+  run->add_flag("--watch", opts->watch,
+                "Run the program again in --tui each time it (or a file it includes) is saved, "
+                "keeping the breakpoints and the view")
+      ->needs(tui);
   run->footer(
       "Exit status: 0 finished (or --tui quit with F10), 64 bad usage, 65 the program has "
       "errors (nothing ran), 66 file not found, 70 runtime error or limit reached, 74 I/O error "

@@ -38,6 +38,7 @@ struct RunOptions {
   double speed = 1;
   bool paused = false;
   std::vector<std::string> breaks;
+  bool watch = false;  ///< --watch: run the program again in the view when it is saved
   // Diagnostics: --color auto|always|never; --quiet leaves out the load warnings.
   std::string color = "auto";
   bool quiet = false;

@@ -74,6 +74,8 @@ class Debugger {
   bool hasBreakpoint(uint32_t file, uint32_t line) const {
     return !breaks_.empty() && breaks_.count({file, line}) != 0;
   }
+  /// Every breakpoint: (file, line), in order.
+  const std::set<std::pair<uint32_t, uint32_t>>& breakpoints() const { return breaks_; }
 
  private:
   Step step_ = Step::None;

@@ -31,10 +31,12 @@ constexpr size_t kMaxOutputLines = 1000;
 constexpr size_t kMaxTranscript = 64u << 20;
 constexpr size_t kMaxTypedAhead = 8;
 constexpr double kMinFactor = 1.0 / 64, kMaxFactor = 64;
+/// How often the view asks the file watch (--watch) whether the program was saved.
+constexpr auto kWatchInterval = std::chrono::milliseconds(100);
 
 // Control characters of the keys rb keeps (raw mode delivers them as keys). None is a common
 // prefix of tmux (Ctrl-B) or screen (Ctrl-A).
-constexpr int64_t kCtrlC = 3, kCtrlF = 6, kCtrlL = 12, kCtrlN = 14, kCtrlP = 16, kCtrlQ = 17,
+constexpr int64_t kCtrlC = 3, kCtrlF = 6, kCtrlG = 7, kCtrlL = 12, kCtrlN = 14, kCtrlP = 16, kCtrlQ = 17,
                   kCtrlR = 18, kCtrlS = 19, kCtrlT = 20, kCtrlV = 22, kCtrlW = 23;
 
 int64_t fKey(int n) { return keys::kF1 + n - 1; }
@@ -104,6 +106,8 @@ TuiHost::TuiHost(render::CursesScreen& screen, TuiSettings settings)
   if (settings_.pixels && !pixels_) pixelsNote_ = "(no pixels: the terminal shows no sixel images)";
   // --paused: a step armed from the start ends before the first statement.
   if (settings_.paused) debugger_.step(Debugger::Step::Into, 0);
+  varScroll_ = settings_.varScroll;
+  if (!settings_.notice.empty()) startNotice(settings_.notice);
 }
 
 void TuiHost::output(std::string_view text) { appendOutput(text); }
@@ -201,6 +205,10 @@ void TuiHost::pump(int waitMs) {
   }
   if (e.kind != TermEvent::None) handle(e);
   lastTick_ = Clock::now();
+  if (fileWatch && !restart_ && lastTick_ - lastWatch_ >= kWatchInterval) {
+    lastWatch_ = lastTick_;
+    if (fileWatch->changed()) restart("restarted: " + settings_.fileName + " was saved");
+  }
   if (lastTick_ - lastFrame_ >= kFrameInterval) draw();
 }
 
@@ -304,6 +312,34 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
   blockUntil("", [this] { return endKey_; });  // quitting ends the final screen too
 }
 
+void TuiHost::showLoadErrors(const std::string& errors, SourceLoc at) {
+  loadFailed_ = true;
+  loc_ = at;
+  ended_ = true;  // nothing runs: no pause, step or breakpoint
+  clock_.setRunning(false);
+  endState_ = "not loaded";
+  error_ = errors;
+  // Only a restart (F12, or a save with --watch) or quitting ends this: there is no final
+  // screen to leave with any key.
+  blockUntil("", [this] { return endKey_; });
+}
+
+TuiSettings TuiHost::nextSettings() const {
+  TuiSettings next = settings_;
+  next.mode = mode_;
+  // Pixels asked for on a terminal without them stay asked for, so the title still says why.
+  next.pixels = pixels_ || (settings_.pixels && !screen_.sixel());
+  next.speed = clock_.factor();
+  next.varScroll = varScroll_;
+  next.notice = restartWhy_;
+  if (!loadFailed_ && sources_) {
+    next.breakpoints.clear();
+    for (auto [file, line] : debugger_.breakpoints())
+      if (file < sources_->size()) next.breakpoints.push_back({sources_->file(file).name(), line});
+  }
+  return next;
+}
+
 void TuiHost::refreshVariables() {
   lastVariables_ = Clock::now();
   if (!interp_ || layout_.vars.width <= 0) return;
@@ -338,6 +374,7 @@ bool TuiHost::viewKey(int64_t key) {
   else if (key == fKey(5) || key == kCtrlF) changeSpeed(2);
   else if (key == fKey(6) || key == kCtrlV) cycleMode();
   else if (key == kCtrlL) redraw_ = true;
+  else if (key == fKey(12) || key == kCtrlG) restart("restarted");
   else if (key == fKey(10) || key == kCtrlQ) quit(0);
   else if (key == kCtrlC) quit(kInterruptedExit);
   else return false;
@@ -358,6 +395,7 @@ bool TuiHost::scrollKey(int64_t key) {
 
 void TuiHost::handleKey(int64_t key) {
   if (viewKey(key)) return;
+  if (loadFailed_) return;  // nothing to exit to but quitting
   if (ended_) {
     if (!scrollKey(key)) endKey_ = true;
     return;
@@ -394,6 +432,7 @@ void TuiHost::handleKey(int64_t key) {
       case '+':
       case '=': changeSpeed(2); return;
       case 'v': cycleMode(); return;
+      case 'g': restart("restarted"); return;
       case 'q': quit(0); return;
       default: break;
     }
@@ -483,6 +522,14 @@ void TuiHost::changeSpeed(double by) {
 
 void TuiHost::quit(int code) {
   quitCode_ = code;
+  quit_ = true;
+  requestStop();
+}
+
+void TuiHost::restart(std::string why) {
+  restart_ = true;
+  restartWhy_ = std::move(why);
+  endKey_ = true;  // leaves the final screen too
   requestStop();
 }
 
@@ -524,6 +571,7 @@ std::string TuiHost::titleState() const {
 }
 
 ViewState TuiHost::viewState() const {
+  if (loadFailed_) return ViewState::NotLoaded;
   if (ended_) return ViewState::Ended;
   return paused_ ? ViewState::Paused : ViewState::Running;
 }
@@ -559,7 +607,8 @@ void TuiHost::draw() {
   std::string title = " rb run " + settings_.fileName + "   " + titleState() + "   view " +
                       (pixels_ ? "pixels" : modeName(mode_));
   if (!pixelsNote_.empty()) title += "   " + pixelsNote_;
-  if (!ended_ && !notice_.empty() && (loc_ == noticeLoc_ || lastFrame_ < noticeUntil_))
+  // (After the end the run stays where it was: only the time shown bounds a notice then.)
+  if (!notice_.empty() && ((!ended_ && loc_ == noticeLoc_) || lastFrame_ < noticeUntil_))
     title += "   " + notice_;
   title.resize(static_cast<size_t>(layout_.title.width), ' ');
   screen_.drawText(0, 0, title, bar);
@@ -576,7 +625,8 @@ void TuiHost::draw() {
   TermStyle dim;
   dim.dim = true;
   screen_.drawText(layout_.keys.col, layout_.keys.row,
-                   keysLine(layout_.keys.width, viewState(), programKeys_), dim);
+                   keysLine(layout_.keys.width, viewState(), programKeys_, settings_.watching),
+                   dim);
   screen_.present();
 }
 
@@ -803,7 +853,13 @@ void TuiHost::drawOutput() {
   if (!error_.empty()) {
     // The error wraps like output, so that its hint ("did you mean ...") is never cut off; it
     // keeps its rows at the bottom and the output above gets what is left.
-    std::vector<std::string> rows = wrapRows(error_, r.width);
+    std::vector<std::string> rows;
+    for (size_t at = 0; at <= error_.size();) {
+      size_t end = std::min(error_.find('\n', at), error_.size());
+      for (std::string& row : wrapRows(std::string_view(error_).substr(at, end - at), r.width))
+        rows.push_back(std::move(row));
+      at = end + 1;
+    }
     if (static_cast<int>(rows.size()) > room) rows.resize(static_cast<size_t>(std::max(room, 0)));
     room -= static_cast<int>(rows.size());
     TermStyle errorStyle;

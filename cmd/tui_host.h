@@ -17,6 +17,7 @@
 
 #include "arena_view.h"
 #include "curses_screen.h"
+#include "file_watch.h"
 #include "input/input_rules.h"
 #include "machine/host.h"
 #include "machine/interpreter.h"
@@ -27,13 +28,25 @@
 
 namespace rb::cli {
 
-/// How the view starts (rb run's options).
+/// A breakpoint as a restart keeps it: by the file's name (its index may change when the
+/// program is loaded again) and line.
+struct NamedBreakpoint {
+  std::string file;
+  uint32_t line = 0;
+};
+
+/// How the view starts: rb run's options for the first run, and for a restart what the view
+/// was showing (TuiHost::nextSettings).
 struct TuiSettings {
   std::string fileName;  ///< shown in the title
   render::CellMode mode = render::CellMode::Ascii;
   bool pixels = false;   ///< --cells pixels: the screen as an image where the terminal can show it
   double speed = 1;      ///< --speed
   bool paused = false;   ///< --paused: stop before the first statement
+  bool watching = false;  ///< --watch: a save of the program restarts it
+  std::vector<NamedBreakpoint> breakpoints;
+  int varScroll = 0;     ///< how far the variables pane is scrolled
+  std::string notice;    ///< for the title at the start (why the run restarted, moved breakpoints)
 };
 
 class TuiHost : public Host, public RobotObserver {
@@ -57,6 +70,10 @@ class TuiHost : public Host, public RobotObserver {
     sources_ = &sources;
   }
   Debugger& debugger() { return debugger_; }
+  /// The program's sources without a running program (its load failed): for the source pane.
+  void showSources(const SourceSet* sources) { sources_ = sources; }
+  /// Watched for saves of the program (--watch): a change restarts the run.
+  FileWatch* fileWatch = nullptr;
   /// A notice for the title at the start of the run (a breakpoint that moved), shown for a
   /// few seconds.
   void startNotice(std::string text);
@@ -86,8 +103,21 @@ class TuiHost : public Host, public RobotObserver {
   void robotEvent(const RobotEvent& e) override;
 
   /// After the run: shows how it ended (`error`: the runtime error's first line) and keeps the
-  /// final frame until a key, unless the user quit.
+  /// final frame until a key, unless the user quit or restarted.
   void showEnd(const RunResult& result, const std::string& error);
+  /// Instead of a run, when the program could not be loaded (a syntax error saved with --watch,
+  /// or found by a restart): shows `errors` (one per line) and waits for a restart (the key, or
+  /// a save) or quitting.
+  /// `at`: the first error's place, which the source pane shows.
+  void showLoadErrors(const std::string& errors, SourceLoc at);
+  /// The user asked for a restart (F12), or a watched file changed: the run ended at once and
+  /// the caller runs the program again with nextSettings().
+  bool restartRequested() const { return restart_; }
+  /// Whether the user quit (rather than ending the final screen or restarting).
+  bool quitRequested() const { return quit_; }
+  /// The view as it is now, for the run after a restart: cell mode, speed, breakpoints by
+  /// file name, the variables' scroll, and why it restarts.
+  TuiSettings nextSettings() const;
   /// The exit status of a run the user quit: 0 for the quit keys, 130 for Ctrl-C.
   int quitCode() const { return quitCode_; }
   /// Everything the program printed (with the lines typed at `input` prompts), to be printed
@@ -138,6 +168,8 @@ class TuiHost : public Host, public RobotObserver {
   void changeSpeed(double by);
   void cycleMode();
   void quit(int code);
+  /// Ends the run (or the final screen) for a restart; `why` goes into the next run's title.
+  void restart(std::string why);
 
   /// Blocks until `done` holds, showing `state`.
   void blockUntil(const char* state, const std::function<bool()>& done);
@@ -183,6 +215,11 @@ class TuiHost : public Host, public RobotObserver {
   Debugger debugger_;
   bool paused_ = false;
   int quitCode_ = 0;
+  bool quit_ = false;
+  bool restart_ = false;
+  std::string restartWhy_;
+  bool loadFailed_ = false;  ///< showLoadErrors: no program runs
+  Clock::time_point lastWatch_{};
   bool ended_ = false;  ///< the run is over: the final screen is shown
   bool endKey_ = false;
   const char* waitingFor_ = nullptr;  ///< what a blocking read waits for, for the state line

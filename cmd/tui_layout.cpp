@@ -223,22 +223,27 @@ std::vector<std::string> compactStatusLines(const TuiStatus& s, int width) {
   return out;
 }
 
-std::string keysLine(int width, ViewState state, bool programKeys) {
+std::string keysLine(int width, ViewState state, bool programKeys, bool watching) {
   // The most useful first; as many as fit.
   std::vector<std::string> keys;
   switch (state) {
     case ViewState::Running:
     case ViewState::Paused:
       keys = {state == ViewState::Paused ? "F2 run" : "F2 pause", "F3 step", "F7 over",
-              "F8 pixel", "F9 break", "F4/F5 speed", "F6 view", "F10 quit"};
+              "F8 pixel", "F9 break", "F4/F5 speed", "F6 view", "F10 quit", "F12 restart"};
       if (state == ViewState::Paused) keys.push_back("PgUp/PgDn variables");
-      if (!programKeys) keys.push_back("(or p s n r b - + v q)");
+      if (!programKeys) keys.push_back("(or p s n r b - + v g q)");
       break;
     case ViewState::Ended:
       // Nothing runs any more: pausing, stepping, breakpoints and the speed are gone.
-      keys = {"F6 view", "F10 quit", "PgUp/PgDn variables", "any other key exits"};
+      keys = {"F12 restart", "F6 view", "F10 quit", "PgUp/PgDn variables", "any other key exits"};
+      break;
+    case ViewState::NotLoaded:
+      keys = {"F12 load again", "F10 quit"};
       break;
   }
+  if (watching && state != ViewState::Running && state != ViewState::Paused)
+    keys.insert(keys.begin() + 1, "(or save the file)");
   std::string line;
   for (const std::string& k : keys) {
     size_t need = line.empty() ? k.size() : k.size() + 2;

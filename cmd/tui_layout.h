@@ -82,10 +82,12 @@ std::vector<std::string> compactStatusLines(const TuiStatus& s, int width);
 enum class ViewState {
   Running,
   Paused,
-  Ended,  ///< the run is over: only what can still be done (the view, quitting)
+  Ended,  ///< the run is over: only what can still be done (restart, the view, quitting)
+  NotLoaded,  ///< the program has errors: restart (load it again) or quit
 };
-/// The bottom line: rb's keys for `state`, as many as fit in `width`.
-std::string keysLine(int width, ViewState state, bool programKeys);
+/// The bottom line: rb's keys for `state`, as many as fit in `width`; `watching` (--watch)
+/// adds that a save restarts.
+std::string keysLine(int width, ViewState state, bool programKeys, bool watching = false);
 /// The bits of rBumper() or rFeel() in words: "4 front", "0", "6 right+front".
 std::string bumperText(int bits);
 std::string feelText(int bits);

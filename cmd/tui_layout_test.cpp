@@ -109,7 +109,7 @@ TEST_CASE("tui status panel", "[tui]") {
 TEST_CASE("tui keys line: the most useful keys that fit", "[tui]") {
   using V = ViewState;
   CHECK(keysLine(200, V::Running, false).starts_with("F2 pause  F3 step  F7 over"));
-  CHECK(keysLine(200, V::Running, false).ends_with("(or p s n r b - + v q)"));
+  CHECK(keysLine(200, V::Running, false).ends_with("F10 quit  F12 restart  (or p s n r b - + v g q)"));
   CHECK(keysLine(200, V::Paused, true).find("F2 run") == 0);
   CHECK(keysLine(200, V::Paused, true).find("(or") == std::string::npos);
   CHECK(keysLine(200, V::Paused, true).find("PgUp/PgDn") != std::string::npos);
@@ -121,6 +121,10 @@ TEST_CASE("tui keys line: the most useful keys that fit", "[tui]") {
   CHECK(ended.find("F10 quit") != std::string::npos);
   for (const char* gone : {"F2", "F3", "F7", "F8", "F9", "F4", "(or"})
     CHECK(ended.find(gone) == std::string::npos);
+  CHECK(ended.starts_with("F12 restart"));
+  CHECK(keysLine(200, V::Ended, false, true).starts_with("F12 restart  (or save the file)"));
+  // A program that does not load: load it again, or quit.
+  CHECK(keysLine(200, V::NotLoaded, false) == "F12 load again  F10 quit");
 }
 
 TEST_CASE("tui layout: source and variables panes beside the arena", "[tui]") {

@@ -9,6 +9,8 @@
 #include "curses_screen.h"
 #include "diagnostic_output.h"
 #include "exit_codes.h"
+#include "file_watch.h"
+#include "program_loader.h"
 #include "program_run.h"
 #include "robot_port.h"
 #include "tui_host.h"
@@ -57,6 +59,74 @@ std::string baseName(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+/// The files the program was loaded from, for --watch: the main file (also when it could not be
+/// read) and every file it includes.
+std::vector<std::string> programFiles(const std::string& main, const LoadedFile& loaded) {
+  std::vector<std::string> files = {main};
+  if (loaded.program)
+    for (uint32_t i = 1; i < loaded.program->sources.size(); ++i)
+      files.push_back(loaded.program->sources.file(i).name());
+  return files;
+}
+
+/// Why a program could not be loaded, as the view shows it: the heading line of each error.
+std::string loadErrorText(const std::string& file, const LoadedFile& loaded) {
+  if (!loaded.program) return "cannot read '" + file + "': " + loaded.readError;
+  std::string out;
+  for (const Diagnostic& d : loaded.diags.all()) {
+    if (d.severity != Severity::Error) continue;
+    if (!out.empty()) out += '\n';
+    out += formatDiagnostic(loaded.program->sources, d, DiagnosticStyle{false, true});
+  }
+  return out;
+}
+
+/// The same in full, on standard error after the view closed, as rb run prints them.
+void printLoadErrors(const RunOptions& opts, const LoadedFile& loaded) {
+  if (!loaded.program) {
+    std::fprintf(stderr, "%s: cannot read '%s': %s\n", kCommand, opts.file.c_str(),
+                 loaded.readError.c_str());
+    return;
+  }
+  DiagOutputOptions out;
+  out.color = useColor(opts.color, stderr);
+  DiagnosticReport report(stderr, out);
+  report.add(loaded.program->sources, loaded.diags, true);
+  report.finish();
+}
+
+/// Puts the breakpoints a restart keeps on the program as it is now: by file name, each on its
+/// line or (that line holding no statement any more) the next that holds one; one whose file is
+/// gone, or with no statement on or after its line, is dropped. Returns what changed, for the
+/// title ("" when nothing did).
+std::string placeKept(const std::vector<NamedBreakpoint>& kept, const SourceSet& sources,
+                      const StatementLines& statements, Debugger& debugger) {
+  std::vector<std::string> notes;
+  for (const NamedBreakpoint& b : kept) {
+    uint32_t file = 0;
+    while (file < sources.size() && sources.file(file).name() != b.file) ++file;
+    std::string where = "line " + std::to_string(b.line);
+    if (file != 0) where += " of " + baseName(b.file);
+    if (file == sources.size()) {
+      notes.push_back("breakpoint on " + where + " dropped: the program no longer includes it");
+      continue;
+    }
+    BreakpointPlace place = placeBreakpoint(statements, file, b.line);
+    if (place.line == 0) {
+      notes.push_back("breakpoint on " + where + " dropped: no statement on or after it");
+      continue;
+    }
+    if (place.moved)
+      notes.push_back("breakpoint moved: line " + std::to_string(b.line) + " -> " +
+                      std::to_string(place.line) + " (no statement on " + std::to_string(b.line) +
+                      ")");
+    debugger.addBreakpoint(file, place.line);
+  }
+  if (notes.empty()) return "";
+  if (notes.size() == 1) return notes[0];
+  return notes[0] + " (and " + std::to_string(notes.size() - 1) + " more)";
+}
+
 }  // namespace
 
 int runTui(const RunOptions& opts) {
@@ -75,86 +145,159 @@ int runTui(const RunOptions& opts) {
   }
   CompileOptions compile;
   compile.lineTracing = true;  // single steps stop before every statement
-  ProgramRun run;
-  if (int code = run.load(kCommand, opts, compile)) return code;
-
-  // Breakpoints go on statements: one asked for on a line without one (a comment, a blank
-  // line, a label) moves to the next line that has one, and says so here, before the view
-  // hides the terminal, and in the view's title.
-  const SourceSet& sources = run.loaded.program->sources;
-  StatementLines statements(*run.loaded.compiled);
-  std::vector<std::pair<uint32_t, uint32_t>> breaks;
-  std::vector<std::string> moved;
-  for (const std::string& b : opts.breaks) {
-    std::optional<std::pair<uint32_t, uint32_t>> at = breakpointLine(b, sources);
-    if (!at) {
-      std::fprintf(stderr, "%s: --break %s: no such line in the program\n", kCommand, b.c_str());
-      return exitcode::kUsage;
+  LoadedFile loaded;
+  if (opts.watch) {
+    // Watching, a program with errors still opens the view, which waits for the fix to be saved.
+    loaded = loadFile(opts.file, compile, false);
+    if (loaded.exitCode == exitcode::kNoInput) {
+      printLoadErrors(opts, loaded);
+      return exitcode::kNoInput;
     }
-    BreakpointPlace place = placeBreakpoint(statements, at->first, at->second);
-    if (place.line == 0) {
-      std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
-      return exitcode::kUsage;
-    }
-    if (place.moved) {
-      std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
-      moved.push_back("breakpoint moved: line " + std::to_string(at->second) + " -> " +
-                      std::to_string(place.line) + " (no statement on " +
-                      std::to_string(at->second) + ")");
-    }
-    breaks.emplace_back(at->first, place.line);
+    if (loaded.compiled && !opts.quiet)
+      printWarningLines(kCommand, opts.file, loaded.program->sources, loaded.diags,
+                        useColor(opts.color, stderr));
+  } else if (int code = loadForRun(kCommand, opts, compile, loaded)) {
+    return code;
   }
 
   std::string why;
-  std::unique_ptr<render::CursesScreen> screen = render::CursesScreen::open(why);
-  if (!screen) {
-    std::fprintf(stderr, "%s: no terminal (%s); run without --tui for a headless run\n", kCommand,
-                 why.c_str());
-    return exitcode::kIoError;
+  std::unique_ptr<render::CursesScreen> screen;
+  TuiSettings settings;
+  {
+    // Breakpoints go on statements: one asked for on a line without one (a comment, a blank
+    // line, a label) moves to the next line that has one, and says so here, before the view
+    // hides the terminal, and in the view's title.
+    const SourceSet& sources = loaded.program->sources;
+    std::optional<StatementLines> statements;
+    if (loaded.compiled) statements.emplace(*loaded.compiled);
+    std::vector<std::string> moved;
+    for (const std::string& b : opts.breaks) {
+      std::optional<std::pair<uint32_t, uint32_t>> at = breakpointLine(b, sources);
+      if (!at) {
+        std::fprintf(stderr, "%s: --break %s: no such line in the program\n", kCommand, b.c_str());
+        return exitcode::kUsage;
+      }
+      uint32_t line = at->second;
+      // (A program that does not load yet, with --watch, places them when it does.)
+      if (statements) {
+        BreakpointPlace place = placeBreakpoint(*statements, at->first, at->second);
+        if (place.line == 0) {
+          std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
+          return exitcode::kUsage;
+        }
+        if (place.moved) {
+          std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
+          moved.push_back("breakpoint moved: line " + std::to_string(at->second) + " -> " +
+                          std::to_string(place.line) + " (no statement on " +
+                          std::to_string(at->second) + ")");
+        }
+        line = place.line;
+      }
+      settings.breakpoints.push_back({sources.file(at->first).name(), line});
+    }
+    if (moved.size() == 1) settings.notice = moved[0];
+    if (moved.size() > 1)
+      settings.notice = std::to_string(moved.size()) + " breakpoints moved to the next line with a statement";
+
+    screen = render::CursesScreen::open(why);
+    if (!screen) {
+      std::fprintf(stderr, "%s: no terminal (%s); run without --tui for a headless run\n",
+                   kCommand, why.c_str());
+      return exitcode::kIoError;
+    }
   }
 
-  TuiSettings settings;
   settings.fileName = baseName(opts.file);
   settings.mode = startMode(*screen, opts.cells);
   settings.pixels = opts.cells == "pixels";
   settings.speed = opts.speed;
   settings.paused = opts.paused;
-  auto host = std::make_unique<TuiHost>(*screen, settings);
-  TuiHost& view = *host;
-  view.robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
-  for (auto [file, line] : breaks) view.debugger().addBreakpoint(file, line);
-  if (!moved.empty()) view.startNotice(moved.size() == 1 ? moved[0] : std::to_string(moved.size()) + " breakpoints moved to the next line with a statement");
-  run.keepDisplayList = true;  // the text the program draws, shown as characters
-  if (std::string failed = run.start(opts, std::move(host), &view); !failed.empty()) {
-    screen.reset();
-    std::fprintf(stderr, "%s: %s\n", kCommand, failed.c_str());
-    return exitcode::kIoError;
-  }
-  view.watch(*run.interpreter, sources);
+  settings.watching = opts.watch;
+  // A restart runs the program with the seed of the first run: the same random numbers, so a
+  // run repeats until the program changes.
+  RunOptions runOpts = opts;
+  runOpts.seed = runSeed(opts);
+  std::unique_ptr<FileWatch> watch;
+  if (opts.watch) watch = std::make_unique<FileWatch>();
+  std::unique_ptr<ProgramRun> run;
+  TuiHost* view = nullptr;  // the last run's view (its run owns it)
+  bool notLoaded = false;   // the view closed while the program could not be loaded
+  int quitCode = 0;
 
   try {
-    run.run(opts);
-    std::string error;
-    if (run.result.error) {
-      error = formatDiagnostic(sources, *run.result.error, DiagnosticStyle{false, true});
-      error = error.substr(0, error.find('\n'));  // the heading line, without the include chain
+    for (;;) {
+      if (watch) watch->watch(programFiles(opts.file, loaded));
+      if (!loaded.compiled) {
+        // Nothing runs: the last run (its robot port, its memory) is over.
+        run.reset();
+        view = nullptr;
+        TuiHost host(*screen, settings);
+        host.fileWatch = watch.get();
+        if (loaded.program) host.showSources(&loaded.program->sources);
+        SourceLoc first;
+        for (const Diagnostic& d : loaded.diags.all())
+          if (d.severity == Severity::Error && !first.valid()) first = d.loc;
+        host.showLoadErrors(loadErrorText(opts.file, loaded), first);
+        if (!host.restartRequested()) {
+          notLoaded = true;
+          quitCode = host.quitCode();
+          break;
+        }
+        settings = host.nextSettings();
+        loaded = loadFile(opts.file, compile, false);
+        continue;
+      }
+      run.reset();  // the last run's robot port is closed before the next run opens it
+      run = std::make_unique<ProgramRun>();
+      run->loaded = std::move(loaded);
+      const SourceSet& sources = run->loaded.program->sources;
+      auto host = std::make_unique<TuiHost>(*screen, settings);
+      view = host.get();
+      std::string moved = placeKept(settings.breakpoints, sources,
+                                    StatementLines(*run->loaded.compiled), view->debugger());
+      if (!moved.empty()) view->startNotice(moved);
+      view->fileWatch = watch.get();
+      view->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
+      run->keepDisplayList = true;  // the text the program draws, shown as characters
+      if (std::string failed = run->start(runOpts, std::move(host), view); !failed.empty()) {
+        screen.reset();
+        std::fprintf(stderr, "%s: %s\n", kCommand, failed.c_str());
+        return exitcode::kIoError;
+      }
+      view->watch(*run->interpreter, sources);
+      run->run(runOpts);
+      std::string error;
+      if (run->result.error) {
+        error = formatDiagnostic(sources, *run->result.error, DiagnosticStyle{false, true});
+        error = error.substr(0, error.find('\n'));  // the heading line, without the include chain
+      }
+      view->showEnd(run->result, error);
+      if (!view->restartRequested()) break;
+      // The program as it is on disk now: a restart takes the edits in.
+      settings = view->nextSettings();
+      loaded = loadFile(opts.file, compile, false);
     }
-    view.showEnd(run.result, error);
   } catch (...) {
     screen.reset();  // never leave the terminal in raw mode
     throw;
   }
   screen.reset();  // the terminal is back to normal before anything is printed
+  if (notLoaded) {
+    printLoadErrors(opts, loaded);
+    if (quitCode == TuiHost::kInterruptedExit) return quitCode;
+    return loaded.program ? exitcode::kRejected : exitcode::kNoInput;
+  }
   // What the program printed, on the normal screen, as a headless run prints it.
-  const std::string& out = view.transcript();
+  const std::string& out = view->transcript();
   std::fwrite(out.data(), 1, out.size(), stdout);
   if (!out.empty() && out.back() != '\n') std::fputc('\n', stdout);
-  if (view.transcriptCut())
+  if (view->transcriptCut())
     std::fprintf(stderr, "%s: the program printed more than the view keeps; the rest is cut\n",
                  kCommand);
   std::fflush(stdout);
-  // Quitting ends the run on purpose: 0 for the quit keys, 130 for Ctrl-C.
-  return run.conclude(kCommand, opts, view.quitCode());
+  // Quitting ends the run on purpose: 0 for the quit keys, 130 for Ctrl-C. The seed is named
+  // as the first run's (every restart used it).
+  return run->conclude(kCommand, opts, view->quitCode());
 }
 
 }  // namespace rb::cli

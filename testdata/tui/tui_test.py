@@ -437,6 +437,113 @@ def test_break_moved(rb):
             s.close()
 
 
+def test_restart(rb):
+    """F12 runs the program again from the start, keeping the breakpoints and the view (the
+    speed here); at the end it restarts too. After the view closes only the last run's output
+    is printed."""
+    s = Session(rb, "debug.bas", args="--break 7")
+    try:
+        t = s.wait_for("the breakpoint", lambda t: running_line(t) == 7 and variable(t, "total") == "1")
+        s.keys("F2")
+        s.wait_for("the second stop", lambda t: running_line(t) == 7 and variable(t, "total") == "3")
+        s.keys("F5")  # x2: kept by the restart
+        s.wait_for("speed x2", lambda t: status(t, "speed") == "x2")
+        s.keys("F12")
+        t = s.wait_for("the restarted run at its first stop",
+                       lambda t: running_line(t) == 7 and variable(t, "total") == "1"
+                       and status(t, "state") == "paused")
+        check(status(t, "speed") == "x2", "the speed was not kept:\n" + t)
+        check("restarted" in t.split("\n")[0], "the title does not say it restarted:\n" + t)
+        s.keys("F9")  # clear the breakpoint: the next run goes through
+        s.keys("F2")
+        t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        check(keys_line(t).startswith("F12 restart"), "keys line at the end: " + keys_line(t))
+        s.keys("F12")  # from the final screen
+        t = s.wait_for("the second end", lambda t: status(t, "state") == "finished"
+                       and "restarted" in t.split("\n")[0])
+        check(running_line(t) is None, "a breakpoint cleared before the restart stopped it:\n" + t)
+        s.keys("x")
+        check(s.exit_code() == 0, "exit status")
+        after = s.wait_text("total 6")
+        check(after.count("total 6") == 1, "more than the last run's output:\n" + after)
+    finally:
+        s.close()
+
+
+WATCHED = """// --watch: tui_test.py edits this copy while it runs.
+total = 0
+name = "rb"
+dim marks[4]
+for n = 1 to 3
+  gosub AddOne
+  marks[n] = total
+next
+print "total ", total
+end
+
+AddOne:
+  total = total + n
+  return
+"""
+
+
+def test_watch(rb):
+    """--watch runs the program again when it is saved: a breakpoint stays on its line, or moves
+    to the next statement when its line became a comment; a save with a syntax error shows the
+    error and waits; the fix saved runs again."""
+    folder = tempfile.mkdtemp(prefix="rbtui-watch-")
+    prog = os.path.join(folder, "watched.bas")
+
+    def save(text):
+        # As editors do: a new file renamed over the old one.
+        with open(prog + ".tmp", "w") as f:
+            f.write(text)
+        os.replace(prog + ".tmp", prog)
+
+    save(WATCHED)
+    s = Session(rb, prog, args="--watch --break 7")
+    try:
+        s.wait_for("the breakpoint", lambda t: running_line(t) == 7 and variable(t, "total") == "1")
+        save(WATCHED.replace('print "total ", total', 'print "sum ", total'))
+        t = s.wait_for("the run of the saved program",
+                       lambda t: "watched.bas was saved" in t.split("\n")[0] and running_line(t) == 7)
+        check(variable(t, "total") == "1", "not a new run:\n" + t)
+        # Line 7 becomes a comment: its breakpoint moves to the next statement (next, line 8).
+        save(WATCHED.replace("  marks[n] = total", "  // marks[n] = total"))
+        t = s.wait_for("the breakpoint on line 8", lambda t: running_line(t) == 8
+                       and status(t, "state") == "paused")
+        check("line 7 -> 8" in t.split("\n")[0], "the title does not say the breakpoint moved:\n" + t)
+        # A syntax error: the view shows it and waits.
+        save(WATCHED.replace("for n = 1 to 3", "for n = 1 to"))
+        t = s.wait_for("the load error", lambda t: "not loaded" in t.split("\n")[0])
+        check("watched.bas:5:" in output_pane(t), "the error is not shown:\n" + t)
+        check(keys_line(t).startswith("F12 load again"), "keys: " + keys_line(t))
+        # The breakpoint stays where it moved to.
+        save(WATCHED.replace('print "total ", total', 'print "fixed ", total'))
+        t = s.wait_for("the fixed program's stop", lambda t: running_line(t) == 8
+                       and status(t, "state") == "paused" and "fixed" in t)
+        s.keys("F9", "F2")
+        t = s.wait_for("the end", lambda t: status(t, "state") == "finished")
+        check("fixed 6" in output_pane(t), "output:\n" + t)
+        s.keys("Enter")
+        check(s.exit_code() == 0, "exit status " + s.stderr())
+    finally:
+        s.close()
+    # A program with errors from the start opens the view too; quitting prints the errors as
+    # rb run does (exit 65).
+    save(WATCHED.replace("for n = 1 to 3", "for n = 1 to"))
+    s = Session(rb, prog, args="--watch")
+    try:
+        s.wait_for("the load error", lambda t: "not loaded" in t.split("\n")[0])
+        s.keys("F10")
+        code = s.exit_code()
+        check(code == 65, f"exit status {code}")
+        check("watched.bas:5:" in s.stderr(), "stderr: " + s.stderr())
+    finally:
+        s.close()
+        shutil.rmtree(folder, ignore_errors=True)
+
+
 def keys_line(screen):
     lines = screen.rstrip("\n").split("\n")
     return lines[-1] if lines else ""
@@ -677,6 +784,8 @@ TESTS = {
     "output": test_output,
     "finished": test_finished,
     "break_moved": test_break_moved,
+    "restart": test_restart,
+    "watch": test_watch,
     "real": test_real,
     "pixels": test_pixels,
     "input_terminal": test_input_terminal,
