@@ -36,7 +36,7 @@ constexpr auto kWatchInterval = std::chrono::milliseconds(100);
 
 // Control characters of the keys rb keeps (raw mode delivers them as keys). None is a common
 // prefix of tmux (Ctrl-B) or screen (Ctrl-A).
-constexpr int64_t kCtrlC = 3, kCtrlF = 6, kCtrlG = 7, kCtrlL = 12, kCtrlN = 14, kCtrlP = 16, kCtrlQ = 17,
+constexpr int64_t kCtrlC = 3, kCtrlE = 5, kCtrlF = 6, kCtrlG = 7, kCtrlL = 12, kCtrlN = 14, kCtrlP = 16, kCtrlQ = 17,
                   kCtrlR = 18, kCtrlS = 19, kCtrlT = 20, kCtrlV = 22, kCtrlW = 23;
 
 int64_t fKey(int n) { return keys::kF1 + n - 1; }
@@ -107,6 +107,7 @@ TuiHost::TuiHost(render::CursesScreen& screen, TuiSettings settings)
   // --paused: a step armed from the start ends before the first statement.
   if (settings_.paused) debugger_.step(Debugger::Step::Into, 0);
   varScroll_ = settings_.varScroll;
+  for (const std::string& w : settings_.watches) watches_.emplace_back(w);
   if (!settings_.notice.empty()) startNotice(settings_.notice);
 }
 
@@ -332,6 +333,8 @@ TuiSettings TuiHost::nextSettings() const {
   next.speed = clock_.factor();
   next.varScroll = varScroll_;
   next.notice = restartWhy_;
+  next.watches.clear();
+  for (const Watch& w : watches_) next.watches.push_back(w.text());
   if (!loadFailed_ && sources_) {
     next.breakpoints.clear();
     for (auto [file, line] : debugger_.breakpoints())
@@ -342,8 +345,30 @@ TuiSettings TuiHost::nextSettings() const {
 
 void TuiHost::refreshVariables() {
   lastVariables_ = Clock::now();
-  if (!interp_ || layout_.vars.width <= 0) return;
-  varLines_ = variableLines(interp_->variables(), interp_->runningSub(), layout_.vars.width);
+  int width = layout_.vars.width;
+  if (width <= 0) return;
+  std::vector<VariableView> vars;
+  if (interp_) vars = interp_->variables();
+  std::vector<WatchLine> shown;
+  for (const Watch& w : watches_) {
+    WatchLine line;
+    line.expr = w.text();
+    if (!interp_ || !machine_) {
+      line.value = "no program runs";
+      line.error = true;
+    } else if (WatchResult r = w.evaluate(vars, *machine_); r.value) {
+      line.value = valueText(*r.value, static_cast<size_t>(width));
+    } else {
+      line.value = r.error;
+      line.error = true;
+    }
+    shown.push_back(std::move(line));
+  }
+  varLines_ = watchLines(shown, width);
+  if (interp_) {
+    std::vector<std::string> lines = variableLines(vars, interp_->runningSub(), width);
+    varLines_.insert(varLines_.end(), lines.begin(), lines.end());
+  }
 }
 
 // ---- keys and the mouse
@@ -375,6 +400,7 @@ bool TuiHost::viewKey(int64_t key) {
   else if (key == fKey(6) || key == kCtrlV) cycleMode();
   else if (key == kCtrlL) redraw_ = true;
   else if (key == fKey(12) || key == kCtrlG) restart("restarted");
+  else if (key == fKey(11) || key == kCtrlE) openWatchPrompt();
   else if (key == fKey(10) || key == kCtrlQ) quit(0);
   else if (key == kCtrlC) quit(kInterruptedExit);
   else return false;
@@ -395,6 +421,10 @@ bool TuiHost::scrollKey(int64_t key) {
 
 void TuiHost::handleKey(int64_t key) {
   if (viewKey(key)) return;
+  if (prompting_) {
+    watchPromptKey(key);
+    return;
+  }
   if (loadFailed_) return;  // nothing to exit to but quitting
   if (ended_) {
     if (!scrollKey(key)) endKey_ = true;
@@ -433,6 +463,7 @@ void TuiHost::handleKey(int64_t key) {
       case '=': changeSpeed(2); return;
       case 'v': cycleMode(); return;
       case 'g': restart("restarted"); return;
+      case 'w': openWatchPrompt(); return;
       case 'q': quit(0); return;
       default: break;
     }
@@ -514,6 +545,35 @@ void TuiHost::startNotice(std::string text) {
   notice_ = std::move(text);
   noticeLoc_ = {};
   noticeUntil_ = Clock::now() + kStartNotice;
+}
+
+void TuiHost::openWatchPrompt() {
+  prompting_ = true;
+  promptText_.clear();
+}
+
+void TuiHost::watchPromptKey(int64_t key) {
+  lastFrame_ = {};
+  if (key == keys::kEsc) {
+    prompting_ = false;
+    return;
+  }
+  if (InputRules::editLine(promptText_, key) != InputRules::LineKey::Done) return;
+  prompting_ = false;
+  std::string text = promptText_;
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  text.erase(0, text.find_first_not_of(' '));
+  if (text.empty()) return;
+  // The same expression again takes it away: one key adds and removes, as F9 does breakpoints.
+  auto same = std::find_if(watches_.begin(), watches_.end(),
+                           [&](const Watch& w) { return w.text() == text; });
+  if (same != watches_.end()) {
+    watches_.erase(same);
+    startNotice("watch removed: " + text);
+  } else {
+    watches_.emplace_back(text);
+  }
+  refreshVariables();
 }
 
 void TuiHost::changeSpeed(double by) {
@@ -624,9 +684,19 @@ void TuiHost::draw() {
   drawOutput();
   TermStyle dim;
   dim.dim = true;
-  screen_.drawText(layout_.keys.col, layout_.keys.row,
-                   keysLine(layout_.keys.width, viewState(), programKeys_, settings_.watching),
-                   dim);
+  if (prompting_) {
+    // The line a watch is typed at takes the keys line's place.
+    std::string line = "watch: " + promptText_ + "_";
+    std::string help = "   Enter adds it (one watched already: removes it), Esc cancels";
+    if (line.size() + help.size() <= static_cast<size_t>(layout_.keys.width)) line += help;
+    if (line.size() > static_cast<size_t>(layout_.keys.width))
+      line = line.substr(line.size() - static_cast<size_t>(layout_.keys.width));
+    screen_.drawText(layout_.keys.col, layout_.keys.row, line);
+  } else {
+    screen_.drawText(layout_.keys.col, layout_.keys.row,
+                     keysLine(layout_.keys.width, viewState(), programKeys_, settings_.watching),
+                     dim);
+  }
   screen_.present();
 }
 

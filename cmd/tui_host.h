@@ -22,6 +22,7 @@
 #include "machine/host.h"
 #include "machine/interpreter.h"
 #include "machine/machine.h"
+#include "machine/watch.h"
 #include "tui_debugger.h"
 #include "tui_keyboard.h"
 #include "tui_layout.h"
@@ -45,6 +46,7 @@ struct TuiSettings {
   bool paused = false;   ///< --paused: stop before the first statement
   bool watching = false;  ///< --watch: a save of the program restarts it
   std::vector<NamedBreakpoint> breakpoints;
+  std::vector<std::string> watches;  ///< the watch expressions, in the order they were added
   int varScroll = 0;     ///< how far the variables pane is scrolled
   std::string notice;    ///< for the title at the start (why the run restarted, moved breakpoints)
 };
@@ -167,6 +169,11 @@ class TuiHost : public Host, public RobotObserver {
   void toggleBreakpoint();
   void changeSpeed(double by);
   void cycleMode();
+  /// F11: opens the line where a watch expression is typed.
+  void openWatchPrompt();
+  /// A key typed at that line: Enter adds the expression (or removes it when it is watched
+  /// already), Esc closes the line.
+  void watchPromptKey(int64_t key);
   void quit(int code);
   /// Ends the run (or the final screen) for a restart; `why` goes into the next run's title.
   void restart(std::string why);
@@ -258,6 +265,11 @@ class TuiHost : public Host, public RobotObserver {
   std::string partial_;
   std::string transcript_;
   bool transcriptCut_ = false;
+
+  // Watch expressions (machine/watch.h), and the line one is typed at.
+  std::vector<Watch> watches_;
+  bool prompting_ = false;
+  std::string promptText_;
 
   // The variables pane: its lines at the last look, and how far it is scrolled.
   std::vector<std::string> varLines_;

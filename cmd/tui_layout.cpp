@@ -224,32 +224,46 @@ std::vector<std::string> compactStatusLines(const TuiStatus& s, int width) {
 }
 
 std::string keysLine(int width, ViewState state, bool programKeys, bool watching) {
-  // The most useful first; as many as fit.
-  std::vector<std::string> keys;
+  struct Key {
+    std::string text;
+    bool always = false;  ///< shown whatever else is left out: how to quit
+  };
+  std::vector<Key> keys;
   switch (state) {
     case ViewState::Running:
     case ViewState::Paused:
-      keys = {state == ViewState::Paused ? "F2 run" : "F2 pause", "F3 step", "F7 over",
-              "F8 pixel", "F9 break", "F4/F5 speed", "F6 view", "F10 quit", "F12 restart"};
-      if (state == ViewState::Paused) keys.push_back("PgUp/PgDn variables");
-      if (!programKeys) keys.push_back("(or p s n r b - + v g q)");
+      keys = {{state == ViewState::Paused ? "F2 run" : "F2 pause"}, {"F3 step"}, {"F7 over"},
+              {"F8 pixel"}, {"F9 break"}, {"F11 watch"}, {"F12 restart"}, {"F4/F5 speed"},
+              {"F6 view"}, {"F10 quit", true}};
+      if (state == ViewState::Paused) keys.push_back({"PgUp/PgDn variables"});
+      if (!programKeys) keys.push_back({"(or p s n r b w g - + v q)"});
       break;
     case ViewState::Ended:
       // Nothing runs any more: pausing, stepping, breakpoints and the speed are gone.
-      keys = {"F12 restart", "F6 view", "F10 quit", "PgUp/PgDn variables", "any other key exits"};
+      keys = {{"F12 restart"}, {"F11 watch"}, {"F6 view"}, {"F10 quit", true},
+              {"PgUp/PgDn variables"}, {"any other key exits"}};
       break;
     case ViewState::NotLoaded:
-      keys = {"F12 load again", "F10 quit"};
+      keys = {{"F12 load again"}, {"F10 quit", true}};
       break;
   }
   if (watching && state != ViewState::Running && state != ViewState::Paused)
-    keys.insert(keys.begin() + 1, "(or save the file)");
+    keys.insert(keys.begin() + 1, {"(or save the file)"});
+  // The most useful first, as many as fit; the keys that must show have their room kept.
+  int room = width;
+  for (const Key& k : keys)
+    if (k.always) room -= static_cast<int>(k.text.size()) + 2;
   std::string line;
-  for (const std::string& k : keys) {
-    size_t need = line.empty() ? k.size() : k.size() + 2;
-    if (static_cast<int>(line.size() + need) > width) break;
+  for (const Key& k : keys) {
+    int need = static_cast<int>(k.text.size()) + (line.empty() ? 0 : 2);
+    if (!k.always) {
+      if (need > room) continue;
+      room -= need;
+    } else if (static_cast<int>(line.size()) + need > width) {
+      break;
+    }
     if (!line.empty()) line += "  ";
-    line += k;
+    line += k.text;
   }
   return line;
 }

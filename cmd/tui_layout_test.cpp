@@ -109,11 +109,16 @@ TEST_CASE("tui status panel", "[tui]") {
 TEST_CASE("tui keys line: the most useful keys that fit", "[tui]") {
   using V = ViewState;
   CHECK(keysLine(200, V::Running, false).starts_with("F2 pause  F3 step  F7 over"));
-  CHECK(keysLine(200, V::Running, false).ends_with("F10 quit  F12 restart  (or p s n r b - + v g q)"));
+  CHECK(keysLine(200, V::Running, false).ends_with("F6 view  F10 quit  (or p s n r b w g - + v q)"));
+  CHECK(keysLine(200, V::Running, false).find("F11 watch  F12 restart") != std::string::npos);
   CHECK(keysLine(200, V::Paused, true).find("F2 run") == 0);
   CHECK(keysLine(200, V::Paused, true).find("(or") == std::string::npos);
   CHECK(keysLine(200, V::Paused, true).find("PgUp/PgDn") != std::string::npos);
-  CHECK(keysLine(17, V::Running, false) == "F2 pause  F3 step");
+  // How to quit always shows; the rest as room allows, in order.
+  CHECK(keysLine(27, V::Running, false) == "F2 pause  F3 step  F10 quit");
+  CHECK(keysLine(100, V::Running, true).ends_with("F10 quit"));
+  CHECK(keysLine(100, V::Running, true).size() <= 100);
+  CHECK(keysLine(8, V::Running, false) == "F10 quit");
   CHECK(keysLine(3, V::Running, false).empty());
   // After the end only what can still be done: no pause, step, breakpoint or speed.
   std::string ended = keysLine(200, V::Ended, false);

@@ -118,6 +118,27 @@ std::vector<std::string> lastRows(const std::vector<std::string_view>& lines, in
   return out;
 }
 
+std::vector<std::string> watchLines(const std::vector<WatchLine>& watches, int width) {
+  std::vector<std::string> out;
+  if (watches.empty() || width <= 0) return out;
+  std::string header = "-- watch ";
+  header.resize(static_cast<size_t>(width), '-');
+  out.push_back(header);
+  size_t w = static_cast<size_t>(width);
+  for (const WatchLine& watch : watches) {
+    std::string line = oneLine(watch.expr) + (watch.error ? ": " : " = ") + oneLine(watch.value);
+    if (!watch.error) {
+      cut(line, w);
+      out.push_back(line);
+      continue;
+    }
+    // An error is read whole: its rows after the first are indented under the expression.
+    out.push_back(line.substr(0, w));
+    for (size_t at = w; at < line.size() && w > 2; at += w - 2) out.push_back("  " + line.substr(at, w - 2));
+  }
+  return out;
+}
+
 std::vector<std::string> variableLines(const std::vector<VariableView>& vars, std::string_view sub,
                                        int width) {
   std::vector<std::string> out;

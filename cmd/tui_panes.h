@@ -35,6 +35,18 @@ std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int hei
 std::vector<std::string> variableLines(const std::vector<VariableView>& vars, std::string_view sub,
                                        int width);
 
+/// A watch as the variables pane shows it: its expression and its value (as valueText shows
+/// it) or why it has none.
+struct WatchLine {
+  std::string expr;
+  std::string value;  ///< valueText of the value, or the error
+  bool error = false;
+};
+/// The watches' lines at the top of the variables pane, `width` columns each: a header, then
+/// "x * 2 = 14" for each, or "a[9] + 1: index 9 is out of range ..." with an error wrapped
+/// onto indented lines so that it is read whole. Nothing when there are no watches.
+std::vector<std::string> watchLines(const std::vector<WatchLine>& watches, int width);
+
 /// A value as the variables pane shows it, at most `width` characters (0: no limit).
 std::string valueText(const Value& v, size_t width);
 

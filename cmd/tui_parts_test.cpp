@@ -222,3 +222,18 @@ TEST_CASE("statement lines: where a run can stop", "[tui]") {
   CHECK(refused.line == 0);
   CHECK(refused.note == "no statement on or after line 16: nothing there can stop the run");
 }
+
+TEST_CASE("variables pane: watches with their values or errors", "[tui]") {
+  CHECK(watchLines({}, 30).empty());
+  auto lines = watchLines({{"x * 2", "14", false},
+                           {"a[9] + 1", "index 9 is out of range for 'a' (valid: 0 to 3)", true},
+                           {"s", "\"" + std::string(40, 'y') + "\"", false}},
+                          24);
+  REQUIRE(lines.size() == 6);
+  CHECK(lines[0] == "-- watch ---------------");
+  CHECK(lines[1] == "x * 2 = 14");
+  CHECK(lines[2] == "a[9] + 1: index 9 is out");
+  CHECK(lines[3] == "   of range for 'a' (val");
+  CHECK(lines[4] == "  id: 0 to 3)");
+  CHECK(lines[5] == "s = \"yyyyyyyyyyyyyyyy...");
+}

@@ -102,6 +102,24 @@ class Parser {
     return out;
   }
 
+  /// The first line as one expression (parseExpression): the expression, or nullptr after
+  /// reporting why it is none.
+  Expr* expressionLine() {
+    lines_.next(toks_);
+    pos_ = 0;
+    try {
+      if (atLineEnd()) failHere("an expression");
+      Expr* e = expression();
+      if (!atLineEnd()) {
+        std::string shown = cur().kind == Tok::String ? quoted(cur().text, '"') : quoted(cur().text);
+        fail(cur().loc, "unexpected " + shown + " after the end of the expression");
+      }
+      return e;
+    } catch (const StatementAbandoned&) {
+      return nullptr;
+    }
+  }
+
   /// Hands each line's statements to `onLine`, then forgets them.
   void run(const std::function<void(const std::vector<Stmt*>&)>& onLine) {
     std::vector<Stmt*> out;  // the statements of one line
@@ -803,6 +821,12 @@ std::vector<ast::Stmt*> parseFile(const SourceSet& sources, uint32_t fileIndex, 
                                   const BuiltinTable& builtins, DiagnosticList& diags) {
   LexedLines lines(sources, fileIndex, diags);
   return Parser(lines, arena, builtins, diags).run();
+}
+
+ast::Expr* parseExpression(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,
+                           const BuiltinTable& builtins, DiagnosticList& diags) {
+  LexedLines lines(sources, fileIndex, diags);
+  return Parser(lines, arena, builtins, diags).expressionLine();
 }
 
 void parseFileLines(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,

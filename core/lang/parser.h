@@ -29,6 +29,12 @@ void parseFileLines(const SourceSet& sources, uint32_t fileIndex, ast::Arena& ar
                     const BuiltinTable& builtins, DiagnosticList& diags,
                     const std::function<void(const std::vector<ast::Stmt*>&)>& onLine);
 
+/// Parses `sources.file(fileIndex)` as one expression on its first line, as a debugger's watch
+/// is written (`x * 2`, `a[3] + 1`, `left(s, 2)`): nullptr, with the syntax error in `diags`,
+/// when the line is empty, is no expression, or holds more than one.
+ast::Expr* parseExpression(const SourceSet& sources, uint32_t fileIndex, ast::Arena& arena,
+                           const BuiltinTable& builtins, DiagnosticList& diags);
+
 /// The binary operator table: precedence (higher binds tighter, 0 = not a binary operator) and
 /// associativity. Unary operators bind tighter than every binary one.
 struct BinaryOpInfo {

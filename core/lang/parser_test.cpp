@@ -126,3 +126,26 @@ TEST_CASE("deep nesting is an error, not a crash", "[parser]") {
   auto q = parse("x = " + std::string(5000, '-') + "1");
   CHECK(q->diags.errorCount() == 1);
 }
+
+TEST_CASE("one expression alone, as a watch is written", "[parser]") {
+  auto expr = [](const std::string& text, std::string* error = nullptr) -> std::string {
+    SourceSet sources;
+    ast::Arena arena;
+    DiagnosticList diags;
+    uint32_t f = sources.add("watch", text);
+    ast::Expr* e = parseExpression(sources, f, arena, testBuiltins(), diags);
+    if (error && !diags.all().empty()) *error = diags.all()[0].message;
+    return e ? show(e) : "";
+  };
+  CHECK(expr("x * 2 + 1") == "('+' ('*' x 2) 1)");
+  CHECK(expr("a[3] + 1") != "");
+  CHECK(expr("mid(s, 2)") != "");
+  CHECK(expr("n = 3") != "");  // '=' in an expression compares
+  std::string error;
+  CHECK(expr("", &error).empty());
+  CHECK(error == "expected an expression, found end of line");
+  CHECK(expr("x 2", &error).empty());
+  CHECK(error == "unexpected '2' after the end of the expression");
+  CHECK(expr("(x + ", &error).empty());
+  CHECK_FALSE(error.empty());
+}

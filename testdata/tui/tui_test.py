@@ -544,6 +544,59 @@ def test_watch(rb):
         shutil.rmtree(folder, ignore_errors=True)
 
 
+def watch_line(screen, expr):
+    """A watch's value (or error) in the variables pane."""
+    m = re.search(r"\|" + re.escape(expr) + r"(?: = |: )(.*?)\s*\|", screen)
+    return m.group(1) if m else None
+
+
+def test_watch_expr(rb):
+    """F11 adds a watch expression: its value at every stop, errors in place; the same
+    expression again removes it; a restart keeps them."""
+    s = Session(rb, "debug.bas", args="--break 7", rows=40)  # room for watches and variables
+    try:
+        s.wait_for("the breakpoint", lambda t: running_line(t) == 7 and variable(t, "total") == "1")
+        for expr in ("2 * total", "marks[n] + 1", "left(name, 1)", "nope + 1", "marks[9]"):
+            s.keys("F11")
+            s.wait_for("the watch line", lambda t: keys_line(t).startswith("watch: _"))
+            s.raw(expr)
+            s.keys("Enter")
+            s.wait_for(f"the watch {expr}", lambda t, e=expr: watch_line(t, e) is not None)
+        t = s.settled()
+        check(watch_line(t, "2 * total") == "2", "total * 2:\n" + t)
+        check(watch_line(t, "marks[n] + 1") == "1", "marks[n] + 1:\n" + t)
+        check(watch_line(t, "left(name, 1)") == '"r"', "left(name, 1):\n" + t)
+        # (An error wraps onto the lines under it in the narrow pane.)
+        check((watch_line(t, "nope + 1") or "").startswith("the program has no variable"), "nope:\n" + t)
+        check((watch_line(t, "marks[9]") or "").startswith("index 9 is out of range"), "marks[9]:\n" + t)
+        s.keys("F2")
+        t = s.wait_for("the second stop", lambda t: running_line(t) == 7 and variable(t, "total") == "3")
+        t = s.wait_for("the watch's new value", lambda t: watch_line(t, "2 * total") == "6")
+        check(watch_line(t, "marks[n] + 1") == "1", "marks[2] + 1 before line 7 runs:\n" + t)
+        # Esc closes the line without adding anything.
+        s.keys("F11")
+        s.wait_for("the watch line", lambda t: keys_line(t).startswith("watch: _"))
+        s.raw("n")
+        s.keys("Escape")
+        t = s.wait_for("the keys line back", lambda t: keys_line(t).startswith("F2 run"))
+        check(watch_line(t, "n") is None, "Esc added a watch:\n" + t)
+        # A restart keeps the watches.
+        s.keys("F12")
+        t = s.wait_for("the restarted run's stop", lambda t: running_line(t) == 7
+                       and variable(t, "total") == "1" and watch_line(t, "2 * total") == "2")
+        # The same expression again removes it.
+        s.keys("F11")
+        s.wait_for("the watch line", lambda t: keys_line(t).startswith("watch: _"))
+        s.raw("2 * total")
+        s.keys("Enter")
+        t = s.wait_for("the watch removed", lambda t: watch_line(t, "2 * total") is None)
+        check("watch removed: 2 * total" in t.split("\n")[0], "title:\n" + t)
+        s.keys("F10")
+        check(s.exit_code() == 0, "exit status")
+    finally:
+        s.close()
+
+
 def keys_line(screen):
     lines = screen.rstrip("\n").split("\n")
     return lines[-1] if lines else ""
@@ -786,6 +839,7 @@ TESTS = {
     "break_moved": test_break_moved,
     "restart": test_restart,
     "watch": test_watch,
+    "watch_expr": test_watch_expr,
     "real": test_real,
     "pixels": test_pixels,
     "input_terminal": test_input_terminal,
