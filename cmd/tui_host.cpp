@@ -114,6 +114,7 @@ TuiHost::TuiHost(render::CursesScreen& screen, TuiSettings settings)
 void TuiHost::output(std::string_view text) { appendOutput(text); }
 
 void TuiHost::appendOutput(std::string_view text) {
+  recording_.output(text);
   if (transcript_.size() + text.size() <= kMaxTranscript) transcript_ += text;
   else transcriptCut_ = true;
   for (char c : text) {
@@ -157,13 +158,18 @@ bool TuiHost::poll() {
 void TuiHost::onLine(SourceLoc loc) {
   loc_ = loc;
   depth_ = interp_ ? interp_->callDepth() : 0;
+  if (machine_) recording_.statement(loc, *machine_);
   if (debugger_.pauseAtStatement(loc, depth_)) {
     breakAt_ = debugger_.stoppedAtBreakpoint() ? loc : SourceLoc{};
+    atStatement_ = true;
     pauseHere();
+    atStatement_ = false;
     return;
   }
   if (paused_) {
+    atStatement_ = true;
     holdWhilePaused();
+    atStatement_ = false;
     return;
   }
   if ((++lineCount_ & 255) == 0) tick();
@@ -288,10 +294,12 @@ std::optional<std::string> TuiHost::inputLine(std::string_view prompt) {
   if (stopRequested()) return std::nullopt;  // the user quit
   appendOutput(inputPrompt_ + inputText_ + "\n");
   if (inputEof_) return std::nullopt;
+  recording_.input(inputText_);
   return inputText_;
 }
 
 void TuiHost::robotEvent(const RobotEvent& e) {
+  recording_.robotEvent(e);
   if (e.kind == RobotEvent::Sensor && e.command == "rRange" && e.value) lastRange_ = *e.value;
 }
 
@@ -304,6 +312,7 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
   box_.reset();
   inputActive_ = false;
   error_ = error;
+  if (machine_) recording_.finish(*machine_, result);
   switch (result.status) {
     case RunStatus::Finished: endState_ = "finished"; break;
     case RunStatus::RuntimeError: endState_ = "error"; break;
@@ -408,6 +417,60 @@ bool TuiHost::viewKey(int64_t key) {
   return true;
 }
 
+size_t TuiHost::stepsBeforePresent() const {
+  const std::vector<RecordedStep>& steps = recording_.steps();
+  if (steps.empty()) return 0;
+  // The present is the last kept step when the run stands exactly there: at the end (the
+  // recording's last step), or paused before a statement that was kept. Paused inside a
+  // statement (a pixel step, a delay, a wait for a key) the present is past its start.
+  bool there = ended_ ? recording_.finished()
+                      : atStatement_ && steps.back().step + 1 == recording_.totalSteps();
+  return there ? steps.size() - 1 : steps.size();
+}
+
+void TuiHost::showStep(std::optional<size_t> index) {
+  past_ = index;
+  if (past_ && (!pastShown_ || pastShownIndex_ != *past_)) {
+    pastShown_ = pastStep(recording_, *past_);
+    pastShownIndex_ = *past_;
+  }
+  if (!past_) pastShown_.reset();
+  lastFrame_ = {};
+}
+
+SourceLoc TuiHost::shownLoc() const {
+  if (past_ && pastShown_ && pastShown_->step->loc.valid()) return pastShown_->step->loc;
+  return loc_;
+}
+
+bool TuiHost::timelineKey(int64_t key) {
+  if (!timelineShown()) return false;
+  size_t present = stepsBeforePresent();
+  const std::vector<RecordedStep>& steps = recording_.steps();
+  if (key == keys::kLeft) {
+    if (past_) showStep(*past_ > 0 ? *past_ - 1 : 0);
+    else if (present > 0) showStep(present - 1);
+  } else if (key == keys::kRight) {
+    // Forward past the last kept step is the present again; the run goes on only by F2 or a
+    // step (looking back is looking).
+    if (past_) showStep(*past_ + 1 < present ? std::optional<size_t>(*past_ + 1) : std::nullopt);
+  } else if (key == keys::kHome) {
+    if (present == 0) return true;
+    size_t from = past_ ? *past_ : std::min(present, steps.size() - 1);
+    size_t to = jumpFrom(recording_, from, -0.1);
+    showStep(std::min(to, present - 1));
+  } else if (key == keys::kEnd) {
+    if (!past_) return true;
+    size_t to = jumpFrom(recording_, *past_, 0.1);
+    showStep(to < present && to > *past_ ? std::optional<size_t>(to) : std::nullopt);
+  } else if (key == keys::kEsc && past_) {
+    showStep(std::nullopt);
+  } else {
+    return false;
+  }
+  return true;
+}
+
 bool TuiHost::scrollKey(int64_t key) {
   int page = std::max(layout_.vars.height - 1, 1);
   int by = key == keys::kUp ? -1 : key == keys::kDown ? 1 : key == keys::kPageUp ? -page
@@ -426,6 +489,7 @@ void TuiHost::handleKey(int64_t key) {
     return;
   }
   if (loadFailed_) return;  // nothing to exit to but quitting
+  if (timelineKey(key)) return;
   if (ended_) {
     if (!scrollKey(key)) endKey_ = true;
     return;
@@ -477,6 +541,14 @@ void TuiHost::handleKey(int64_t key) {
 
 void TuiHost::handleMouse(const TermEvent& e) {
   if (layout_.tooSmall || layout_.arena.width == 0) return;
+  if (e.pressed && timelineShown() && barWidth_ > 0 && e.row == layout_.output.row &&
+      e.col >= barCol_ && e.col < barCol_ + barWidth_) {
+    // A click on the position bar shows the step at that place (its end: the present).
+    size_t present = stepsBeforePresent();
+    size_t at = stepAtColumn(e.col, barCol_, barWidth_, present + 1);
+    showStep(at < present ? std::optional<size_t>(at) : std::nullopt);
+    return;
+  }
   bool inArena = layout_.arena.contains(e.col, e.row);
   auto [x, y] = cellToPixel(layout_.arena, e.col, e.row);
   if (box_) {
@@ -516,6 +588,7 @@ void TuiHost::setPaused(bool paused) {
   if (!paused) {
     debugger_.cancelStep();
     breakAt_ = {};
+    showStep(std::nullopt);  // the run goes on from the present
   } else {
     held_.clear();  // keys held when the view paused are let go
   }
@@ -528,16 +601,20 @@ void TuiHost::step(Debugger::Step kind) {
   debugger_.step(kind, depth_);
   paused_ = false;
   breakAt_ = {};
+  showStep(std::nullopt);
   clock_.setRunning(true);
 }
 
 void TuiHost::toggleBreakpoint() {
-  if (ended_ || !loc_.valid()) return;
-  bool set = debugger_.toggleBreakpoint(loc_.file, loc_.line);
-  // The running line's marker is '>' either way: the title says what happened.
+  // On the line shown: the running line, or an earlier step's (also after the end).
+  SourceLoc at = shownLoc();
+  if ((ended_ && !past_) || !at.valid()) return;
+  bool set = debugger_.toggleBreakpoint(at.file, at.line);
+  // The shown line's marker is '>' either way: the title says what happened.
   notice_ = (set ? "breakpoint set on line " : "breakpoint cleared on line ") +
-            std::to_string(loc_.line);
+            std::to_string(at.line);
   noticeLoc_ = loc_;
+  noticeUntil_ = Clock::now() + std::chrono::seconds(3);
 }
 
 void TuiHost::startNotice(std::string text) {
@@ -612,6 +689,7 @@ void TuiHost::cycleMode() {
 // ---- drawing
 
 std::string TuiHost::stateText() const {
+  if (past_ && pastShown_) return "back at " + stepName(*pastShown_->step);
   if (ended_) return endState_;
   if (waitingFor_ && *waitingFor_) return waitingFor_;
   if (paused_) return "paused";
@@ -619,6 +697,8 @@ std::string TuiHost::stateText() const {
 }
 
 std::string TuiHost::titleState() const {
+  if (past_ && pastShown_)
+    return "back in time: " + stepName(*pastShown_->step) + " of " + grouped(recording_.totalSteps());
   if (ended_ || !paused_ || !breakAt_.valid() || !(breakAt_ == loc_) || (waitingFor_ && *waitingFor_))
     return stateText();
   // The title says why the run stopped; the status panel keeps the short state.
@@ -632,6 +712,7 @@ std::string TuiHost::titleState() const {
 
 ViewState TuiHost::viewState() const {
   if (loadFailed_) return ViewState::NotLoaded;
+  if (past_) return ended_ ? ViewState::BackEnded : ViewState::BackPaused;
   if (ended_) return ViewState::Ended;
   return paused_ ? ViewState::Paused : ViewState::Running;
 }
@@ -702,16 +783,23 @@ void TuiHost::draw() {
 
 void TuiHost::drawArena() {
   Machine& m = *machine_;
-  render::RobotView robot = render::robotView(m);
+  // An earlier step: its screen and pose from the recording. The text the program drew shows
+  // as pixels there (the display list is the present's).
+  bool past = past_ && pastShown_;
+  render::RobotView robot = past ? pastShown_->robot : render::robotView(m);
+  const Pixels& pixels = past ? pastShown_->screen : m.shownScreen();
+  int64_t step = past ? static_cast<int64_t>(pastShownIndex_) : -1;
   const Rect& a = layout_.arena;
   const std::vector<DrawOp>& ops = m.canvas().displayList();
   bool stale = frame_.cols != a.width || frame_.rows != a.height || frameMode_ != mode_ ||
-               frameCanvasVersion_ != m.canvas().version() || m.showsFlip() ||
-               frameTextOps_ != ops.size() || !sameRobot(robot, frameRobot_);
+               frameStep_ != step || (!past && (frameCanvasVersion_ != m.canvas().version() ||
+                                                m.showsFlip() || frameTextOps_ != ops.size())) ||
+               !sameRobot(robot, frameRobot_);
   if (stale) {
     render::ArenaOptions options{a.width, a.height, mode_};
-    options.textOps = &ops;
-    frame_ = render::renderArena(m.shownScreen(), m.canvas().background(), robot, options);
+    if (!past) options.textOps = &ops;
+    frame_ = render::renderArena(pixels, m.canvas().background(), robot, options);
+    frameStep_ = step;
     frameCanvasVersion_ = m.canvas().version();
     frameRobot_ = robot;
     frameMode_ = mode_;
@@ -732,7 +820,7 @@ void TuiHost::drawArena() {
     cw = 10;  // a terminal that does not tell its cell size: a common one
     ch = 20;
   }
-  render::RgbImage image = render::composeImage(m.shownScreen(), robot, 1);
+  render::RgbImage image = render::composeImage(pixels, robot, 1);
   screen_.overlayAt(a.col, a.row, render::sixelImage(image, a.width * cw, a.height * ch));
   sixelSent_ = true;
 }
@@ -752,6 +840,14 @@ void TuiHost::drawOverlays() {
     if (static_cast<int>(s.size()) > room) s.resize(static_cast<size_t>(room));
     screen_.drawText(col, row, s, style);
   };
+  TermStyle banner;
+  banner.reverse = true;
+  banner.bold = true;
+  if (past_ && pastShown_) {
+    // The controls and dialogs are the present's: an earlier step shows the screen alone.
+    if (!pixels_) put(a.col + 1, a.row, " BACK IN TIME  Left/Right step  Esc now ", banner);
+    return;
+  }
   // The program's controls, on the cells that show them (a click there hits them).
   const Controls& controls = machine_->controls;
   for (const Button& b : controls.buttons) {
@@ -781,9 +877,6 @@ void TuiHost::drawOverlays() {
     s.underline = !s.reverse;
     put(cells.col, cells.row + cells.height / 2, field, s);
   }
-  TermStyle banner;
-  banner.reverse = true;
-  banner.bold = true;
   // (Over a sixel image the banner would be drawn over again: the title says paused.)
   if (paused_ && !ended_ && !pixels_)
     put(a.col + 1, a.row, " PAUSED  F2 run  F3 step  F7 over ", banner);
@@ -822,9 +915,19 @@ void TuiHost::drawStatus() {
   s.y = pose.pos.y();
   s.heading = pose.heading;
   s.pen = robot.penDown();
+  if (past_ && pastShown_) {
+    // An earlier step: its pose; what the sensors read then is not kept.
+    const RecordedStep& step = *pastShown_->step;
+    s.located = step.located;
+    s.x = step.x;
+    s.y = step.y;
+    s.heading = step.heading;
+    s.pen = step.pen;
+    s.sensors = false;
+  }
   // Read without a trace event, a random number or a robot command: the simulator's sensors
   // now, or what a real robot reported last.
-  if (std::optional<QuietReadings> r = robot.quietReadings()) {
+  if (std::optional<QuietReadings> r = robot.quietReadings(); r && s.sensors) {
     s.bumper = r->bumper;
     s.feel = r->feel;
   }
@@ -840,7 +943,7 @@ void TuiHost::drawStatus() {
     }
     if (!link.fault.empty()) s.lastReply = link.fault;
   }
-  s.range = lastRange_;
+  s.range = past_ && pastShown_ ? pastShown_->range : lastRange_;
   const Rect& r = layout_.status;
   std::vector<std::string> lines = r.height >= static_cast<int>(statusLines(s, r.width).size())
                                        ? statusLines(s, r.width - 1)
@@ -852,7 +955,8 @@ void TuiHost::drawStatus() {
 void TuiHost::drawSource() {
   const Rect& box = layout_.sourceBox;
   if (box.height <= 0 || !sources_ || sources_->size() == 0) return;
-  uint32_t fileIndex = loc_.valid() && loc_.file < sources_->size() ? loc_.file : 0;
+  SourceLoc loc = shownLoc();
+  uint32_t fileIndex = loc.valid() && loc.file < sources_->size() ? loc.file : 0;
   const SourceFile& file = sources_->file(fileIndex);
   std::string name = file.name();
   size_t slash = name.find_last_of('/');
@@ -870,9 +974,10 @@ void TuiHost::drawSource() {
     screen_.drawBox(box.col, box.row, box.width, box.height, name);
   }
   auto marked = [&](uint32_t line) { return debugger_.hasBreakpoint(fileIndex, line); };
-  // After the end nothing runs: no line is marked as the one about to.
+  // After the end nothing runs: no line is marked as the one about to (an earlier step's is).
+  bool running = !ended_ || (past_ && loc.valid());
   std::vector<PaneLine> lines =
-      sourceLines(file, loc_.line, inner.height, inner.width, marked, !ended_);
+      sourceLines(file, loc.line, inner.height, inner.width, marked, running);
   for (size_t i = 0; i < lines.size(); ++i) {
     TermStyle s;
     std::string text = lines[i].text;
@@ -893,7 +998,10 @@ void TuiHost::drawSource() {
 void TuiHost::drawVariables() {
   const Rect& box = layout_.varsBox;
   if (box.height <= 0 || layout_.vars.height <= 0) return;
-  std::string title = "variables";
+  // Variables are not kept for earlier steps: the title says whose they are.
+  std::string title = past_ && pastShown_
+                          ? "variables now, not at " + stepName(*pastShown_->step)
+                          : std::string("variables");
   int shown = layout_.vars.height;
   int total = static_cast<int>(varLines_.size());
   varScroll_ = std::clamp(varScroll_, 0, std::max(total - shown, 0));
@@ -909,39 +1017,70 @@ void TuiHost::drawVariables() {
 void TuiHost::drawOutput() {
   const Rect& r = layout_.output;
   if (r.height < 1) return;
-  std::string header = "-- output ";
-  header.resize(static_cast<size_t>(r.width), '-');
+  bool past = past_ && pastShown_;
   TermStyle dim;
   dim.dim = true;
-  screen_.drawText(r.col, r.row, header, dim);
+  barWidth_ = 0;
+  if (timelineShown() && recording_.totalSteps() > 0) {
+    // Paused or at the end, the header is the timeline: where the step shown is in the run.
+    size_t present = stepsBeforePresent();
+    std::string label =
+        past ? "output at " + stepName(*pastShown_->step) + " of " + grouped(recording_.totalSteps())
+        : ended_ ? "output at the end (" + grouped(recording_.totalSteps()) + " steps)"
+                 : "output at step " + grouped(recording_.totalSteps()) + " (now)";
+    int col = 0;
+    std::string rule = timelineRule(r.width, label, past ? *past_ : present, present + 1, col,
+                                    barWidth_);
+    barCol_ = r.col + col;
+    screen_.drawText(r.col, r.row, rule, dim);
+  } else {
+    std::string header = "-- output ";
+    header.resize(static_cast<size_t>(r.width), '-');
+    screen_.drawText(r.col, r.row, header, dim);
+  }
+  int room = r.height - 1;
+  std::vector<std::string> rows;
+  if (past) {
+    // What had been printed when that step began: the transcript up to its count of bytes.
+    uint64_t upTo = pastShown_->step->output;
+    std::string_view text(transcript_);
+    text = text.substr(0, std::min<uint64_t>(upTo, text.size()));
+    if (upTo > transcript_.size() && room > 0) {
+      screen_.drawText(r.col, r.row + r.height - 1, "(output past the view's 64 MiB is not kept)", dim);
+      --room;
+    }
+    rows = lastRows(lastLines(text, static_cast<size_t>(std::max(room, 0))), r.width, room);
+    for (size_t i = 0; i < rows.size(); ++i)
+      screen_.drawText(r.col, r.row + 1 + static_cast<int>(i), rows[i]);
+    return;
+  }
   std::vector<std::string_view> shown(lines_.begin(), lines_.end());
   std::string last;
   if (inputActive_) last = partial_ + inputPrompt_ + inputText_ + "_";
   else last = partial_;
   if (!last.empty()) shown.push_back(last);
-  int room = r.height - 1;
   if (!error_.empty()) {
     // The error wraps like output, so that its hint ("did you mean ...") is never cut off; it
     // keeps its rows at the bottom and the output above gets what is left.
-    std::vector<std::string> rows;
+    std::vector<std::string> errorRows;
     for (size_t at = 0; at <= error_.size();) {
       size_t end = std::min(error_.find('\n', at), error_.size());
       for (std::string& row : wrapRows(std::string_view(error_).substr(at, end - at), r.width))
-        rows.push_back(std::move(row));
+        errorRows.push_back(std::move(row));
       at = end + 1;
     }
-    if (static_cast<int>(rows.size()) > room) rows.resize(static_cast<size_t>(std::max(room, 0)));
-    room -= static_cast<int>(rows.size());
+    if (static_cast<int>(errorRows.size()) > room) errorRows.resize(static_cast<size_t>(std::max(room, 0)));
+    room -= static_cast<int>(errorRows.size());
     TermStyle errorStyle;
     errorStyle.bold = true;
     errorStyle.colour = screen_.colour();
     errorStyle.fg = 0xFF5555;
     errorStyle.bg = 0x000000;
     errorStyle.reverse = !screen_.colour();
-    for (size_t i = 0; i < rows.size(); ++i)
-      screen_.drawText(r.col, r.row + 1 + room + static_cast<int>(i), rows[i], errorStyle);
+    for (size_t i = 0; i < errorRows.size(); ++i)
+      screen_.drawText(r.col, r.row + 1 + room + static_cast<int>(i), errorRows[i], errorStyle);
   }
-  std::vector<std::string> rows = lastRows(shown, r.width, room);
+  rows = lastRows(shown, r.width, room);
   for (size_t i = 0; i < rows.size(); ++i)
     screen_.drawText(r.col, r.row + 1 + static_cast<int>(i), rows[i]);
 }

@@ -22,10 +22,12 @@
 #include "machine/host.h"
 #include "machine/interpreter.h"
 #include "machine/machine.h"
+#include "machine/recording.h"
 #include "machine/watch.h"
 #include "tui_debugger.h"
 #include "tui_keyboard.h"
 #include "tui_layout.h"
+#include "tui_timeline.h"
 
 namespace rb::cli {
 
@@ -164,6 +166,18 @@ class TuiHost : public Host, public RobotObserver {
   bool viewKey(int64_t key);
   /// Keys that scroll the variables pane while paused or at the end; true when the key was one.
   bool scrollKey(int64_t key);
+  /// Keys that move along the timeline while paused or at the end (Left, Right, Home, End; Esc
+  /// back to the present); true when the key was one.
+  bool timelineKey(int64_t key);
+  /// Shows kept step `index` instead of the present (nullopt: the present again).
+  void showStep(std::optional<size_t> index);
+  /// How many kept steps lie before the present: the present is step number this (0-based)
+  /// on the timeline.
+  size_t stepsBeforePresent() const;
+  /// The timeline is shown (paused, or at the end).
+  bool timelineShown() const { return (paused_ || ended_) && !loadFailed_; }
+  /// The statement shown: the one about to run, or the earlier step's.
+  SourceLoc shownLoc() const;
   void setPaused(bool paused);
   void step(Debugger::Step kind);
   void toggleBreakpoint();
@@ -266,6 +280,15 @@ class TuiHost : public Host, public RobotObserver {
   std::string transcript_;
   bool transcriptCut_ = false;
 
+  // The timeline: the run's recording, fed from the hooks; the earlier step shown instead of
+  // the present, if any, with its screen decoded once.
+  Recording recording_{kTimelineBudget};
+  std::optional<size_t> past_;
+  std::optional<PastStep> pastShown_;
+  size_t pastShownIndex_ = 0;
+  bool atStatement_ = false;  ///< paused in onLine: the present is that statement's kept step
+  int barCol_ = 0, barWidth_ = 0;  ///< where the position bar is on the screen (output header)
+
   // Watch expressions (machine/watch.h), and the line one is typed at.
   std::vector<Watch> watches_;
   bool prompting_ = false;
@@ -284,6 +307,7 @@ class TuiHost : public Host, public RobotObserver {
   render::RobotView frameRobot_;
   render::CellMode frameMode_ = render::CellMode::Ascii;
   size_t frameTextOps_ = 0;
+  int64_t frameStep_ = -1;  ///< the kept step frame_ shows (-1: the present)
   // --cells pixels: the arena as a sixel image.
   bool pixels_ = false;
   bool sixelSent_ = false;  ///< the image of frame_ is on the terminal

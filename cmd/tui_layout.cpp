@@ -192,8 +192,8 @@ std::vector<std::string> statusLines(const TuiStatus& s, int width) {
     row("y", fixed1(s.y));
     row("heading", fixed1(s.heading));
     row("pen", s.pen ? "down" : "up");
-    row("bumper", bumperText(s.bumper));
-    row("feel", feelText(s.feel));
+    row("bumper", s.sensors ? bumperText(s.bumper) : "-");
+    row("feel", s.sensors ? feelText(s.feel) : "-");
     row("range", s.range ? number(*s.range) : "-");
   } else {
     row("robot", "not placed");
@@ -213,7 +213,8 @@ std::vector<std::string> compactStatusLines(const TuiStatus& s, int width) {
   if (s.located) {
     out.push_back(join({"x ", fixed1(s.x), "  y ", fixed1(s.y), "  heading ", fixed1(s.heading),
                         "  pen ", s.pen ? "down" : "up"}));
-    out.push_back(join({"bumper ", bumperText(s.bumper), "  feel ", feelText(s.feel), "  range ",
+    out.push_back(join({"bumper ", s.sensors ? bumperText(s.bumper) : "-", "  feel ",
+                        s.sensors ? feelText(s.feel) : "-", "  range ",
                         s.range ? number(*s.range) : "-"}));
   } else {
     out.push_back("robot not placed");
@@ -232,22 +233,31 @@ std::string keysLine(int width, ViewState state, bool programKeys, bool watching
   switch (state) {
     case ViewState::Running:
     case ViewState::Paused:
-      keys = {{state == ViewState::Paused ? "F2 run" : "F2 pause"}, {"F3 step"}, {"F7 over"},
-              {"F8 pixel"}, {"F9 break"}, {"F11 watch"}, {"F12 restart"}, {"F4/F5 speed"},
-              {"F6 view"}, {"F10 quit", true}};
+      keys = {{state == ViewState::Paused ? "F2 run" : "F2 pause"}, {"F3 step"}};
+      if (state == ViewState::Paused) keys.push_back({"Left back"});
+      keys.insert(keys.end(), {{"F7 over"}, {"F8 pixel"}, {"F9 break"}, {"F11 watch"},
+                               {"F12 restart"}, {"F4/F5 speed"}, {"F6 view"}, {"F10 quit", true}});
       if (state == ViewState::Paused) keys.push_back({"PgUp/PgDn variables"});
       if (!programKeys) keys.push_back({"(or p s n r b w g - + v q)"});
       break;
     case ViewState::Ended:
       // Nothing runs any more: pausing, stepping, breakpoints and the speed are gone.
-      keys = {{"F12 restart"}, {"F11 watch"}, {"F6 view"}, {"F10 quit", true},
+      keys = {{"F12 restart"}, {"Left back"}, {"F11 watch"}, {"F6 view"}, {"F10 quit", true},
               {"PgUp/PgDn variables"}, {"any other key exits"}};
+      break;
+    case ViewState::BackPaused:
+    case ViewState::BackEnded:
+      // Looking back: the steps, and the way back to the present.
+      keys = {{"Left/Right step"}, {"Home/End tenth"}, {"Esc now"}};
+      if (state == ViewState::BackPaused) keys.insert(keys.end(), {{"F2 run"}, {"F3 step"}});
+      keys.insert(keys.end(), {{"F9 break"}, {"F11 watch"}, {"F12 restart"}, {"F6 view"},
+                               {"F10 quit", true}});
       break;
     case ViewState::NotLoaded:
       keys = {{"F12 load again"}, {"F10 quit", true}};
       break;
   }
-  if (watching && state != ViewState::Running && state != ViewState::Paused)
+  if (watching && (state == ViewState::Ended || state == ViewState::NotLoaded))
     keys.insert(keys.begin() + 1, {"(or save the file)"});
   // The most useful first, as many as fit; the keys that must show have their room kept.
   int room = width;

@@ -65,6 +65,7 @@ struct TuiStatus {
   double x = 0, y = 0, heading = 0;
   bool pen = false;
   int bumper = 0, feel = 0;
+  bool sensors = true;     ///< false: the bumper and feel bits are not known (an earlier step)
   std::optional<double> range;  ///< the last rRange reading
   // A real robot (--real, rCommPort): what its link did.
   bool real = false;
@@ -84,6 +85,8 @@ enum class ViewState {
   Paused,
   Ended,  ///< the run is over: only what can still be done (restart, the view, quitting)
   NotLoaded,  ///< the program has errors: restart (load it again) or quit
+  BackPaused,  ///< paused, showing an earlier step
+  BackEnded,   ///< after the end, showing an earlier step
 };
 /// The bottom line: rb's keys for `state`, as many as fit in `width`; `watching` (--watch)
 /// adds that a save restarts.

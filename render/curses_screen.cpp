@@ -33,6 +33,10 @@ int64_t translateKey(int ch) {
     case KEY_RIGHT: return keys::kRight;
     case KEY_HOME: return keys::kHome;
     case KEY_END: return keys::kEnd;
+    // CSI 1~ and CSI 4~ where the terminal description names them Find and Select (VT220):
+    // they are the Home and End keys, as the kitty decoder reads them too (term_input.cpp).
+    case KEY_FIND: return keys::kHome;
+    case KEY_SELECT: return keys::kEnd;
     case KEY_PPAGE: return keys::kPageUp;
     case KEY_NPAGE: return keys::kPageDown;
     case KEY_IC: return keys::kInsert;
@@ -211,6 +215,12 @@ std::unique_ptr<CursesScreen> CursesScreen::open(std::string& error) {
     std::fflush(stdout);
   } else {
     keypad(stdscr, TRUE);
+    // Home and End as screen, tmux, rxvt and the Linux console send them, when the terminal
+    // description (xterm's, set inside tmux) knows only its own forms: otherwise the bytes
+    // arrive one by one, the first an Esc.
+    for (auto [bytes, key] : {std::pair{"\033[1~", KEY_HOME}, std::pair{"\033[4~", KEY_END},
+                              std::pair{"\033[7~", KEY_HOME}, std::pair{"\033[8~", KEY_END}})
+      if (key_defined(bytes) == 0) define_key(bytes, key);
   }
   return s;
 }
