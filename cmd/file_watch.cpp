@@ -77,8 +77,8 @@ void FileWatch::watch(const std::vector<std::string>& paths) {
     constexpr uint32_t kEvents = IN_CLOSE_WRITE | IN_MODIFY | IN_ATTRIB | IN_CREATE | IN_DELETE |
                                  IN_MOVED_FROM | IN_MOVED_TO;
     for (const File& f : files_) {
-      if (std::find(watchedFolders_.begin(), watchedFolders_.end(), f.folder) != watchedFolders_.end())
-        continue;
+      auto& folders = watchedFolders_;
+      if (std::find(folders.begin(), folders.end(), f.folder) != folders.end()) continue;
       int wd = ::inotify_add_watch(fd_, f.folder.c_str(), kEvents);
       if (wd < 0) {
         // A folder inotify will not watch (a network file system, the watch limit): poll all.

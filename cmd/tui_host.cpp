@@ -36,8 +36,9 @@ constexpr auto kWatchInterval = std::chrono::milliseconds(100);
 
 // Control characters of the keys rb keeps (raw mode delivers them as keys). None is a common
 // prefix of tmux (Ctrl-B) or screen (Ctrl-A).
-constexpr int64_t kCtrlC = 3, kCtrlE = 5, kCtrlF = 6, kCtrlG = 7, kCtrlL = 12, kCtrlN = 14, kCtrlP = 16, kCtrlQ = 17,
-                  kCtrlR = 18, kCtrlS = 19, kCtrlT = 20, kCtrlV = 22, kCtrlW = 23;
+constexpr int64_t kCtrlC = 3, kCtrlE = 5, kCtrlF = 6, kCtrlG = 7, kCtrlL = 12, kCtrlN = 14,
+                  kCtrlP = 16, kCtrlQ = 17, kCtrlR = 18, kCtrlS = 19, kCtrlT = 20, kCtrlV = 22,
+                  kCtrlW = 23;
 
 int64_t fKey(int n) { return keys::kF1 + n - 1; }
 
@@ -659,7 +660,6 @@ void TuiHost::changeSpeed(double by) {
 
 void TuiHost::quit(int code) {
   quitCode_ = code;
-  quit_ = true;
   requestStop();
 }
 
@@ -698,9 +698,10 @@ std::string TuiHost::stateText() const {
 
 std::string TuiHost::titleState() const {
   if (past_ && pastShown_)
-    return "back in time: " + stepName(*pastShown_->step) + " of " + grouped(recording_.totalSteps());
-  if (ended_ || !paused_ || !breakAt_.valid() || !(breakAt_ == loc_) || (waitingFor_ && *waitingFor_))
-    return stateText();
+    return "back in time: " + stepName(*pastShown_->step) + " of " +
+           grouped(recording_.totalSteps());
+  bool waiting = waitingFor_ && *waitingFor_;
+  if (ended_ || !paused_ || !breakAt_.valid() || !(breakAt_ == loc_) || waiting) return stateText();
   // The title says why the run stopped; the status panel keeps the short state.
   std::string s = "paused at breakpoint, line " + std::to_string(loc_.line);
   if (loc_.file != 0 && sources_ && loc_.file < sources_->size()) {
@@ -1025,7 +1026,8 @@ void TuiHost::drawOutput() {
     // Paused or at the end, the header is the timeline: where the step shown is in the run.
     size_t present = stepsBeforePresent();
     std::string label =
-        past ? "output at " + stepName(*pastShown_->step) + " of " + grouped(recording_.totalSteps())
+        past ? "output at " + stepName(*pastShown_->step) + " of " +
+                   grouped(recording_.totalSteps())
         : ended_ ? "output at the end (" + grouped(recording_.totalSteps()) + " steps)"
                  : "output at step " + grouped(recording_.totalSteps()) + " (now)";
     int col = 0;
@@ -1046,7 +1048,8 @@ void TuiHost::drawOutput() {
     std::string_view text(transcript_);
     text = text.substr(0, std::min<uint64_t>(upTo, text.size()));
     if (upTo > transcript_.size() && room > 0) {
-      screen_.drawText(r.col, r.row + r.height - 1, "(output past the view's 64 MiB is not kept)", dim);
+      screen_.drawText(r.col, r.row + r.height - 1, "(output past the view's 64 MiB is not kept)",
+                       dim);
       --room;
     }
     rows = lastRows(lastLines(text, static_cast<size_t>(std::max(room, 0))), r.width, room);
@@ -1069,7 +1072,8 @@ void TuiHost::drawOutput() {
         errorRows.push_back(std::move(row));
       at = end + 1;
     }
-    if (static_cast<int>(errorRows.size()) > room) errorRows.resize(static_cast<size_t>(std::max(room, 0)));
+    if (static_cast<int>(errorRows.size()) > room)
+      errorRows.resize(static_cast<size_t>(std::max(room, 0)));
     room -= static_cast<int>(errorRows.size());
     TermStyle errorStyle;
     errorStyle.bold = true;

@@ -117,8 +117,6 @@ class TuiHost : public Host, public RobotObserver {
   /// The user asked for a restart (F12), or a watched file changed: the run ended at once and
   /// the caller runs the program again with nextSettings().
   bool restartRequested() const { return restart_; }
-  /// Whether the user quit (rather than ending the final screen or restarting).
-  bool quitRequested() const { return quit_; }
   /// The view as it is now, for the run after a restart: cell mode, speed, breakpoints by
   /// file name, the variables' scroll, and why it restarts.
   TuiSettings nextSettings() const;
@@ -236,7 +234,6 @@ class TuiHost : public Host, public RobotObserver {
   Debugger debugger_;
   bool paused_ = false;
   int quitCode_ = 0;
-  bool quit_ = false;
   bool restart_ = false;
   std::string restartWhy_;
   bool loadFailed_ = false;  ///< showLoadErrors: no program runs

@@ -134,7 +134,8 @@ std::vector<std::string> watchLines(const std::vector<WatchLine>& watches, int w
     }
     // An error is read whole: its rows after the first are indented under the expression.
     out.push_back(line.substr(0, w));
-    for (size_t at = w; at < line.size() && w > 2; at += w - 2) out.push_back("  " + line.substr(at, w - 2));
+    for (size_t at = w; at < line.size() && w > 2; at += w - 2)
+      out.push_back("  " + line.substr(at, w - 2));
   }
   return out;
 }

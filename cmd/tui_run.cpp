@@ -197,7 +197,8 @@ int runTui(const RunOptions& opts) {
     }
     if (moved.size() == 1) settings.notice = moved[0];
     if (moved.size() > 1)
-      settings.notice = std::to_string(moved.size()) + " breakpoints moved to the next line with a statement";
+      settings.notice =
+          std::to_string(moved.size()) + " breakpoints moved to the next line with a statement";
 
     screen = render::CursesScreen::open(why);
     if (!screen) {

@@ -36,7 +36,8 @@ size_t jumpFrom(const Recording& rec, size_t index, double fraction) {
   const std::vector<RecordedStep>& steps = rec.steps();
   if (steps.empty()) return 0;
   index = std::min(index, steps.size() - 1);
-  double span = std::max(1.0, std::round(static_cast<double>(steps.back().step) * std::fabs(fraction)));
+  double whole = static_cast<double>(steps.back().step);
+  double span = std::max(1.0, std::round(whole * std::fabs(fraction)));
   uint64_t here = steps[index].step;
   auto by = static_cast<uint64_t>(span);
   if (fraction < 0) {

@@ -111,7 +111,8 @@ class Parser {
       if (atLineEnd()) failHere("an expression");
       Expr* e = expression();
       if (!atLineEnd()) {
-        std::string shown = cur().kind == Tok::String ? quoted(cur().text, '"') : quoted(cur().text);
+        std::string shown =
+            cur().kind == Tok::String ? quoted(cur().text, '"') : quoted(cur().text);
         fail(cur().loc, "unexpected " + shown + " after the end of the expression");
       }
       return e;

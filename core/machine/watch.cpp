@@ -183,10 +183,15 @@ Value arithmetic(Tok op, const Value& a, const Value& b) {
     }
     default: {  // & | << >>
       int64_t x = toInteger(a), y = toInteger(b), r = 0;
-      if (op == Tok::Amp) r = x & y;
-      else if (op == Tok::Pipe) r = x | y;
-      else if (op == Tok::Shl) r = y < 0 || y > 63 ? 0 : static_cast<int64_t>(static_cast<uint64_t>(x) << y);
-      else r = y < 0 ? x : y > 63 ? (x < 0 ? -1 : 0) : x >> y;
+      if (op == Tok::Amp) {
+        r = x & y;
+      } else if (op == Tok::Pipe) {
+        r = x | y;
+      } else if (op == Tok::Shl) {
+        r = y < 0 || y > 63 ? 0 : static_cast<int64_t>(static_cast<uint64_t>(x) << y);
+      } else {
+        r = y < 0 ? x : y > 63 ? (x < 0 ? -1 : 0) : x >> y;
+      }
       return Value::integer(r);
     }
   }
@@ -316,7 +321,8 @@ class Evaluator {
 Watch::Watch(std::string text) : text_(std::move(text)), parsed_(std::make_unique<Parsed>()) {
   uint32_t file = parsed_->sources.add("watch", text_);
   DiagnosticList diags;
-  parsed_->root = parseExpression(parsed_->sources, file, parsed_->arena, standardBuiltins(), diags);
+  parsed_->root =
+      parseExpression(parsed_->sources, file, parsed_->arena, standardBuiltins(), diags);
   if (!parsed_->root) {
     syntaxError_ = "not an expression";
     for (const Diagnostic& d : diags.all())
