@@ -440,7 +440,7 @@ void TuiHost::showStep(std::optional<size_t> index) {
 }
 
 SourceLoc TuiHost::shownLoc() const {
-  if (past_ && pastShown_ && pastShown_->step->loc.valid()) return pastShown_->step->loc;
+  if (past_ && pastShown_ && pastShown_->step.loc.valid()) return pastShown_->step.loc;
   return loc_;
 }
 
@@ -689,7 +689,7 @@ void TuiHost::cycleMode() {
 // ---- drawing
 
 std::string TuiHost::stateText() const {
-  if (past_ && pastShown_) return "back at " + stepName(*pastShown_->step);
+  if (past_ && pastShown_) return "back at " + stepName(pastShown_->step);
   if (ended_) return endState_;
   if (waitingFor_ && *waitingFor_) return waitingFor_;
   if (paused_) return "paused";
@@ -698,7 +698,7 @@ std::string TuiHost::stateText() const {
 
 std::string TuiHost::titleState() const {
   if (past_ && pastShown_)
-    return "back in time: " + stepName(*pastShown_->step) + " of " +
+    return "back in time: " + stepName(pastShown_->step) + " of " +
            grouped(recording_.totalSteps());
   bool waiting = waitingFor_ && *waitingFor_;
   if (ended_ || !paused_ || !breakAt_.valid() || !(breakAt_ == loc_) || waiting) return stateText();
@@ -918,7 +918,7 @@ void TuiHost::drawStatus() {
   s.pen = robot.penDown();
   if (past_ && pastShown_) {
     // An earlier step: its pose; what the sensors read then is not kept.
-    const RecordedStep& step = *pastShown_->step;
+    const RecordedStep& step = pastShown_->step;
     s.located = step.located;
     s.x = step.x;
     s.y = step.y;
@@ -1001,7 +1001,7 @@ void TuiHost::drawVariables() {
   if (box.height <= 0 || layout_.vars.height <= 0) return;
   // Variables are not kept for earlier steps: the title says whose they are.
   std::string title = past_ && pastShown_
-                          ? "variables now, not at " + stepName(*pastShown_->step)
+                          ? "variables now, not at " + stepName(pastShown_->step)
                           : std::string("variables");
   int shown = layout_.vars.height;
   int total = static_cast<int>(varLines_.size());
@@ -1026,7 +1026,7 @@ void TuiHost::drawOutput() {
     // Paused or at the end, the header is the timeline: where the step shown is in the run.
     size_t present = stepsBeforePresent();
     std::string label =
-        past ? "output at " + stepName(*pastShown_->step) + " of " +
+        past ? "output at " + stepName(pastShown_->step) + " of " +
                    grouped(recording_.totalSteps())
         : ended_ ? "output at the end (" + grouped(recording_.totalSteps()) + " steps)"
                  : "output at step " + grouped(recording_.totalSteps()) + " (now)";
@@ -1044,7 +1044,7 @@ void TuiHost::drawOutput() {
   std::vector<std::string> rows;
   if (past) {
     // What had been printed when that step began: the transcript up to its count of bytes.
-    uint64_t upTo = pastShown_->step->output;
+    uint64_t upTo = pastShown_->step.output;
     std::string_view text(transcript_);
     text = text.substr(0, std::min<uint64_t>(upTo, text.size()));
     if (upTo > transcript_.size() && room > 0) {

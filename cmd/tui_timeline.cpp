@@ -8,7 +8,7 @@ namespace rb::cli {
 PastStep pastStep(const Recording& rec, size_t index) {
   PastStep p;
   const RecordedStep& s = rec.steps()[index];
-  p.step = &s;
+  p.step = s;
   std::vector<Colour> pixels = rec.screen(s.frame);
   p.screen.assign(pixels.begin(), pixels.end());
   p.robot.visible = s.located;

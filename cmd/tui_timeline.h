@@ -24,7 +24,7 @@ constexpr size_t kTimelineBudget = size_t{160} << 20;
 
 /// An earlier step as the view shows it.
 struct PastStep {
-  const RecordedStep* step = nullptr;
+  RecordedStep step;  ///< a copy: the recording may grow once the run goes on
   Pixels screen;               ///< the screen as that statement started
   render::RobotView robot;
   std::optional<double> range;  ///< the last rRange reading before it

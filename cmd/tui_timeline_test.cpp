@@ -66,7 +66,7 @@ TEST_CASE("timeline: an earlier step's screen, robot, line and output", "[tui][t
   REQUIRE(steps.size() == 7);  // six statements and the end
   // Before line 3 the screen has no red square; before line 4 it has.
   PastStep before = pastStep(rec, 2);
-  CHECK(before.step->loc.line == 3);
+  CHECK(before.step.loc.line == 3);
   CHECK(before.screen[5 * Canvas::kWidth + 5] != colours::kRed);
   PastStep after = pastStep(rec, 3);
   CHECK(after.screen[5 * Canvas::kWidth + 5] == colours::kRed);
