@@ -18,9 +18,10 @@
 namespace rb::cli {
 
 /// The budget of the live view's recording: every statement of a run of up to 2^20 (about a
-/// million) is kept, with the screens it drew; a longer run keeps every 2nd, 4th, ... statement,
-/// evenly (Recording's thinning). *rb's choice: a million statements is a minute of a busy loop.*
-constexpr size_t kTimelineBudget = size_t{160} << 20;
+/// million) is kept (the steps may take 3/8 of the budget, and 2^20 of them take 80 MiB), with
+/// the screens it drew as they fit; a longer run keeps every 2nd, 4th, ... statement, evenly
+/// (Recording's thinning). *rb's choice: a million statements is a minute of a busy loop.*
+constexpr size_t kTimelineBudget = size_t{224} << 20;
 
 /// An earlier step as the view shows it.
 struct PastStep {
