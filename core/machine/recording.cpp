@@ -101,7 +101,7 @@ void Recording::keyframe(Machine& machine, uint64_t step) {
   bool flipShown = machine.showsFlip();
   if (flipShown || lastShownFlip_) box = PixelBox{0, 0, Canvas::kWidth - 1, Canvas::kHeight - 1};
   lastShownFlip_ = flipShown;
-  bool full = frames_.size() % kFullEvery == 0 || last_.size() != kScreenPixels;
+  bool full = last_.size() != kScreenPixels || sinceFull_ >= std::max(lastFull_, kFullAfter);
   if (full) {
     frames_.push_back(encode(pixels.data(), {}, step, true));
     last_.assign(pixels.begin(), pixels.begin() + static_cast<long>(kScreenPixels));
@@ -234,15 +234,22 @@ RecordedFrame merged(const RecordedFrame& before, const RecordedFrame& after) {
 }  // namespace
 
 void Recording::thinFrames() {
-  if (frameBytes_ <= budget_ * 3 / 8 || frames_.size() < 3) return;
+  if (frameBytes_ <= budget_ * 3 / 8) return;
+  // Down to half of that at least, so that the next thinning is as far off as this one was after
+  // the last (a frame's bytes do not halve with their number: merged changes are bigger).
+  while (frameBytes_ > budget_ * 3 / 16 && frames_.size() >= 3) thinFramesOnce();
+}
+
+void Recording::thinFramesOnce() {
   frameStride_ *= 2;
   // Keep the first, then each frame at least a stride after the last kept one; the newest stays
   // (it is the screen now). A dropped frame's changes go into the next kept frame, which is then
-  // made whole or a change again as its place asks (every kFullEvery-th kept frame is whole).
+  // made whole or a change again as its place asks (by the same rule as keyframe(): kFullAfter).
   std::vector<uint32_t> newIndex(frames_.size());
   std::vector<RecordedFrame> kept;
   std::optional<RecordedFrame> pending;
   std::vector<Colour> screen(kScreenPixels, colours::kWhite);  // what the last kept frame shows
+  size_t since = 0, fullSize = 0;  // as sinceFull_ and lastFull_, for the kept frames
   frameBytes_ = 0;
   for (size_t i = 0; i < frames_.size(); ++i) {
     bool keep = kept.empty() || i + 1 == frames_.size() || frames_[i].step - kept.back().step >= frameStride_;
@@ -253,7 +260,9 @@ void Recording::thinFrames() {
       newIndex[i] = static_cast<uint32_t>(kept.size() - 1);
       continue;
     }
-    bool wantFull = kept.size() % kFullEvery == 0;
+    // Whole where the rule wants a checkpoint; a kept frame made whole by a dropped whole frame
+    // becomes changes again elsewhere, so whole frames keep their share of the memory.
+    bool wantFull = kept.empty() || since >= std::max(fullSize, kFullAfter);
     if (f.full && !wantFull) {
       std::vector<Colour> now = screenFromRuns(f.runs, kScreenPixels);
       f = encode(now.data(), screen, f.step, false);
@@ -262,12 +271,20 @@ void Recording::thinFrames() {
       applyFrame(f, screen);
       if (wantFull && !f.full) f = encode(screen.data(), {}, f.step, true);
     }
+    if (f.full) {
+      fullSize = sizeOf(f);
+      since = 0;
+    } else {
+      since += sizeOf(f);
+    }
     frameBytes_ += sizeOf(f);
     kept.push_back(std::move(f));
     newIndex[i] = static_cast<uint32_t>(kept.size() - 1);
   }
   frames_ = std::move(kept);
   frames_.shrink_to_fit();
+  sinceFull_ = since;
+  lastFull_ = fullSize;
   for (RecordedStep& s : steps_) s.frame = newIndex[std::min<size_t>(s.frame, newIndex.size() - 1)];
 }
 

@@ -35,7 +35,7 @@ struct ScreenRun {
 /// A run's colour that means "as in the frame before" (no colour number is this large).
 constexpr Colour kSameColour = 0xFFFFFFFFu;
 
-/// The screen as the recording keeps it: every kFullEvery-th frame whole, the others as what
+/// The screen as the recording keeps it: some frames whole (see kFullAfter), the others as what
 /// changed since the frame before (runs of kSameColour where nothing did).
 struct RecordedFrame {
   uint64_t step = 0;  ///< the screen as statement `step` (0-based) starts
@@ -72,8 +72,11 @@ class Recording {
   static constexpr size_t kDefaultBudget = size_t{64} << 20;
   /// At most this much output is kept (the rest is counted, not kept).
   static constexpr size_t kOutputCap = size_t{1} << 20;
-  /// Every this many kept frames one is whole (decoding a frame applies at most this many).
-  static constexpr size_t kFullEvery = 256;
+  /// A frame is kept whole again once the changes kept since the last whole frame take as many
+  /// bytes as it does, and at least this many: decoding any frame then reads at most about twice
+  /// a whole frame's bytes, and whole frames take at most half the frames' memory, however busy
+  /// the screen (a screen of single pixels is a run per pixel: megabytes a frame).
+  static constexpr size_t kFullAfter = size_t{64} << 10;
 
   explicit Recording(size_t budget = kDefaultBudget) : budget_(budget) {}
 
@@ -127,6 +130,7 @@ class Recording {
   /// Halves what is kept when it has grown past half the budget.
   void thinSteps();
   void thinFrames();
+  void thinFramesOnce();
 
   size_t budget_;
   std::vector<RecordedStep> steps_;
@@ -141,6 +145,7 @@ class Recording {
   uint64_t lastFrameStep_ = 0;
   size_t frameBytes_ = 0, eventBytes_ = 0;
   std::vector<Colour> last_;  ///< the screen of the last frame kept
+  size_t sinceFull_ = 0, lastFull_ = 0;  ///< bytes of changes since the last whole frame, and its size
   bool finished_ = false;
   std::optional<Diagnostic> error_;
   RunStatus status_ = RunStatus::Finished;

@@ -125,7 +125,7 @@ TEST_CASE("every kept frame is the screen as its statement starts, also after th
       "rLocate 400,300\nrPen DOWN\nfor i = 1 to 3000\n  LineWidth 1 + i % 4\n"
       "  Line (i * 7) % 800, (i * 13) % 600, (i * 11) % 800, (i * 3) % 600, 1 + i % 3, i % 16\n"
       "  if i % 500 = 0 then Rectangle i / 10, 10, i / 10 + 30, 40, i % 16, i % 16\nnext\n";
-  Recording rec(size_t{60} << 10);  // small: frames are thinned several times
+  Recording rec(size_t{24} << 20);  // small for this busy screen: frames are thinned
   test::MemoryReader reader;
   DiagnosticList diags;
   auto loaded = loadProgram("test.bas", scribble, reader, standardBuiltins(), {}, diags);
