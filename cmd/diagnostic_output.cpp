@@ -49,6 +49,7 @@ constexpr Rule kRules[] = {
     {"rb-return-outside-sub", "return with a value outside a sub."},
     {"rb-include-depth", "#include nested more than 32 files deep."},
     {"rb-include-not-found", "An #include file that does not exist."},
+    {"rb-include-refused", "An #include file outside the program's folder and the library folders."},
     {"rb-include-unreadable", "An #include file that exists but cannot be read."},
     {"rb-unclosed-if", "An if without endif: the block runs to the end of the file or sub."},
     {"rb-unassigned-variable", "A variable that is read but never assigned."},

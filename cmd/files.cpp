@@ -50,8 +50,32 @@ std::optional<std::string> FileSourceReader::find(const std::string& path) {
   return fs::weakly_canonical(resolved, ec).string();
 }
 
+FileSourceReader::FileSourceReader(const std::string& mainFile, const std::vector<std::string>& allowed)
+    : confine_(true) {
+  std::error_code ec;
+  auto root = [&](const fs::path& dir) {
+    fs::path c = fs::weakly_canonical(dir.empty() ? fs::path(".") : dir, ec);
+    if (ec) return;
+    std::string s = c.string();
+    if (s.empty() || s.back() != '/') s += '/';
+    roots_.push_back(s);
+  };
+  root(mainFile == "-" ? fs::current_path(ec) : fs::absolute(mainFile, ec).parent_path());
+  for (const std::string& lib : libraryDirs()) root(lib);
+  for (const std::string& dir : allowed) root(dir);
+}
+
 std::optional<std::string> FileSourceReader::read(const std::string& canonical) {
+  if (!refusal(canonical).empty()) return std::nullopt;  // never read past the rule
   return readFile(canonical);
+}
+
+std::string FileSourceReader::refusal(const std::string& canonical) {
+  if (!confine_) return "";
+  for (const std::string& r : roots_)
+    if (canonical.compare(0, r.size(), r) == 0) return "";
+  return "it is outside the program's folder and the library folders (rb run --allow-files DIR "
+         "allows another folder)";
 }
 
 namespace {

@@ -12,10 +12,22 @@ namespace rb::cli {
 
 /// Reads program files from the file system. A name that does not exist as written is also
 /// looked up without regard to case, since RobotBASIC programs come from Windows.
+/// With `confine` (every command that runs or checks a program; not the editor's language
+/// server, whose files are the user's own), a program includes only files in its own folder and
+/// below, the library folders, and the folders the person running rb allows (--allow-files):
+/// docs/language.md, "What a program may touch".
 class FileSourceReader : public SourceReader {
  public:
+  FileSourceReader() = default;
+  /// Confined to `mainFile`'s folder tree, the library folders and `allowed`.
+  FileSourceReader(const std::string& mainFile, const std::vector<std::string>& allowed);
   std::optional<std::string> find(const std::string& path) override;
   std::optional<std::string> read(const std::string& canonical) override;
+  std::string refusal(const std::string& canonical) override;
+
+ private:
+  bool confine_ = false;
+  std::vector<std::string> roots_;  ///< canonical folders, each ending in '/'
 };
 
 /// The largest program, include or events file rb reads: programs are text, so anything larger

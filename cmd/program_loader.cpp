@@ -7,7 +7,8 @@
 
 namespace rb::cli {
 
-LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint, bool compact) {
+LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint, bool compact,
+                    const std::vector<std::string>& allowed) {
   LoadedFile out;
   std::string text;
   std::string name = file;
@@ -20,7 +21,7 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
     return out;
   }
   text = std::move(*t);
-  FileSourceReader reader;
+  FileSourceReader reader(file, allowed);
   LoadOptions loadOptions;
   loadOptions.libraryDirs = libraryDirs();
   loadOptions.compact = compact;

@@ -24,8 +24,10 @@ struct LoadedFile {
 /// Reads FILE ("-": standard input), loads its includes and compiles it; `compact` keeps the
 /// statements in their compact form (LoadOptions::compact: for rb check, which needs only the
 /// diagnostics).
+/// `allowed`: folders the person running rb lets the program include from besides its own folder
+/// tree and the library folders (--allow-files).
 LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint,
-                    bool compact = false);
+                    bool compact = false, const std::vector<std::string>& allowed = {});
 
 /// Prints diagnostics gcc-style; warnings and notes too unless `errorsOnly`.
 void printDiagnostics(std::FILE* out, const SourceSet& sources, const DiagnosticList& diags,

@@ -11,7 +11,7 @@ namespace rb::cli {
 
 int loadForRun(const char* command, const RunOptions& opts, const CompileOptions& compile,
                LoadedFile& loaded) {
-  loaded = loadFile(opts.file, compile, false);
+  loaded = loadFile(opts.file, compile, false, false, opts.allowFiles);
   if (loaded.exitCode == exitcode::kNoInput) {
     std::fprintf(stderr, "%s: cannot read '%s': %s\n", command, opts.file.c_str(),
                  loaded.readError.c_str());

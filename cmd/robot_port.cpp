@@ -7,6 +7,10 @@
 namespace rb::cli {
 
 std::unique_ptr<RobotLink> openRobotPort(std::optional<int64_t> programPort, const RunOptions& opts) {
+  if (opts.noPorts)
+    throw RuntimeError((programPort ? "rCommPort " + std::to_string(*programPort) : std::string("--real")) +
+                       ": a program graded by rb test opens no serial port unless the assignment allows it "
+                       "(ports = true)");
   std::string path;
   if (!opts.port.empty()) {
     path = drivers::resolvePortOption(opts.port);

@@ -30,6 +30,9 @@ struct RunOptions {
   // programs only with --allow-spawn.
   std::vector<std::string> allowFiles;
   bool allowSpawn = false;
+  /// rb test's runs: no serial device unless the grader allows it (the assignment's `ports`, or
+  /// --trust-comments). `rb run` opens the port a program names, as RobotBASIC does.
+  bool noPorts = false;
   // rb run only: the live terminal view, its cell mode (ascii, half, braille or pixels; empty:
   // the best the terminal can show), its speed, whether it starts paused, and breakpoints
   // (LINE or FILE:LINE, --break, repeatable).

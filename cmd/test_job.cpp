@@ -27,6 +27,7 @@ struct JobOptions {
   std::vector<std::string> posts;      ///< programs run after it, on the final state
   std::vector<std::string> watch;      ///< colours (RRGGBB hex) the robot must avoid or touch
   std::string replay;                  ///< where to write the run's replay (.gif, .svg, .html), or ""
+  bool ports = false;                  ///< the grader lets the program open serial ports
 };
 
 grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
@@ -41,7 +42,7 @@ grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
 
 /// rb check's view of the program, as `rb check [--target rb9] FILE` reports it.
 void recordCheck(const JobOptions& opts, grade::RunRecord& rec) {
-  LoadedFile checked = loadFile(opts.run.file, CompileOptions{}, true);
+  LoadedFile checked = loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles);
   if (checked.exitCode == exitcode::kNoInput) {
     rec.checkExit = exitcode::kNoInput;
     return;
@@ -213,6 +214,7 @@ RunResult runTeacherProgram(const TeacherProgram& p, HeadlessRun& run, const Run
 
 int executeJob(JobOptions opts) {
   opts.run.quiet = true;  // rb check's part of the record has the warnings
+  opts.run.noPorts = !opts.ports;
   grade::RunRecord rec;
   recordCheck(opts, rec);
   // Written now and again at the end: a run killed at its time limit keeps rb check's part.
@@ -386,6 +388,7 @@ void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
   job->add_option("--post", opts->posts, "A program run after, on the final state; repeatable");
   job->add_option("--watch-colour", opts->watch, "A colour (RRGGBB) to record touches of; repeatable");
   job->add_option("--replay", opts->replay, "Write the run's replay here (.gif, .svg or .html)");
+  job->add_flag("--ports,!--no-ports", opts->ports, "Let the program open serial ports (default: not)");
   job->callback([opts, &exitCode] { exitCode = executeJob(*opts); });
 }
 

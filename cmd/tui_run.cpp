@@ -148,7 +148,7 @@ int runTui(const RunOptions& opts) {
   LoadedFile loaded;
   if (opts.watch) {
     // Watching, a program with errors still opens the view, which waits for the fix to be saved.
-    loaded = loadFile(opts.file, compile, false);
+    loaded = loadFile(opts.file, compile, false, false, opts.allowFiles);
     if (loaded.exitCode == exitcode::kNoInput) {
       printLoadErrors(opts, loaded);
       return exitcode::kNoInput;
@@ -245,7 +245,7 @@ int runTui(const RunOptions& opts) {
           break;
         }
         settings = host.nextSettings();
-        loaded = loadFile(opts.file, compile, false);
+        loaded = loadFile(opts.file, compile, false, false, opts.allowFiles);
         continue;
       }
       run.reset();  // the last run's robot port is closed before the next run opens it
@@ -276,7 +276,7 @@ int runTui(const RunOptions& opts) {
       if (!view->restartRequested()) break;
       // The program as it is on disk now: a restart takes the edits in.
       settings = view->nextSettings();
-      loaded = loadFile(opts.file, compile, false);
+      loaded = loadFile(opts.file, compile, false, false, opts.allowFiles);
     }
   } catch (...) {
     screen.reset();  // never leave the terminal in raw mode

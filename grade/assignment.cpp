@@ -782,13 +782,15 @@ std::optional<Assignment> loadAssignment(const std::string& path, std::string& e
     toml::source_region where;
     if (std::string why = unreadableText(content, where); !why.empty()) throw Bad{why, where};
     toml::table root = toml::parse(content, path);
-    onlyKeys(root, {"title", "solution", "world", "roster", "robot", "run", "check"}, "at the top of the assignment");
+    onlyKeys(root, {"title", "solution", "world", "roster", "robot", "ports", "run", "check"},
+             "at the top of the assignment");
     a.title = fs::path(path).stem().string();
     if (const toml::node* n = root.get("title")) a.title = text(*n, "title");
     if (const toml::node* n = root.get("solution")) a.solution = requireFile(dir, *n, "solution");
     if (const toml::node* n = root.get("world")) a.world = requireFile(dir, *n, "world");
     if (const toml::node* n = root.get("roster")) a.roster = requireFile(dir, *n, "roster");
     if (const toml::node* n = root.get("robot")) a.aboutRobot = boolean(*n, "robot");
+    if (const toml::node* n = root.get("ports")) a.ports = boolean(*n, "ports");
     if (const toml::node* n = root.get("run")) {
       const toml::table* run = n->as_table();
       if (!run) throw Bad{"run must be a table: [run]", n->source()};

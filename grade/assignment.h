@@ -97,6 +97,7 @@ struct Assignment {
   /// it earns nothing: set by `robot = true/false`, else inferred from the checks (and the
   /// solution, see Grader).
   std::optional<bool> aboutRobot;
+  bool ports = false;                   ///< programs may open serial ports (rCommPort, a real robot)
   std::vector<uint64_t> seeds{1};       ///< each program runs once per seed
   uint64_t maxSteps = 10'000'000;       ///< statements per run (0: no limit)
   double timeout = 10;                  ///< seconds of real time per run

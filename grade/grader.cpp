@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <ctime>
@@ -84,12 +85,27 @@ struct Task {
   std::string record, screenFile, replayFile;
 };
 
-/// Options of `// args:` that widen what a program may reach: only the person running rb
-/// test grants them (--trust-comments), never the program's own comments.
-const char* const kGrantingOptions[] = {"--allow-files", "--allow-spawn", "--port", "--real"};
-
 /// A comment's timeout above this is capped unless the person running rb test allows more.
 constexpr double kCommentTimeoutCap = 30;
+/// Memory of a run in comment mode (an assignment sets its own), which `// args:` may lower.
+constexpr double kCommentMemoryCapMb = 1024;
+
+/// What `// args:` may pass to the run: what only narrows what the program may do, or reads
+/// only from its own folder. The rest is left out, each with why (docs/confinement.md).
+struct FilteredArgs {
+  std::vector<std::string> args;
+  std::vector<std::string> notes;
+};
+
+std::optional<double> numberArg(const std::string& s) {
+  try {
+    size_t used = 0;
+    double v = std::stod(s, &used);
+    if (used == s.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
 
 std::string number(double v) {
   char buf[32];
@@ -119,6 +135,11 @@ class Grader {
   void writePicture(ProgramResult& result, const std::vector<RunOutcome>& runs);
   std::string describeProcess(const JobOutcome& o, const Job& job) const;
   LimitNames commentLimits(const CommentSpec& spec) const;
+  FilteredArgs commentArgs(const CommentSpec& spec, const std::string& program) const;
+  /// The time limit of a comment-mode run: the comment's, capped unless trusted; --timeout wins.
+  double commentTimeout(const CommentSpec& spec) const {
+    return opts_.timeout.value_or(opts_.trustComments ? spec.timeout : std::min(spec.timeout, kCommentTimeoutCap));
+  }
   bool screenWanted() const {
     return assignment_ && (assignment_->needsScreen() || (!opts_.picturesDir.empty() && opts_.studentPictures));
   }
@@ -167,6 +188,73 @@ LimitNames Grader::commentLimits(const CommentSpec& spec) const {
   return n;
 }
 
+FilteredArgs Grader::commentArgs(const CommentSpec& spec, const std::string& program) const {
+  FilteredArgs out;
+  if (opts_.trustComments) {
+    out.args = spec.args;
+    return out;
+  }
+  std::error_code ec;
+  std::string home = fs::weakly_canonical(fs::absolute(program, ec).parent_path(), ec).string() + "/";
+  const std::vector<std::string>& a = spec.args;
+  auto ignored = [&](const std::string& option, const std::string& why) {
+    out.notes.push_back("ignored // args: " + option + ": " + why);
+  };
+  const std::string grant = "only the person running rb test may grant it (rb test --trust-comments)";
+  if (spec.timeoutSet && spec.timeout > kCommentTimeoutCap && !opts_.timeout)
+    out.notes.push_back("// timeout: " + number(spec.timeout) + " counts as " + number(kCommentTimeoutCap) +
+                        " s: a comment may lower the time limit, not raise it (rb test --timeout or "
+                        "--trust-comments may)");
+  for (size_t i = 0; i < a.size(); ++i) {
+    std::string name = a[i], value;
+    bool inlineValue = false;
+    if (size_t eq = name.find('='); name.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+      inlineValue = true;
+    }
+    static const std::set<std::string> takesValue = {"--seed", "--max-steps", "--timeout", "--max-memory",
+                                                       "--events", "--keys", "--port", "--baud",
+                                                       "--robot-timeout", "--allow-files", "--cells", "--color"};
+    bool hasValue = takesValue.count(name) != 0;
+    if (hasValue && !inlineValue) {
+      if (i + 1 >= a.size()) {
+        out.args.push_back(a[i]);  // the run reports the missing value
+        continue;
+      }
+      value = a[++i];
+    }
+    std::string shown = name + (hasValue ? " " + value : "");
+    auto keep = [&] {
+      out.args.push_back(name);
+      if (hasValue) out.args.push_back(value);
+    };
+    if (name == "--allow-files" || name == "--allow-spawn" || name == "--port" || name == "--real" ||
+        name == "--baud" || name == "--robot-timeout") {
+      ignored(shown, grant);
+    } else if (name == "--events") {
+      fs::path f = fs::weakly_canonical(fs::absolute(fs::path(program).parent_path() / value, ec), ec);
+      if (f.string().rfind(home, 0) == 0) keep();
+      else ignored(shown, "the events file is outside the program's folder");
+    } else if (name == "--timeout") {
+      std::optional<double> t = numberArg(value);
+      if (t && *t > 0 && *t <= commentTimeout(spec)) keep();
+      else ignored(shown, "a comment may lower the time limit, not raise it or switch it off");
+    } else if (name == "--max-steps") {
+      std::optional<double> n = numberArg(value);
+      if (n && *n >= 1 && (!opts_.maxSteps || *n <= static_cast<double>(*opts_.maxSteps))) keep();
+      else ignored(shown, "a comment may lower the step limit, not raise it or switch it off");
+    } else if (name == "--max-memory") {
+      std::optional<double> m = numberArg(value);
+      if (m && *m >= 1 && *m <= kCommentMemoryCapMb) keep();
+      else ignored(shown, "a comment may lower the memory limit, not raise it or switch it off");
+    } else {
+      keep();  // --seed, --keys, --tui, --cells, --color, --quiet: nothing more to reach
+    }
+  }
+  return out;
+}
+
 Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex, uint64_t seed,
                       bool screen, const CommentSpec* spec) {
   Task t;
@@ -180,6 +268,8 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
   Job& job = t.job;
   job.argv = opts_.childCommand;
   job.argv.insert(job.argv.end(), {"--record", t.record});
+  // Serial ports only when the person running rb test grants them.
+  if (spec ? opts_.trustComments : assignment_->ports) job.argv.push_back("--ports");
   if (screen) job.argv.insert(job.argv.end(), {"--screen", t.screenFile});
   if (!opts_.replayFormat.empty() && seedIndex == 0 && program != SIZE_MAX) {
     t.replayFile = base + "." + opts_.replayFormat;
@@ -196,16 +286,16 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
       if (spec->checkArgs[i] == "--target=rb9" ||
           (spec->checkArgs[i] == "--target" && i + 1 < spec->checkArgs.size() && spec->checkArgs[i + 1] == "rb9"))
         job.argv.insert(job.argv.end(), {"--check-target", "rb9"});
-    job.argv.insert(job.argv.end(), spec->args.begin(), spec->args.end());
-    if (!hasOption(spec->args, "--seed")) job.argv.insert(job.argv.end(), {"--seed", std::to_string(seed)});
-    if (opts_.maxSteps && !hasOption(spec->args, "--max-steps"))
+    std::vector<std::string> args = commentArgs(*spec, file).args;
+    job.argv.insert(job.argv.end(), args.begin(), args.end());
+    if (!hasOption(args, "--seed")) job.argv.insert(job.argv.end(), {"--seed", std::to_string(seed)});
+    if (opts_.maxSteps && !hasOption(args, "--max-steps"))
       job.argv.insert(job.argv.end(), {"--max-steps", std::to_string(*opts_.maxSteps)});
     // A comment may narrow the time limit, never widen it past the default, unless the person
     // running rb test trusts the comments or sets --timeout.
-    double timeout = opts_.timeout.value_or(
-        opts_.trustComments ? spec->timeout : std::min(spec->timeout, kCommentTimeoutCap));
+    double timeout = commentTimeout(*spec);
     // The run stops itself at its time limit and says where; the kill is the backstop.
-    if (!hasOption(spec->args, "--timeout")) job.argv.insert(job.argv.end(), {"--timeout", number(timeout)});
+    if (!hasOption(args, "--timeout")) job.argv.insert(job.argv.end(), {"--timeout", number(timeout)});
     // As rb check and rb run each had the time limit, the child that does both gets twice it.
     job.timeoutSeconds = 2 * timeout + 1;
     job.memoryBytes = kCommentMemoryMb << 20;
@@ -537,19 +627,7 @@ ClassResult Grader::run() {
         r.reason = specs_[p]->nontest ? "not a test (// nontest: a file others include)" : *specs_[p]->skip;
         continue;
       }
-      if (!opts_.trustComments) {
-        std::string granting;
-        for (const std::string& a : specs_[p]->args)
-          for (const char* g : kGrantingOptions)
-            if (granting.empty() && (a == g || a.rfind(std::string(g) + "=", 0) == 0)) granting = g;
-        if (!granting.empty()) {
-          r.verdict = "fail";
-          r.reason = "// args: " + granting +
-                     " would let the program reach more than rb test allows; only the person running rb test "
-                     "can grant that (rb test --trust-comments)";
-          continue;
-        }
-      }
+      r.notes = commentArgs(*specs_[p], programs_[p]).notes;
       tasks.push_back(makeTask(p, programs_[p], 0, opts_.seed, false, &*specs_[p]));
       pending_[p] = 1;
     } else {

@@ -54,6 +54,9 @@ struct ProgramResult {
   std::string verdict;
   std::string reason;              ///< the first failed check's message, or why it was skipped
   std::string gate;                ///< why nothing counts ("the program is empty"), or ""
+  /// What rb test did differently from what the program's comments asked, and why ("ignored //
+  /// args: --allow-spawn: only the person running rb test may grant it").
+  std::vector<std::string> notes;
   std::vector<CheckResult> checks;
   uint64_t steps = 0;              ///< of the first run
   double seconds = 0;              ///< wall time of all its runs

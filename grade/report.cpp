@@ -155,6 +155,7 @@ bool failed(const ProgramResult& p) { return p.verdict == "fail" || p.verdict ==
 /// files show them.
 std::string details(const ProgramResult& p, bool student, bool withErrors = true) {
   std::string out;
+  for (const std::string& n : p.notes) out += cleanUtf8(indent("note: " + n, "    "), false) + "\n";
   if (!p.gate.empty()) {
     out += "    " + p.gate + " (no check counts)\n";
   } else if (p.checks.empty()) {
@@ -204,7 +205,7 @@ std::string details(const ProgramResult& p, bool student, bool withErrors = true
     out += cleanUtf8(indent("passed, " + voidedBy + ": " + names, "    "), false) + "\n";
   }
   if (outputCheckFailed(p) && !p.output.empty()) {
-    out += p.inputs.empty() ? "    output:\n" : "    output (> marks a line where input showed its prompt and read [text]):\n";
+    out += p.inputs.empty() ? "    what it printed:\n" : "    what it printed (> marks a line where input showed its prompt and read [text]):\n";
     out += cleanUtf8(indent(transcript(p), "      "), false) + "\n";
   }
   if (withErrors && !p.errors.empty()) out += "    error output:\n" + cleanUtf8(indent(p.errors, "      "), false) + "\n";
@@ -265,7 +266,7 @@ std::string textReport(const ClassResult& r, bool showDetails) {
   if (showDetails) {
     bool header = false;
     for (const ProgramResult& p : r.programs) {
-      bool notes = false;
+      bool notes = !p.notes.empty();
       for (const CheckResult& c : p.checks) notes = notes || !c.note.empty();
       if (!failed(p) && !notes) continue;
       if (p.verdict == "missing" || (p.checks.empty() && p.gate.empty())) continue;  // the table said it all
@@ -324,6 +325,10 @@ std::string jsonReport(const ClassResult& r) {
               {"max_points", p.maxPoints}, {"checks", checksJson(p.checks, r.studentView)}};
     if (!p.student.empty()) j["student"] = cleanUtf8(p.student, false);
     if (!p.gate.empty()) j["gate"] = cleanUtf8(p.gate, false);
+    if (!p.notes.empty()) {
+      j["notes"] = json::array();
+      for (const std::string& n : p.notes) j["notes"].push_back(cleanUtf8(n, false));
+    }
     if (!p.picture.empty()) j["picture"] = p.picture;
     if (!p.replay.empty()) j["replay"] = p.replay;
     if (!p.output.empty()) j["output"] = cleanUtf8(p.output, false);

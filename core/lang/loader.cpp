@@ -83,6 +83,10 @@ class Loader {
       diags_.error(s.nameLoc, "include file '" + wanted + "' not found", "rb-include-not-found");
       return;
     }
+    if (std::string why = reader_.refusal(*found); !why.empty()) {
+      diags_.error(s.nameLoc, "cannot #include '" + wanted + "': " + why, "rb-include-refused");
+      return;
+    }
     if (!seen_.insert(*found).second) return;  // each file once
     std::optional<std::string> text = reader_.read(*found);
     if (!text) {

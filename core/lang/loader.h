@@ -27,6 +27,10 @@ class SourceReader {
   virtual std::optional<std::string> find(const std::string& path) = 0;
   /// The whole text of a file found by find(), or nullopt on a read error.
   virtual std::optional<std::string> read(const std::string& canonical) = 0;
+  /// Why a file found by find() may not be included ("" when it may): a reader that confines
+  /// what a program reads refuses files outside the folders it allows, and nothing of a refused
+  /// file is read.
+  virtual std::string refusal(const std::string& /*canonical*/) { return ""; }
 };
 
 struct LoadOptions {

@@ -545,11 +545,42 @@ def case_comment_limits(env):
            "in the loop of lines 2-3" in r.stdout, "where the limit stopped it", r.stdout)
     expect("rb check: killed" not in r.stdout, "rb check's verdict survives", r.stdout)
     expect(r.stdout.count("stopped after 1 seconds") == 1, "the error output once", r.stdout)
-    # Comments may not grant access: only the person running rb test may.
-    prog = env.write("spawn.bas", "// args: --allow-spawn\nprint 1 // expect: 1\n")
-    r = env.rb_run("test", prog)
-    expect(r.returncode == 1 and "only the person running rb test" in r.stdout, "refused", r.stdout)
-    r = env.rb_run("test", "--trust-comments", prog)
+    # Serial ports: none unless the assignment grants them (a comment's --trust-comments run may).
+    port = env.write("port.bas", "rCommPort 97\nprint rCommand(66, 0)\n")
+    a = env.write("ports.toml", '[[check]]\nkind = "no-error"\n')
+    r = env.rb_run("test", "--format", "json", "-a", a, port)
+    reason = json.loads(r.stdout)["programs"][0]["reason"]
+    expect("opens no serial port unless the assignment allows it (ports = true)" in reason, "refused", reason)
+    a = env.write("ports.toml", 'ports = true\n[[check]]\nkind = "no-error"\n')
+    r = env.rb_run("test", "--format", "json", "-a", a, port)
+    reason = json.loads(r.stdout)["programs"][0]["reason"]
+    expect("no serial device for port 97" in reason and "ports = true" not in reason, "granted: the port itself is missing", reason)
+    r = env.rb_run("test", port)
+    expect("opens no serial port" in r.stdout, "comment mode refuses too", r.stdout)
+    # Comments may not grant access or raise limits: only the person running rb test may. What a
+    # comment asked and rb test left out is said, with why.
+    prog = env.write("spawn.bas", "// args: --allow-spawn --events /etc/passwd --max-steps 0 --timeout 1e300\n"
+                     "// timeout: 1e300\nprint 1 // expect: 1\n")
+    r = env.rb_run("test", "--format", "json", "--max-steps", "1000", prog)
+    p = json.loads(r.stdout)["programs"][0]
+    notes = "\n".join(p.get("notes", []))
+    expect(r.returncode == 0 and p["result"] == "pass", "runs without what was left out", p)
+    for part in ("ignored // args: --allow-spawn: only the person running rb test may grant it",
+                 "ignored // args: --events /etc/passwd: the events file is outside the program's folder",
+                 "ignored // args: --max-steps 0: a comment may lower the step limit",
+                 "ignored // args: --timeout 1e300: a comment may lower the time limit",
+                 "// timeout: 1e+300 counts as 30 s"):
+        expect(part in notes, f"note {part!r}", notes)
+    t = env.rb_run("test", prog)
+    expect("note: ignored // args: --allow-spawn" in t.stdout, "the text report says it too", t.stdout)
+    env.write("keys.events", "key a\n")
+    ok = env.write("own.bas", "// args: --events keys.events --max-steps 500\nprint 1 // expect: 1\n")
+    r = env.rb_run("test", "--format", "json", ok)
+    expect("notes" not in json.loads(r.stdout)["programs"][0], "what only narrows is kept", r.stdout)
+    spawn = env.write("spawn2.bas", "// args: --allow-spawn\nprint Spawn(\"true\", 0) // expect: 0\n")
+    r = env.rb_run("test", spawn)
+    expect(r.returncode == 1 and "Spawn" in r.stdout, "not granted: Spawn is refused", r.stdout)
+    r = env.rb_run("test", "--trust-comments", spawn)
     expect(r.returncode == 0, "granted by the person running rb test", r.stdout)
 
 
