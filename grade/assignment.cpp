@@ -8,6 +8,7 @@
 #include <sstream>
 #include <filesystem>
 #include <set>
+#include <re2/re2.h>
 #include <toml++/toml.h>
 
 #include "lang/builtins.h"
@@ -335,11 +336,11 @@ Check readCheck(const toml::table& t, const fs::path& dir, bool inGroup) {
         throw Bad{"regex must be a pattern or a list of patterns", regexNode->source()};
       }
       for (const std::string& p : c.patterns) {
-        try {
-          c.regexes.emplace_back(p, std::regex::ECMAScript);
-        } catch (const std::regex_error& e) {
-          throw Bad{"bad regex " + inQuotes(p) + ": " + e.what(), regexNode->source()};
-        }
+        RE2::Options options;
+        options.set_log_errors(false);
+        auto re = std::make_shared<const RE2>(p, options);
+        if (!re->ok()) throw Bad{"bad regex " + inQuotes(p) + ": " + re->error(), regexNode->source()};
+        c.regexes.push_back(std::move(re));
       }
       break;
     }

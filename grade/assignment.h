@@ -5,11 +5,15 @@
 
 #include <cstdint>
 #include <optional>
-#include <regex>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "geometry.h"
+
+namespace re2 {
+class RE2;
+}
 
 namespace rb::grade {
 
@@ -54,7 +58,9 @@ struct Check {
   // Output: `text` exactly, or one pattern per line.
   std::optional<std::string> text;
   std::vector<std::string> patterns;
-  std::vector<std::regex> regexes;
+  /// RE2, so that matching takes time linear in the line: no teacher's pattern and no student's
+  /// output can stall the class (a nested quantifier backtracks for ever in a backtracking engine).
+  std::vector<std::shared_ptr<const re2::RE2>> regexes;
   bool prompts = false;    ///< Output, SolutionOutput: compare input's prompts and echo too
   // Clean
   bool allowWarnings = false;

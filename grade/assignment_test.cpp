@@ -1,5 +1,7 @@
 #include "assignment.h"
 
+#include <re2/re2.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -97,7 +99,8 @@ tolerance = 0.02
   CHECK(a->checks[0].text == "12\n");
   CHECK(a->checks[1].name == "area");
   CHECK(a->checks[1].points == 2.5);
-  CHECK(std::regex_match("Area: 42", a->checks[1].regexes[0]));
+  CHECK(RE2::FullMatch("Area: 42", *a->checks[1].regexes[0]));
+  CHECK_FALSE(RE2::FullMatch("Area: 42!", *a->checks[1].regexes[0]));
   CHECK(a->checks[4].allowWarnings);
   CHECK(a->checks[4].target == "rb9");
   CHECK(a->checks[5].regions[0].x1 == 380);  // corners in any order

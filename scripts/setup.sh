@@ -14,6 +14,7 @@ packages=(
   libserialport-dev     # rb ports: the serial ports and what is known of each
   libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
   libgif-dev            # rb render --animate OUT.gif: giflib writes the animated GIF
+  libre2-dev            # rb test: output patterns matched in linear time (RE2)
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
 )
 test_packages=(

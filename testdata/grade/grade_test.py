@@ -584,6 +584,19 @@ def case_comment_limits(env):
     expect(r.returncode == 0, "granted by the person running rb test", r.stdout)
 
 
+def case_regex_linear(env):
+    # A pattern that backtracks for ever in a backtracking engine, against a student's output:
+    # RE2 matches in time linear in the line, so the class is graded at once.
+    a = env.write("rx.toml", '[[check]]\nkind = "output"\nregex = ["([a-z]+)*!"]\n')
+    prog = env.write("rx.bas", 'print "' + "a" * 64 + '"\n')
+    r = subprocess.run([env.rb, "test", "--format", "json", "-a", a, prog], capture_output=True, text=True, timeout=20)
+    p = json.loads(r.stdout)["programs"][0]
+    expect(p["result"] == "fail" and "does not match" in p["reason"], "graded", p)
+    bad = env.write("bad.toml", '[[check]]\nkind = "output"\nregex = ["(a"]\n')
+    r = env.rb_run("test", "-a", bad, prog)
+    expect(r.returncode == 64 and "bad.toml:3:9: bad regex '(a': missing )" in r.stderr, "bad pattern", r.stderr)
+
+
 def case_similarity(env):
     # A disguised copy (names, numbers, comments and layout changed) is found with its lines side
     # by side; a program of one's own is not; students never see it.
