@@ -54,10 +54,9 @@ std::string firstError(const std::string& file) {
 
 /// One feedback file per program for its student: DIR/NAME.txt.
 bool writeFeedback(const std::string& dir, const grade::ClassResult& result, const std::vector<std::string>& paths) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) {
-    std::fprintf(stderr, "rb test: cannot make the feedback folder %s: %s\n", dir.c_str(), ec.message().c_str());
+  std::string why;
+  if (!render::makeFolder(dir, why)) {
+    std::fprintf(stderr, "rb test: %s\n", why.c_str());
     return false;
   }
   bool ok = true;

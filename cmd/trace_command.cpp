@@ -13,6 +13,7 @@
 #include "base/diagnostic.h"
 #include "base/text.h"
 #include "exit_codes.h"
+#include "png_writer.h"
 #include "headless_run.h"
 #include "record.h"
 #include "text.h"
@@ -359,10 +360,9 @@ int executeTrace(const TraceOptions& opts) {
         return exitcode::kUsage;
       }
     }
-    std::error_code ec;
-    fs::create_directories(opts.outDir, ec);
-    if (ec) {
-      std::fprintf(stderr, "rb trace: cannot make the folder '%s': %s\n", opts.outDir.c_str(), ec.message().c_str());
+    std::string error;
+    if (!render::makeFolder(opts.outDir, error)) {
+      std::fprintf(stderr, "rb trace: %s\n", error.c_str());
       return exitcode::kIoError;
     }
   }

@@ -535,9 +535,8 @@ bool Grader::prepare() {
   if (!mkdtemp(pattern.data())) return fatal(74, "cannot make a temporary folder: " + std::string(std::strerror(errno)));
   temp_ = pattern;
   if (!opts_.picturesDir.empty()) {
-    std::error_code ec;
-    fs::create_directories(opts_.picturesDir, ec);
-    if (ec) return fatal(74, "cannot make the pictures folder " + opts_.picturesDir + ": " + ec.message());
+    std::string error;
+    if (!render::makeFolder(opts_.picturesDir, error)) return fatal(74, error);
   }
   return true;
 }

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -158,10 +159,66 @@ std::vector<uint8_t> encodePng(const RgbImage& image) {
   return out;
 }
 
+namespace {
+/// Writes to something that is there and is not a regular file (a FIFO, a device, /dev/stdout,
+/// a symbolic link) as it is: it is never replaced by a file.
+bool writeInPlace(const std::string& path, const void* bytes, size_t size, std::string& error) {
+  struct stat target;
+  bool regular = ::stat(path.c_str(), &target) == 0 && S_ISREG(target.st_mode);
+  int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | (regular ? O_TRUNC : 0));
+  if (fd < 0) {
+    error = "cannot write '" + path + "': " + std::strerror(errno);
+    return false;
+  }
+  const char* p = static_cast<const char*>(bytes);
+  size_t left = size;
+  while (left > 0) {
+    ssize_t n = ::write(fd, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error = "cannot write '" + path + "': " + std::strerror(n < 0 ? errno : EIO);
+      ::close(fd);
+      return false;
+    }
+    p += n;
+    left -= static_cast<size_t>(n);
+  }
+  if (::close(fd) != 0) {
+    error = "cannot write '" + path + "': " + std::strerror(errno);
+    return false;
+  }
+  return true;
+}
+}  // namespace
+
+bool makeFolder(const std::string& path, std::string& error) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) return true;
+    error = "cannot make the folder '" + path + "': something else of that name is there";
+    return false;
+  }
+  if (::mkdir(path.c_str(), 0777) == 0) return true;
+  error = "cannot make the folder '" + path + "': " +
+          (errno == ENOENT ? std::string("the folder it would be in does not exist") : std::strerror(errno));
+  return false;
+}
+
 bool writeFileBytes(const std::string& path, const void* bytes, size_t size, std::string& error) {
-  // Written beside the target under a temporary name, then renamed over it: an interrupted
-  // write never leaves a truncated picture, and a symbolic link at `path` is replaced rather
-  // than followed onto another file.
+  struct stat st, target;
+  if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    bool targetIsFile = ::stat(path.c_str(), &target) == 0 ? S_ISREG(target.st_mode) : true;
+    if (S_ISDIR(st.st_mode) || (S_ISLNK(st.st_mode) && ::stat(path.c_str(), &target) == 0 && S_ISDIR(target.st_mode))) {
+      error = "cannot write '" + path + "': it is a folder";
+      return false;
+    }
+    // A device, a FIFO, or a link to one (/dev/stdout): written to. A link to a file is replaced
+    // below, never followed: a link planted in a class folder must not lead rb to overwrite
+    // another file.
+    if (!S_ISLNK(st.st_mode) || !targetIsFile) return writeInPlace(path, bytes, size, error);
+  }
+  // A regular file (or none yet) is written beside itself under a temporary name, then renamed
+  // over: an interrupted write never leaves a truncated picture.
   std::string tmp = path + ".tmp-XXXXXX";
   int fd = ::mkstemp(tmp.data());
   if (fd < 0) {

@@ -74,8 +74,15 @@ bool writePngFile(const std::string& path, const RgbImage& image, std::string& e
 /// Used by the tests to check the pixels rb render wrote. nullopt with `error` set on failure.
 std::optional<RgbImage> readPngFile(const std::string& path, std::string& error);
 
-/// Writes `bytes` to `path`, replacing it. On failure returns false with a message naming the
-/// file and the reason in `error`.
+/// Writes `bytes` to `path`. A regular file (or a new one) is written under a temporary name and
+/// renamed over it, and so is a symbolic link to a file (replaced, never followed: a link planted
+/// in a class folder must not lead rb to overwrite another file); a FIFO or a device, or a link
+/// to one (/dev/stdout), is written to as it is and never replaced by a file. On failure returns false
+/// with a message naming the file and the reason in `error`.
 bool writeFileBytes(const std::string& path, const void* bytes, size_t size, std::string& error);
+
+/// Makes the folder the user named for what rb writes (--pictures DIR, --out DIR), and only it:
+/// its parent must exist (a typo never makes a tree of folders). True when it is there.
+bool makeFolder(const std::string& path, std::string& error);
 
 }  // namespace rb::render

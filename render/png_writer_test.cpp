@@ -4,6 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include "png_writer.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <iterator>
 #include "render_test_support.h"
 
 namespace rb::render {
@@ -214,6 +220,36 @@ TEST_CASE("png: the screen as runs of one colour is composeImage's picture", "[r
     RgbImage back = imageFromRuns(runs, 800, 600);
     CHECK(back.rgb == image.rgb);
   }
+}
+
+TEST_CASE("png: devices and FIFOs are written to, never replaced; links to files are replaced", "[render][png]") {
+  test::TempFile target("written_target.txt");
+  test::TempFile link("written_link.txt");
+  std::string error;
+  REQUIRE(writeFileBytes(target.str(), "old text", 8, error));
+  // A link to a file is replaced, its target kept.
+  REQUIRE(::symlink(target.str().c_str(), link.str().c_str()) == 0);
+  REQUIRE(writeFileBytes(link.str(), "new", 3, error));
+  struct stat st;
+  REQUIRE(::lstat(link.str().c_str(), &st) == 0);
+  CHECK(S_ISREG(st.st_mode));
+  std::ifstream in(target.str());
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  CHECK(text == "old text");
+  // A link to a device is written through and stays.
+  ::unlink(link.str().c_str());
+  REQUIRE(::symlink("/dev/null", link.str().c_str()) == 0);
+  REQUIRE(writeFileBytes(link.str(), "x", 1, error));
+  REQUIRE(::lstat(link.str().c_str(), &st) == 0);
+  CHECK(S_ISLNK(st.st_mode));
+  // A device: /dev/null takes the bytes and stays a device.
+  REQUIRE(writeFileBytes("/dev/null", "x", 1, error));
+  REQUIRE(::stat("/dev/null", &st) == 0);
+  CHECK(S_ISCHR(st.st_mode));
+  // A folder is refused.
+  CHECK_FALSE(writeFileBytes("/tmp", "x", 1, error));
+  CHECK(error.find("it is a folder") != std::string::npos);
+  ::unlink(link.str().c_str());
 }
 
 }  // namespace rb::render
