@@ -13,30 +13,39 @@
 namespace rb::cli {
 
 namespace {
-/// A number of seconds: finite and not negative (CLI11's NonNegativeNumber lets nan through
-/// and prints its range as 300 digits).
-const CLI::Validator kSeconds(
-    [](std::string& text) -> std::string {
-      double v = 0;
-      try {
-        size_t used = 0;
-        v = std::stod(text, &used);
-        if (used != text.size()) return "'" + text + "' is not a number of seconds";
-      } catch (const std::exception&) {
-        return "'" + text + "' is not a number of seconds";
-      }
-      if (!std::isfinite(v) || v < 0) return "'" + text + "' must be a number of seconds, 0 or more";
-      return "";
-    },
-    "SECONDS");
+/// A number in [lo, hi], written as a person writes it: finite, whole when `whole`, the range in
+/// the message as it is typed (CLI11's own checks let nan through and print their ranges as 300
+/// digits). Every command takes its numbers through these, so each is checked the same way.
+CLI::Validator numberIn(double lo, double hi, bool whole, const std::string& what, const std::string& range) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0;
+        try {
+          size_t used = 0;
+          v = std::stod(text, &used);
+          if (used != text.size()) return "'" + text + "' is not " + what;
+        } catch (const std::exception&) {
+          return "'" + text + "' is not " + what;
+        }
+        if (!std::isfinite(v) || v < lo || v > hi || (whole && v != std::floor(v)))
+          return "'" + text + "' must be " + what + ", " + range;
+        return "";
+      },
+      "");
+}
+}  // namespace
 
-const CLI::Validator kPositiveSeconds(
-    [](std::string& text) -> std::string {
-      if (std::string why = kSeconds(text); !why.empty()) return why;
-      if (std::stod(text) <= 0) return "'" + text + "' must be more than 0 seconds";
-      return "";
-    },
-    "SECONDS");
+const CLI::Validator kSeconds = numberIn(0, 86400, false, "a number of seconds", "0 (no limit) to 86400 (a day)");
+const CLI::Validator kLimitSeconds = numberIn(0.001, 86400, false, "a number of seconds", "0.001 to 86400 (a day)");
+const CLI::Validator kPositiveSeconds =
+    numberIn(0.001, 3600, false, "a number of seconds", "0.001 to 3600 (an hour)");
+const CLI::Validator kStepCount =
+    numberIn(0, 1e15, true, "a whole number of statements", "0 (no limit) to 1000000000000000");
+const CLI::Validator kMebibytes = numberIn(0, 1 << 20, true, "a whole number of MiB", "0 (no limit) to 1048576 (1 TiB)");
+const CLI::Validator kBaud = numberIn(50, 4000000, true, "a serial speed", "50 to 4000000");
+const CLI::Validator kJobs = numberIn(1, 1024, true, "a number of programs at once", "1 to 1024");
+
+namespace {
 
 /// --speed: a factor from 1/64 to 64.
 const CLI::Validator kSpeed(
@@ -69,14 +78,16 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
                  "when the program uses it)");
   app.add_option("--max-steps", opts.maxSteps,
                  "Stop the program after N statements (0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kStepCount)
+      ->type_name("N");
   app.add_option("--timeout", opts.timeoutSeconds,
-                 "Stop the program after SECONDS of real time (0: no limit)")
-      ->check(kSeconds);
+                 "Stop the program after SECONDS of real time (0: no limit; at most a day)")
+      ->check(kSeconds)
+      ->type_name("SECONDS");
   app.add_option("--max-memory", opts.maxMemoryMiB,
                  "Stop the program when rb uses more than MIB mebibytes of memory (default 1024; "
                  "0: no limit)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kMebibytes)
       ->type_name("MIB");
   CLI::Option* port = app.add_option(
       "--port", opts.port,
@@ -87,10 +98,11 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
                "Drive a real robot on --port instead of the simulator (see man rb-run)")
       ->needs(port);
   app.add_option("--baud", opts.baud, "Serial speed for the real robot (default 9600)")
-      ->check(CLI::PositiveNumber);
+      ->check(kBaud);
   app.add_option("--robot-timeout", opts.robotTimeoutSeconds,
-                 "Seconds to wait for each answer of the real robot (default 2)")
-      ->check(kPositiveSeconds);
+                 "Seconds to wait for each answer of the real robot (default 2; at most an hour)")
+      ->check(kPositiveSeconds)
+      ->type_name("SECONDS");
   app.add_option("--events", opts.eventsFile,
                  "Feed keys, mouse and dialog answers from a script file (see man rb-run)");
   app.add_option("--keys", opts.keys, "Feed these keys, one after another, as if typed");

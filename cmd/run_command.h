@@ -47,6 +47,18 @@ struct RunOptions {
   bool quiet = false;
 };
 
+}  // namespace rb::cli
+
+namespace CLI {
+class Validator;
+}
+
+namespace rb::cli {
+
+/// How every command checks its numbers (run_command.cpp): seconds of a limit, of a robot's answer,
+/// statements, MiB, baud, programs at once; each with its range in the message.
+extern const CLI::Validator kSeconds, kLimitSeconds, kPositiveSeconds, kStepCount, kMebibytes, kBaud, kJobs;
+
 /// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.
 void addRunLimitOptions(CLI::App& app, RunOptions& opts);
 

@@ -13,6 +13,7 @@
 #include "grader.h"
 #include "png_writer.h"
 #include "report.h"
+#include "run_command.h"
 #include "test_job.h"
 
 namespace rb::cli {
@@ -170,7 +171,7 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
       ->type_name("FILE");
   test->add_option("-j,--jobs", opts->jobs, "Programs to run at once (default: one per core)")
       ->type_name("N")
-      ->check(CLI::PositiveNumber);
+      ->check(kJobs);
   test->add_option("--shard", opts->shard,
                    "Grade only every N-th program starting with the K-th (of the sorted list), to "
                    "spread a class over N CI jobs")
@@ -178,12 +179,14 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
   test->add_option("--seed", opts->seed,
                    "Seed of runs whose comments give none (default 1; an assignment lists its own)")
       ->type_name("N");
-  test->add_option("--max-steps", opts->maxSteps, "Stop each run after N statements (overrides the assignment)")
-      ->type_name("N");
+  test->add_option("--max-steps", opts->maxSteps,
+                   "Stop each run after N statements (overrides the assignment; 0: no limit)")
+      ->type_name("N")
+      ->check(kStepCount);
   test->add_option("--timeout", opts->timeout,
                    "Seconds each run may take (overrides the assignment and // timeout:)")
       ->type_name("SECONDS")
-      ->check(CLI::PositiveNumber);
+      ->check(kLimitSeconds);
   test->add_option("--format", opts->format, "Summary on standard output: text (a table) or json")
       ->check(CLI::IsMember({"text", "json"}));
   test->add_option("--junit", opts->junit, "Also write a JUnit XML report to FILE")->type_name("FILE");
