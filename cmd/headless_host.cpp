@@ -45,6 +45,8 @@ void HeadlessHost::armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) 
   watchdog_.arm(start_, limits, alarms, residentBytes);
 }
 
+uint64_t HeadlessHost::memoryInUse() { return residentBytes(); }
+
 void HeadlessHost::disarmWatchdog() {
   watchdog_.disarm();
   alarms_ = nullptr;

@@ -34,6 +34,7 @@ class HeadlessHost : public Host {
   /// terminal or pipe then ends too), memory when the process's resident memory, sampled every
   /// 10 ms, passes the limit.
   void armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) override;
+  uint64_t memoryInUse() override;
   void disarmWatchdog() override;
   /// When >= 0, `input` reads this file descriptor itself (instead of the stream), waiting with
   /// poll() so that --timeout ends a run that waits for a line nobody types.

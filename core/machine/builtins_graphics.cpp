@@ -99,11 +99,19 @@ Value edgeShape(Machine& m, Args& a) {
   return {};
 }
 
+/// The most corners one polygon statement draws.
+constexpr size_t kMaxPolygonCorners = 65536;
+
 /// The x, y pairs of an array of numbers (any shape, in storage order), rounded to pixels.
 std::vector<Point> arrayPairs(Args& a) {
   const ArrObj& arr = a[0].arr();
   if (arr.items.size() % 2 != 0 || arr.items.size() < 4)
     throw RuntimeError(a.describe(0) + " must hold at least two x, y pairs");
+  // Filling costs the corners times the screen's rows: a bound keeps one statement's time in
+  // proportion to what a time limit allows (a screen has 800 x 600 pixels).
+  if (arr.items.size() / 2 > kMaxPolygonCorners)
+    throw RuntimeError(a.describe(0) + " has " + std::to_string(arr.items.size() / 2) + " corners; at most " +
+                       std::to_string(kMaxPolygonCorners) + " are drawn in one statement");
   std::vector<Point> pts;
   pts.reserve(arr.items.size() / 2);
   for (size_t i = 0; i + 1 < arr.items.size(); i += 2) {

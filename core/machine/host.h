@@ -126,6 +126,10 @@ class Host {
   /// terminal's clipboard.
   virtual void clipboardChanged(std::string_view /*text*/) {}
 
+  /// Memory the run's process holds now, in bytes (0 when the host cannot tell): a `dim` of a big
+  /// array counts it against --max-memory before making the array.
+  virtual uint64_t memoryInUse() { return 0; }
+
   /// `rCommPort port` with port != 0: opens the link to a real robot. Hosts without a serial
   /// driver refuse.
   virtual std::unique_ptr<RobotLink> openRobot(int64_t port) {

@@ -45,6 +45,9 @@ Op selfForm(Op op) {
   }
 }
 
+/// Bytes of work in one statement past which it looks at the run's limits (time, memory) at once.
+constexpr size_t kLongWork = 1 << 16;
+
 [[noreturn]] RB_COLD void stringTooLong() {
   throw RuntimeError("string too long (more than " + std::to_string(kMaxStringLength) + " characters)");
 }
@@ -280,7 +283,13 @@ RB_ALWAYS_INLINE bool Interpreter::compare(Cmp cmp, const Value& a, const Value&
 }
 
 bool Interpreter::compareOthers(Cmp cmp, const Value& a, const Value& b, const Instr& in) const {
-  if (a.isStr() && b.isStr()) return holds(cmp, a.str().compare(b.str()), 0);
+  if (a.isStr() && b.isStr()) {
+    int order = a.str().compare(b.str());
+    // Comparing long strings is long work for one statement: the limits are looked at now, not
+    // only every 65,536 statements.
+    if (a.str().size() > kLongWork || b.str().size() > kLongWork) [[unlikely]] m_.checkAlarms();
+    return holds(cmp, order, 0);
+  }
   if (a.isUndef() || b.isUndef() || a.isArr() || b.isArr()) operandError(in);
   if (cmp == Cmp::Eq) return false;
   if (cmp == Cmp::Ne) return true;
@@ -608,11 +617,21 @@ void Interpreter::doDim(const Instr& in) {
     total *= static_cast<uint64_t>(n);
     dims.push_back(n);
   }
-  if (m_.memoryLimit && total * sizeof(Value) > m_.memoryLimit)
-    throw RuntimeError("out of memory: array '" + slotName(in.a) + "' would need " +
-                       std::to_string((total * sizeof(Value)) >> 20) + " MiB, more than the " +
-                       std::to_string(m_.memoryLimit >> 20) + " MiB of the --max-memory limit");
+  // Memory is counted before it is taken: this array and what the run holds already. What the
+  // run holds is asked of the host (it reads the process's memory) only for a big array.
+  uint64_t need = total * sizeof(Value);
+  bool big = need > kLongWork;
+  if (m_.memoryLimit) {
+    uint64_t held = big ? m_.host().memoryInUse() : 0;
+    if (need > m_.memoryLimit || held + need > m_.memoryLimit) {
+      std::string msg = "out of memory: array '" + slotName(in.a) + "' would need " + std::to_string(need >> 20) + " MiB";
+      if (need <= m_.memoryLimit) msg += " beside the " + std::to_string(held >> 20) + " MiB the run holds already";
+      throw RuntimeError(msg + ", more than the " + std::to_string(m_.memoryLimit >> 20) +
+                         " MiB of the --max-memory limit");
+    }
+  }
   bases_(in.a) = Value::array(std::move(dims));
+  if (big) m_.checkAlarms();  // making a big array takes time too
 }
 
 void Interpreter::doDataAppend(const Instr& in) {

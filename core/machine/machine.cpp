@@ -10,6 +10,9 @@ void Machine::print(std::string_view text, bool newline) {
   canvas_.print(line, newline);
   if (newline) line += '\n';
   host_.output(line);
+  // Printing is slow work (text drawn on the screen, output written): the limits are looked at
+  // after every print, not only every 65,536 statements.
+  checkAlarms();
 }
 
 std::string Machine::input(std::string_view prompt) {
@@ -56,6 +59,7 @@ void Machine::useCommPort(int64_t port) {
 void Machine::connectRobot(std::unique_ptr<RobotLink> link) {
   real_.reset();
   real_ = std::make_unique<RealRobot>(std::move(link));
+  real_->betweenCommands = [this] { checkAlarms(); };
 }
 
 void Machine::emit(RobotEvent::Kind kind, std::string_view command, std::string args,

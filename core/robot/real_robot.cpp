@@ -63,6 +63,7 @@ void RealRobot::sendSplit(const char* what, double amount, uint8_t positiveCode,
     send(code, static_cast<uint8_t>(part));
     apply(static_cast<double>(sign * part));
     total -= part;
+    if (total > 0 && betweenCommands) betweenCommands();
   } while (total > 0);
 }
 

@@ -4,6 +4,7 @@
 // replies. The robot's pose is dead-reckoned from the commands sent, so traces and live views
 // can show where it should be. No serial port here: drivers/ opens one and hands over a link.
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -26,6 +27,9 @@ class RealRobot final : public Robot {
  public:
   /// Takes over the link; destroying the RealRobot closes it (rCommPort 0, errors, exit).
   explicit RealRobot(std::unique_ptr<RobotLink> link);
+  /// Called between the commands of one long move or turn (each waits for the robot's answer):
+  /// the run's limits end a statement that would otherwise wait command after command.
+  std::function<void()> betweenCommands;
 
   /// The port, for messages.
   std::string name() const { return link_->name(); }
