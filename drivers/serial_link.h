@@ -27,6 +27,7 @@ class SerialLink : public RobotLink {
   /// device goes away; the port is closed then, and every later command fails at once.
   RobotReply transact(uint8_t code, uint8_t param) override;
   std::string name() const override { return port_.path(); }
+  void setWhileWaiting(std::function<void()> hook) override { port_.whileWaiting = std::move(hook); }
 
  private:
   [[noreturn]] void fault(const std::string& message);

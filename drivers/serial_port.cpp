@@ -11,6 +11,7 @@
 #include <sys/sysmacros.h>
 #endif
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -68,6 +69,9 @@ int msUntil(Deadline deadline) {
   if (left <= 0) return 0;
   return static_cast<int>(std::min(std::ceil(left), 1e9));
 }
+
+/// The longest poll() while a whileWaiting hook is set.
+constexpr int kWaitSliceMs = 50;
 
 bool hangupErrno(int e) { return e == EIO || e == ENXIO || e == ENODEV || e == EPIPE; }
 
@@ -172,6 +176,11 @@ void SerialPort::discardInput() {
   if (fd_ >= 0) ::tcflush(fd_, TCIFLUSH);  // a failure here shows up as a hang-up on write
 }
 
+int SerialPort::waitSlice(Deadline deadline) const {
+  int ms = msUntil(deadline);
+  return whileWaiting ? std::min(ms, kWaitSliceMs) : ms;
+}
+
 IoStatus SerialPort::write(const uint8_t* data, size_t n, Deadline deadline) {
   size_t done = 0;
   while (done < n) {
@@ -186,12 +195,16 @@ IoStatus SerialPort::write(const uint8_t* data, size_t n, Deadline deadline) {
       fail("cannot write to", errno);
     }
     pollfd p{fd_, POLLOUT, 0};
-    int r = ::poll(&p, 1, msUntil(deadline));
+    int r = ::poll(&p, 1, waitSlice(deadline));
     if (r < 0) {
       if (errno == EINTR) continue;
       fail("cannot wait for", errno);
     }
-    if (r == 0) return IoStatus::TimedOut;
+    if (r == 0) {
+      if (msUntil(deadline) == 0) return IoStatus::TimedOut;
+      if (whileWaiting) whileWaiting();
+      continue;
+    }
     if (p.revents & (POLLHUP | POLLERR | POLLNVAL)) return IoStatus::HungUp;
   }
   return IoStatus::Done;
@@ -201,12 +214,16 @@ IoStatus SerialPort::readAtLeast(std::vector<uint8_t>& into, size_t want, Deadli
   uint8_t buf[64];
   while (into.size() < want) {
     pollfd p{fd_, POLLIN, 0};
-    int r = ::poll(&p, 1, msUntil(deadline));
+    int r = ::poll(&p, 1, waitSlice(deadline));
     if (r < 0) {
       if (errno == EINTR) continue;
       fail("cannot wait for", errno);
     }
-    if (r == 0) return IoStatus::TimedOut;
+    if (r == 0) {
+      if (msUntil(deadline) == 0) return IoStatus::TimedOut;
+      if (whileWaiting) whileWaiting();
+      continue;
+    }
     if (p.revents & POLLIN) {
       ssize_t n = ::read(fd_, buf, sizeof buf);
       if (n > 0) {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,9 +56,14 @@ class SerialPort {
   /// Appends whatever bytes are already waiting, without waiting for more, until `into` holds
   /// `limit` bytes (a device that floods the line is not read forever).
   void readWaiting(std::vector<uint8_t>& into, size_t limit);
+  /// When set, write() and readAtLeast() wait in slices of at most 50 ms and call it between
+  /// them; it may throw to end the wait (the run's time limit).
+  std::function<void()> whileWaiting;
 
  private:
   [[noreturn]] void fail(const std::string& what, int error);
+  /// How long the next poll() may wait: until the deadline, or one slice with a whileWaiting hook.
+  int waitSlice(Deadline deadline) const;
 
   std::string path_;
   int fd_ = -1;

@@ -58,6 +58,7 @@ void Machine::useCommPort(int64_t port) {
 
 void Machine::connectRobot(std::unique_ptr<RobotLink> link) {
   real_.reset();
+  link->setWhileWaiting([this] { checkAlarms(); });
   real_ = std::make_unique<RealRobot>(std::move(link));
   real_->betweenCommands = [this] { checkAlarms(); };
 }

@@ -3,6 +3,7 @@
 // robot's reply. drivers/ implements it over a serial port; tests implement it in memory.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace rb {
@@ -25,6 +26,9 @@ class RobotLink {
   virtual RobotReply transact(uint8_t code, uint8_t param) = 0;
   /// The port, for messages ("/dev/rfcomm0").
   virtual std::string name() const = 0;
+  /// Called at least every 50 ms while transact() waits for the robot (a slow robot, a long
+  /// --robot-timeout): the run's limits end the wait by throwing from it.
+  virtual void setWhileWaiting(std::function<void()> hook) { (void)hook; }
 };
 
 }  // namespace rb

@@ -201,6 +201,21 @@ def case_slow_answer(tmp):
     expect(code == 0 and out.count("\n") == 4, f"a slow but timely robot works: exit {code}", err)
 
 
+def case_timeout_while_waiting(tmp):
+    # The run's --timeout ends a wait for a slow robot, and a long turn split into commands
+    # (rTurn 10000: 40 of them, 1.5 s each), rather than after the robot's answer or the turn.
+    prog = os.path.join(tmp, "turn.bas")
+    with open(prog, "w") as f:
+        f.write("rLocate 400, 300\nrTurn 10000\nprint \"turned\"\n")
+    with Emulator(tmp, "--latency", "1500") as robot:
+        code, out, err, took = rb("run", "--real", "--port", robot.link, "--robot-timeout", "3",
+                                  "--timeout", "2", prog)
+    expect(code == 70 and "turn.bas:2:1: error: stopped after 2 seconds (the --timeout limit)" in err,
+           f"exit {code}", err)
+    expect("turned" not in out, "the turn did not finish", out)
+    expect(took < 2.5, f"took {took:.2f} s, the limit is 2 s")
+
+
 def case_garbled(tmp):
     fault(tmp, ["--garble-every", "3"], "robot on {port} sent a malformed reply", 3)
 
