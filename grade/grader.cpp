@@ -626,6 +626,19 @@ ClassResult Grader::run() {
         r.reason = specs_[p]->nontest ? "not a test (// nontest: a file others include)" : *specs_[p]->skip;
         continue;
       }
+      if (!specs_[p]->problems.empty()) {
+        // Malformed expectations cannot be met: the program is not run (a `// timeout:` that
+        // cannot be read must not leave a runaway to the default limit).
+        r.verdict = "fail";
+        r.reason = specs_[p]->problems.front() + " (the program was not run)";
+        for (const std::string& problem : specs_[p]->problems) {
+          CheckResult c;
+          c.name = "comments";
+          c.message = problem;
+          r.checks.push_back(c);
+        }
+        continue;
+      }
       r.notes = commentArgs(*specs_[p], programs_[p]).notes;
       tasks.push_back(makeTask(p, programs_[p], 0, opts_.seed, false, &*specs_[p]));
       pending_[p] = 1;

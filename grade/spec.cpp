@@ -184,7 +184,8 @@ void parseComments(const std::string& text, const std::string& name, bool main, 
         if (number == 1) spec.nontest = true;
       } else if (key == "timeout") {
         if (std::optional<double> t = toDouble(value); t && *t > 0) spec.timeout = *t, spec.timeoutSet = true;
-        else spec.problems.push_back(where + "// timeout wants a number of seconds, not '" + value + "'");
+        else spec.problems.push_back(where + "// timeout wants a number of seconds above 0, not '" + value + "'" +
+                                     (t && *t == 0 ? " (a comment may not switch the time limit off)" : ""));
       } else if (key == "exit") {
         if (std::optional<int> code = toInt(value)) spec.exit = *code;
         else spec.problems.push_back(where + "// exit wants a whole number, not '" + value + "'");
