@@ -144,6 +144,10 @@ std::string_view withoutComment(std::string_view text) {
   return text;
 }
 
+[[noreturn]] void tooManySteps(int line) {
+  throw ScriptError(line, "more than " + std::to_string(kMaxScriptSteps) + " steps: a script holds at most that many");
+}
+
 void parseLine(std::string_view text, int line, std::vector<ScriptStep>& out) {
   text = withoutComment(text);
   if (text.find_first_not_of(" \t") == std::string_view::npos) return;
@@ -233,6 +237,7 @@ std::vector<ScriptStep> parseEventScript(std::string_view text) {
     if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
     size_t first = l.find_first_not_of(" \t");
     if (first != std::string_view::npos) parseLine(l.substr(first), line, steps);
+    if (steps.size() > kMaxScriptSteps) tooManySteps(line);
     if (nl == std::string_view::npos) break;
     pos = nl + 1;
   }
@@ -270,6 +275,7 @@ std::vector<ScriptStep> parseKeyText(std::string_view keys, int line) {
       s.key = *code;
       i += len;
     }
+    if (steps.size() >= kMaxScriptSteps) tooManySteps(line);
     steps.push_back(std::move(s));
   }
   return steps;

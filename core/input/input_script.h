@@ -56,6 +56,10 @@ struct ScriptStep {
   int line = 0;      ///< its line in the events file; 0 when it came from --keys
 };
 
+/// The most steps a script holds (a key of `keys` text is one): far more than a program's test
+/// needs, and a bound on the memory an events file takes (about 100 bytes a step).
+constexpr size_t kMaxScriptSteps = 100'000;
+
 /// A malformed script; `line` is 0 for --keys text.
 class ScriptError : public std::runtime_error {
  public:

@@ -152,6 +152,12 @@ TEST_CASE("the events format: errors name the line", "[input]") {
   CHECK(lineOf("key h h").rfind("1: unexpected 'h' after key", 0) == 0);
   CHECK(lineOf("msgbox cancel").rfind("1: msgbox: the only answer is ok", 0) == 0);
   CHECK(lineOf("button").rfind("1: button: expected the name", 0) == 0);
+  // A script holds at most kMaxScriptSteps steps, on one `keys` line or over many lines.
+  CHECK(lineOf("wait 1\nkeys " + std::string(kMaxScriptSteps + 1, 'a')).rfind("2: more than 100000 steps", 0) == 0);
+  CHECK(parseEventScript("keys " + std::string(kMaxScriptSteps, 'a')).size() == kMaxScriptSteps);
+  std::string lines;
+  for (size_t i = 0; i <= kMaxScriptSteps; ++i) lines += "key a\n";
+  CHECK(lineOf(lines).rfind("100001: more than 100000 steps", 0) == 0);
 }
 
 TEST_CASE("keys text: characters, named keys, steps in braces", "[input]") {
