@@ -219,6 +219,11 @@ int FontRenderer::glyphs(const FontKey& key, std::string_view text, std::vector<
     if (!g) [[unlikely]] impl_->load(s, key, ch);
     if (i < out.size()) out[i] = &*g;
     width += g->advance;
+    // Past kMaxTextWidth the rest of a long string is off every screen: its width stays there.
+    if (width >= kMaxTextWidth) [[unlikely]] {
+      for (size_t j = i + 1; j < out.size(); ++j) out[j] = &glyph(key, static_cast<unsigned char>(text[j]));
+      return kMaxTextWidth;
+    }
   }
   return width;
 }

@@ -92,9 +92,12 @@ class FontRenderer {
   const Glyph& glyph(const FontKey& key, unsigned char ch);
   /// The glyphs of the first `keep` characters of `text` (at most), in `out` (replacing what it
   /// held): one font lookup for the whole string. The glyphs live as long as the renderer.
-  /// Returns the width of the whole text, the sum of the advances.
+  /// Returns the width of the whole text, the sum of the advances, at most kMaxTextWidth.
   int glyphs(const FontKey& key, std::string_view text, std::vector<const Glyph*>& out, size_t keep);
-  /// The width of a string: the sum of its advances.
+  /// The widest a text is measured (pixels): far past any screen, and far from int's limit
+  /// (a 64-million-character string at 200 points would overflow it).
+  static constexpr int kMaxTextWidth = 1 << 24;
+  /// The width of a string: the sum of its advances, at most kMaxTextWidth.
   int width(const FontKey& key, std::string_view text);
 
  private:

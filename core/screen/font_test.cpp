@@ -32,6 +32,20 @@ TEST_CASE("fonts: the print font is Courier New's twin at 10 points, 8 x 15 pixe
   CHECK(f.width(print, "Hello, World") == 96);
 }
 
+TEST_CASE("fonts: a text's width stops at kMaxTextWidth, however long the text", "[font]") {
+  FontRenderer f;
+  FontKey big;
+  big.pixelSize = pixelSizeForPoints(200);
+  // 60 million characters of about 150 pixels each would be 9e9 pixels, past int's limit.
+  const std::string text(60'000'000, 'W');
+  std::vector<const Glyph*> kept;
+  CHECK(f.glyphs(big, text, kept, 8) == FontRenderer::kMaxTextWidth);
+  REQUIRE(kept.size() == 8);
+  for (const Glyph* g : kept) CHECK(g == &f.glyph(big, 'W'));
+  const FontKey print;
+  CHECK(f.width(print, std::string(FontRenderer::kMaxTextWidth / 8 - 1, 'a')) == FontRenderer::kMaxTextWidth - 8);
+}
+
 TEST_CASE("fonts: glyphs are monochrome bitmaps on the baseline", "[font]") {
   FontRenderer f;
   const FontKey k;
