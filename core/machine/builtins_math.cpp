@@ -106,8 +106,8 @@ Value mathWithin(Machine&, Args& a) {
   return Value::boolean(x >= a.num(1) && x <= a.num(2));
 }
 Value mathPi(Machine&, Args& a) { return Value::number(std::numbers::pi * a.numOr(0, 1.0)); }
-Value mathRtoD(Machine&, Args& a) { return numberResult(a.num(0) * 180.0 / std::numbers::pi); }
-Value mathDtoR(Machine&, Args& a) { return numberResult(a.num(0) * std::numbers::pi / 180.0); }
+Value mathRtoD(Machine&, Args& a) { return numberResult(a.num(0) * (180.0 / std::numbers::pi)); }
+Value mathDtoR(Machine&, Args& a) { return numberResult(a.num(0) * (std::numbers::pi / 180.0)); }
 Value mathPolarA(Machine&, Args& a) { return numberResult(std::atan2(a.num(1), a.num(0))); }
 Value mathPolarR(Machine&, Args& a) { return numberResult(std::hypot(a.num(0), a.num(1))); }
 Value mathCartX(Machine&, Args& a) { return numberResult(a.num(0) * std::cos(a.num(1))); }

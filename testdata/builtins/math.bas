@@ -16,3 +16,5 @@ print pi(), " ", pi(2) // expect: 3.14159265358979 6.28318530717959
 print rtod(pi()), " ", dtor(180) // expect: 180 3.14159265358979
 print polarR(3, 4), " ", rtod(polarA(0, 1)) // expect: 5 90
 print round(cartX(2, pi())), " ", round(cartY(2, pi() / 2)) // expect: -2 2
+// Near the largest number: dtor shrinks it (its result is finite), rtod's result is too large.
+print dtor(1e308) // expect: 1.74532925199433e+306

@@ -1,0 +1,1 @@
+print rtod(1e307) // expect-runtime-error: the result is too large
