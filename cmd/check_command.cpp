@@ -122,7 +122,7 @@ void addCheckCommand(CLI::App& app, int& exitCode, bool withOptions) {
                     "Colour the text: auto (on a terminal, unless NO_COLOR is set), always or never")
       ->check(CLI::IsMember({"auto", "always", "never"}));
   check->add_option("--max-errors", opts->maxErrors,
-                    "Stop printing after this many errors (text; 0: no limit; default 20)");
+                    "Stop after showing this many errors, in every format (0: no limit; default 20)");
   check->add_flag("--werror", opts->werror, "Treat warnings as errors (exit 65 when there are any)");
   check->add_option("--target", opts->target,
                     "Also warn about what this robot cannot do: rb9 (forward moves above 250, "

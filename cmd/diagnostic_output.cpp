@@ -50,6 +50,7 @@ constexpr Rule kRules[] = {
     {"rb-include-depth", "#include nested more than 32 files deep."},
     {"rb-include-not-found", "An #include file that does not exist."},
     {"rb-include-refused", "An #include file outside the program's folder and the library folders."},
+    {"rb-too-many-errors", "More than 10,000 errors: the rest of the program is not checked."},
     {"rb-include-unreadable", "An #include file that exists but cannot be read."},
     {"rb-unclosed-if", "An if without endif: the block runs to the end of the file or sub."},
     {"rb-unassigned-variable", "A variable that is read but never assigned."},
@@ -212,14 +213,15 @@ void DiagnosticReport::addUnreadable(const std::string& file, const std::string&
 void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const std::string& fileName) {
   if (d.severity == Severity::Error) ++errors_;
   if (d.severity == Severity::Warning) ++warnings_;
+  // --max-errors holds for every format: what follows the last error shown is counted, not shown.
+  if (truncated_) return;
+  if (opts_.maxErrors && d.severity == Severity::Error && shownErrors_ == opts_.maxErrors) {
+    truncated_ = true;
+    return;
+  }
+  if (d.severity == Severity::Error) ++shownErrors_;
   switch (opts_.format) {
     case DiagFormat::Text: {
-      if (truncated_) return;
-      if (opts_.maxErrors && d.severity == Severity::Error && shownErrors_ == opts_.maxErrors) {
-        truncated_ = true;
-        return;
-      }
-      if (d.severity == Severity::Error) ++shownErrors_;
       std::string text = formatDiagnostic(*sources, d, DiagnosticStyle{opts_.color});
       std::fwrite(text.data(), 1, text.size(), out_);
       return;
@@ -307,16 +309,22 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
 
 void DiagnosticReport::finish() {
   std::string text;
+  const std::string stopped = truncated_ ? "stopped after " + std::to_string(opts_.maxErrors) +
+                                               " errors (--max-errors; --max-errors 0 shows them all)"
+                                         : "";
   switch (opts_.format) {
     case DiagFormat::Text:
-      if (truncated_)
-        text += "stopped after " + std::to_string(opts_.maxErrors) +
-                " errors (--max-errors; --max-errors 0 shows them all)\n";
+      if (truncated_) text += stopped + "\n";
       if (opts_.summary && (errors_ || warnings_)) text += countSummary(errors_, warnings_) + "\n";
       break;
     case DiagFormat::Github:
+      if (truncated_) text += "::notice title=rb check::" + githubEscape(stopped, false) + "\n";
       break;
     case DiagFormat::Json:
+      // gcc's shape has no place for it but a diagnostic: a note without a location.
+      if (truncated_)
+        items_.push_back(json{{"kind", "note"}, {"message", stopped}, {"locations", json::array()},
+                              {"children", json::array()}, {"column-origin", 1}, {"escape-source", false}});
       text = items_.dump(2) + "\n";
       break;
     case DiagFormat::Sarif: {
@@ -327,7 +335,12 @@ void DiagnosticReport::finish() {
 #ifdef RB_VERSION
       driver["version"] = RB_VERSION;
 #endif
-      log["runs"] = json::array({json{{"tool", {{"driver", driver}}}, {"results", items_}}});
+      json run{{"tool", {{"driver", driver}}}, {"results", items_}};
+      if (truncated_)
+        run["invocations"] = json::array({json{
+            {"executionSuccessful", true},
+            {"toolExecutionNotifications", json::array({json{{"level", "note"}, {"message", {{"text", stopped}}}}})}}});
+      log["runs"] = json::array({run});
       text = log.dump(2) + "\n";
       break;
     }

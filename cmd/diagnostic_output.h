@@ -26,7 +26,7 @@ bool useColor(const std::string& mode, std::FILE* out);
 struct DiagOutputOptions {
   DiagFormat format = DiagFormat::Text;
   bool color = false;
-  size_t maxErrors = 20;  ///< text: stop printing after this many errors (0: no limit)
+  size_t maxErrors = 20;  ///< every format: stop showing diagnostics after this many errors (0: no limit)
   bool summary = true;    ///< text: end with "2 errors, 1 warning"
 };
 

@@ -17,6 +17,20 @@ Diagnostic& DiagnosticList::note(SourceLoc loc, std::string message) {
 }
 
 Diagnostic& DiagnosticList::add(Diagnostic d) {
+  if (capped_) {
+    dropped_ = std::move(d);
+    return dropped_;
+  }
+  if (d.severity == Severity::Error && errorCount_ >= kMaxErrors) {
+    capped_ = true;
+    ++errorCount_;
+    items_.push_back({Severity::Error, d.loc,
+                      "too many errors: rb stops checking after " + std::to_string(kMaxErrors) +
+                          "; fix the first ones and check again",
+                      "rb-too-many-errors"});
+    dropped_ = std::move(d);
+    return dropped_;
+  }
   if (d.severity == Severity::Error) {
     ++errorCount_;
     errorLines_.insert((uint64_t(d.loc.file) << 32) | d.loc.line);

@@ -54,6 +54,13 @@ class DiagnosticList {
   Diagnostic& note(SourceLoc loc, std::string message);
   Diagnostic& add(Diagnostic d);
 
+  /// The most errors a list keeps. The one past it becomes "too many errors" (rule
+  /// rb-too-many-errors) and later diagnostics are dropped: the parser and the compiler stop at
+  /// capped(), so a file of a million broken lines is rejected in a moment, in every command.
+  static constexpr size_t kMaxErrors = 10'000;
+  /// True once kMaxErrors errors are in and "too many errors" was added.
+  bool capped() const { return capped_; }
+
   bool hasErrors() const { return errorCount_ > 0; }
   /// True when an error was already reported on that line (so a parser can stay quiet about
   /// the consequences of a lexical error).
@@ -71,6 +78,8 @@ class DiagnosticList {
   std::unordered_set<uint64_t> errorLines_;
   size_t errorCount_ = 0;
   size_t warningCount_ = 0;
+  bool capped_ = false;
+  Diagnostic dropped_;  ///< what add() returns for a diagnostic past the cap
 };
 
 const char* severityName(Severity s);

@@ -44,6 +44,7 @@ void Compiler::run() {
       continue;
     }
     statement(*s, true);
+    if (diags_.capped()) return;  // too many errors: the rest is not checked
   }
   if (open) endSub(SourceLoc{});
   closeBlocksAtEnd(SourceLoc{});

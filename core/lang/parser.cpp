@@ -138,7 +138,7 @@ class Parser {
       }
       if (!out.empty()) onLine(out);
       out.clear();
-      if (cur().kind == Tok::Eof) break;
+      if (cur().kind == Tok::Eof || diags_.capped()) break;
     }
   }
 

@@ -79,7 +79,7 @@ def run_case(case, rb, source, work):
         start = time.monotonic()
         silent_read, silent_write = os.pipe() if case.get("stdin", [""])[0] == "silent" else (None, None)
         try:
-            out_file = open(case["stdout-file"][0], "wb") if "stdout-file" in case else None
+            out_file = open(subst(case["stdout-file"][0]), "wb") if "stdout-file" in case else None
             r = subprocess.run(argv, cwd=work, stdout=out_file or subprocess.PIPE,
                                stderr=subprocess.PIPE, timeout=timeout,
                                stdin=silent_read if silent_read is not None else subprocess.DEVNULL)

@@ -87,6 +87,11 @@ def check_gcc_json(doc, problems):
     if not isinstance(doc, list):
         problems.append("json: not an array")
         return 0
+    stopped = STOPPED.match(doc[-1].get("message", "")) if doc else None
+    if stopped:  # --max-errors' note: the last item, a note without a location or a rule
+        if doc[-1].get("kind") != "note" or doc[-1].get("locations"):
+            problems.append("json: the --max-errors note is not a note without a location")
+        doc = doc[:-1]
     for i, d in enumerate(doc):
         where = f"json[{i}]"
         for key in ("kind", "message", "locations", "children"):
@@ -116,6 +121,10 @@ def check_gcc_json(doc, problems):
     return len(doc)
 
 
+# What every format says when --max-errors stops it.
+STOPPED = re.compile(r"stopped after \d+ errors \(--max-errors; --max-errors 0 shows them all\)$")
+
+
 def check_sarif(doc, problems):
     if doc.get("version") != "2.1.0":
         problems.append("sarif: version is not 2.1.0")
@@ -136,6 +145,12 @@ def check_sarif(doc, problems):
     for r in rules:
         if not r.get("shortDescription", {}).get("text"):
             problems.append(f"sarif: rule {r.get('id')} has no shortDescription.text")
+    for inv in runs[0].get("invocations", []):
+        if not isinstance(inv.get("executionSuccessful"), bool):
+            problems.append("sarif: an invocation without executionSuccessful")
+        for n in inv.get("toolExecutionNotifications", []):
+            if not STOPPED.match(n.get("message", {}).get("text", "")):
+                problems.append(f"sarif: unexpected notification {n!r}")
     results = runs[0].get("results")
     if not isinstance(results, list):
         problems.append("sarif: no results")
@@ -173,12 +188,20 @@ def structure(rb, files):
         name = os.path.relpath(os.path.abspath(path), HERE)
         text = run(rb, f"rb check --format json {shlex.quote(name)}")
         body, _, code = text.rpartition("[exit ")
-        n_json = check_gcc_json(json.loads(body), problems)
+        doc = json.loads(body)
+        n_json = check_gcc_json(doc, problems)
+        json_stopped = bool(doc) and bool(STOPPED.match(doc[-1].get("message", "")))
         text = run(rb, f"rb check --format sarif {shlex.quote(name)}")
         body, _, _ = text.rpartition("[exit ")
-        n_sarif = check_sarif(json.loads(body), problems)
+        sarif = json.loads(body)
+        n_sarif = check_sarif(sarif, problems)
+        sarif_stopped = any(inv.get("toolExecutionNotifications") for inv in sarif["runs"][0].get("invocations", []))
+        if json_stopped != sarif_stopped:
+            problems.append(f"{name}: --max-errors stopped the JSON ({json_stopped}) and SARIF ({sarif_stopped}) differently")
         text = run(rb, f"rb check --format github {shlex.quote(name)}")
         lines = text.splitlines()[:-1]
+        if lines and lines[-1].startswith("::notice title=rb check::") and STOPPED.match(lines[-1].split("::")[-1]):
+            lines = lines[:-1]  # --max-errors' notice
         for line in lines:
             if not re.fullmatch(r"::(error|warning|notice) file=[^,:]+(,line=\d+,col=\d+(,endColumn=\d+)?)?"
                                 r"(,title=rb-[a-z0-9-]+)?::.+", line):
