@@ -39,8 +39,40 @@ bool MessageReader::readLine(std::string& line, bool& tooLong) {
   return false;  // the input ended before the line did
 }
 
+bool MessageReader::skipBody() {
+  char buf[1 << 14];
+  while (skip_ > 0) {
+    in_.read(buf, static_cast<std::streamsize>(skip_ < sizeof buf ? skip_ : sizeof buf));
+    if (in_.gcount() == 0) return false;
+    skip_ -= static_cast<unsigned long long>(in_.gcount());
+  }
+  return true;
+}
+
+bool MessageReader::findHeader() {
+  std::string line;
+  bool tooLong = false;
+  while (readLine(line, tooLong)) {
+    // A header starts where a body it did not know the length of ended: anywhere in the line.
+    size_t at = lowerAscii(line).find("content-length:");
+    if (!tooLong && at != std::string::npos) {
+      firstLine_ = line.substr(at);
+      return true;
+    }
+    line.clear();
+    tooLong = false;
+  }
+  return false;
+}
+
 MessageReader::Result MessageReader::next() {
   Result r;
+  if ((skip_ > 0 && !skipBody()) || (resync_ && !findHeader())) {
+    skip_ = 0;
+    r.status = Status::End;
+    return r;
+  }
+  resync_ = false;
   for (;;) {
     // One header block: lines up to an empty one. Empty lines before a block are skipped.
     std::string line;
@@ -51,7 +83,10 @@ MessageReader::Result MessageReader::next() {
     int lines = 0;
     bool started = false;
     for (;;) {
-      if (!readLine(line, tooLong)) {
+      if (!firstLine_.empty()) {
+        line = std::move(firstLine_);
+        firstLine_.clear();
+      } else if (!readLine(line, tooLong)) {
         r.status = Status::End;
         return r;
       }
@@ -80,23 +115,16 @@ MessageReader::Result MessageReader::next() {
     }
     if (!haveLength || badLength) {
       r.status = Status::BadHeader;
+      resync_ = true;  // whatever follows belongs to no message: find the next header
       r.why = !haveLength ? "a message header without Content-Length"
                           : "a malformed message header";
       return r;
     }
     if (length > maxBytes_) {
-      // Read the body away without keeping it, so the next message is found.
-      char buf[1 << 14];
-      unsigned long long left = length;
-      while (left > 0 && in_) {
-        in_.read(buf, static_cast<std::streamsize>(left < sizeof buf ? left : sizeof buf));
-        left -= static_cast<unsigned long long>(in_.gcount());
-        if (in_.gcount() == 0) break;
-      }
-      if (left > 0) {
-        r.status = Status::End;
-        return r;
-      }
+      // Said at once; the body is read away by the next call, so the next message is found. A
+      // length past kMaxSkippedBytes is not believed: the next header line is looked for.
+      if (length <= kMaxSkippedBytes) skip_ = length;
+      else resync_ = true;
       r.status = Status::TooLarge;
       r.why = "a message of " + std::to_string(length) + " bytes (the limit is " +
               std::to_string(maxBytes_) + ")";

@@ -13,6 +13,10 @@ namespace rb::lsp {
 
 /// The largest message body accepted (a whole document in a didOpen is far smaller).
 constexpr size_t kMaxMessageBytes = 32u << 20;
+/// The largest Content-Length believed: a body above the cap but within this is read and dropped
+/// (so the next message is found); beyond it the header is a lie, and the reader looks for the
+/// next `Content-Length:` line instead of waiting for exabytes.
+constexpr unsigned long long kMaxSkippedBytes = 1ull << 30;
 
 class MessageReader {
  public:
@@ -20,7 +24,9 @@ class MessageReader {
     Ok,         ///< `body` holds one message
     End,        ///< the input ended (cleanly or in the middle of a message)
     BadHeader,  ///< a header block without a usable Content-Length (it was skipped)
-    TooLarge,   ///< Content-Length above the cap (the body was read and dropped)
+    /// Content-Length above the cap: said at once; the body is read and dropped by the next
+    /// call (or, past kMaxSkippedBytes, the next header line is looked for)
+    TooLarge,
   };
   struct Result {
     Status status = Status::End;
@@ -38,8 +44,16 @@ class MessageReader {
   /// One header line without its line end; false at the end of input.
   bool readLine(std::string& line, bool& tooLong);
 
+  /// Reads away a dropped body; false when the input ended first.
+  bool skipBody();
+  /// Reads lines up to the next one that holds `Content-Length:`; false at the end.
+  bool findHeader();
+
   std::istream& in_;
   size_t maxBytes_;
+  unsigned long long skip_ = 0;  ///< bytes of a dropped body still to read away
+  bool resync_ = false;          ///< a header lied: look for the next Content-Length line
+  std::string firstLine_;        ///< the header line findHeader() found, read first
 };
 
 /// Writes one message with its header and flushes.

@@ -127,7 +127,7 @@ def substitute(value, mapping):
 
 def bad_input(rb):
     """Garbage, a request before initialize, a header without a length, a body that is not JSON
-    and a declared length far above the cap: every one gets an error reply (or is skipped), and
+    and declared lengths far above the cap (2^63 too): every one gets an error reply (or is skipped), and
     when the input closes without shutdown the server exits 1 instead of hanging."""
     import random
     rng = random.Random(11)
@@ -138,6 +138,9 @@ def bad_input(rb):
             frame({"jsonrpc": "2.0", "id": 2, "method": "initialize", "params": {"capabilities": {}}}) +
             frame({"jsonrpc": "2.0", "id": 3, "method": "no/such/method", "params": {}}) +
             b"Content-Length: 40000000\r\n\r\n" + b"x" * 40000000 +
+            # 2^63 bytes: not waited for; the next message is still answered.
+            b"Content-Length: 9223372036854775808\r\n\r\n{}" +
+            frame({"jsonrpc": "2.0", "id": 5, "method": "no/such/method", "params": {}}) +
             frame({"jsonrpc": "2.0", "id": 4, "method": "shutdown"}) +
             junk + b"\r\n\r\n")
     proc = subprocess.run([rb, "lsp"], input=data, capture_output=True, timeout=60)
@@ -150,7 +153,8 @@ def bad_input(rb):
         replies.append(json.loads(rest[:n]))
         out = rest[n:]
     codes = [(r.get("id"), r.get("error", {}).get("code")) for r in replies]
-    want = [(1, -32002), (None, -32700), (None, -32700), (2, None), (3, -32601), (None, -32600), (4, None)]
+    want = [(1, -32002), (None, -32700), (None, -32700), (2, None), (3, -32601), (None, -32600),
+            (None, -32600), (5, -32601), (4, None)]
     check(codes[:len(want)] == want, f"replies to bad input: {codes}")
     check(proc.returncode == 1, f"exit status {proc.returncode} after the input ended without exit")
 
