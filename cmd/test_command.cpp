@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -138,6 +139,14 @@ int executeTest(const TestOptions& opts) {
   }
 
   grade::ClassResult result = grade::gradeClass(g);
+  if (result.interruptedBy) {
+    // Ctrl-C (or kill): the programs were ended and the temporary files removed; no report, and
+    // rb ends by the same signal, as the shell expects.
+    std::fflush(stdout);
+    std::signal(result.interruptedBy, SIG_DFL);
+    std::raise(result.interruptedBy);
+    return 128 + result.interruptedBy;
+  }
   if (result.fatalCode) {
     std::fprintf(stderr, "rb test: %s\n", result.fatal.c_str());
     return result.fatalCode;

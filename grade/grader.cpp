@@ -116,6 +116,13 @@ std::string number(double v) {
 class Grader {
  public:
   explicit Grader(const GradeOptions& o) : opts_(o) {}
+  Grader(const Grader&) = delete;
+  Grader& operator=(const Grader&) = delete;
+  /// The temporary folder goes whichever way grading ended.
+  ~Grader() {
+    std::error_code ec;
+    if (!temp_.empty()) fs::remove_all(temp_, ec);
+  }
 
   ClassResult run();
 
@@ -559,7 +566,9 @@ ClassResult Grader::run() {
       jobs.push_back(tasks.back().job);
     }
     refs_.solution.resize(tasks.size());
-    runJobs(jobs, parallel, [&](size_t i, const JobOutcome& o) { refs_.solution[i] = collect(tasks[i], o); });
+    result_.interruptedBy =
+        runJobs(jobs, parallel, [&](size_t i, const JobOutcome& o) { refs_.solution[i] = collect(tasks[i], o); });
+    if (result_.interruptedBy) return result_;
     for (const RunOutcome& s : refs_.solution) {
       std::string why = unrunnable(s);
       if (why.empty() && s.record) why = s.record->worldError;
@@ -652,11 +661,12 @@ ClassResult Grader::run() {
   }
   std::vector<Job> jobs;
   for (const Task& t : tasks) jobs.push_back(t.job);
-  runJobs(jobs, parallel, [&](size_t i, const JobOutcome& o) {
+  result_.interruptedBy = runJobs(jobs, parallel, [&](size_t i, const JobOutcome& o) {
     const Task& t = tasks[i];
     runs_[t.program][t.seedIndex] = collect(t, o);
     if (--pending_[t.program] == 0) finishProgram(t.program);
   });
+  if (result_.interruptedBy) return result_;
   fs::remove_all(temp_, ec);
 
   for (ProgramResult& r : extra_) {

@@ -88,6 +88,9 @@ struct ClassResult {
   // input, 74 I/O). 0 otherwise.
   int fatalCode = 0;
   std::string fatal;
+  /// The signal (Ctrl-C's SIGINT, SIGTERM, ...) that stopped grading, its programs ended and its
+  /// temporary files removed: rb ends by it. 0 otherwise.
+  int interruptedBy = 0;
 };
 
 ClassResult gradeClass(const GradeOptions& options);

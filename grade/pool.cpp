@@ -42,6 +42,9 @@ void limit(int resource, rlim_t soft, rlim_t hard) {
 
 /// In the child: redirects, limits, executes. Reports errno on `report` when exec fails.
 [[noreturn]] void child(const Job& job, char* const* argv, const sigset_t& mask, int report) {
+  // A process group of its own: what the program starts (Spawn, with --allow-spawn) is in it,
+  // and ends with it.
+  setpgid(0, 0);
   sigprocmask(SIG_SETMASK, &mask, nullptr);
   int in = openOr(job.stdinPath, O_RDONLY, "/dev/null");
   int out = openOr(job.stdoutPath, O_WRONLY | O_CREAT | O_TRUNC, "/dev/null");
@@ -106,12 +109,16 @@ std::string describe(const JobOutcome& o, const Job& job) {
   return "";
 }
 
-void runJobs(const std::vector<Job>& jobs, int parallel,
+int runJobs(const std::vector<Job>& jobs, int parallel,
              const std::function<void(size_t, const JobOutcome&)>& done) {
   if (parallel < 1) parallel = 1;
+  // SIGCHLD wakes the loop. The signals that end rb (Ctrl-C, a closed terminal, kill) are taken
+  // here too while jobs run: the children, each in a process group of its own, are ended with
+  // their groups first, then rb ends by the same signal.
   sigset_t chld, old;
   sigemptyset(&chld);
   sigaddset(&chld, SIGCHLD);
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaddset(&chld, s);
   sigprocmask(SIG_BLOCK, &chld, &old);
 
   std::map<pid_t, Running> running;
@@ -139,6 +146,7 @@ void runJobs(const std::vector<Job>& jobs, int parallel,
       Clock::time_point start = Clock::now();
       pid_t pid = fork();
       if (pid == 0) child(job, p.argv.data(), old, report[1]);
+      if (pid > 0) setpgid(pid, pid);  // also here, so that a kill never comes before it
       close(report[1]);
       if (pid < 0) {
         outcome.error = std::string("fork: ") + std::strerror(errno);
@@ -173,20 +181,31 @@ void runJobs(const std::vector<Job>& jobs, int parallel,
     struct timespec ts;
     ts.tv_sec = static_cast<time_t>(wait);
     ts.tv_nsec = static_cast<long>((wait - static_cast<double>(ts.tv_sec)) * 1e9);
-    sigtimedwait(&chld, nullptr, &ts);
+    int sig = sigtimedwait(&chld, nullptr, &ts);
+    if (sig > 0 && sig != SIGCHLD) {
+      for (const auto& [pid, r] : running) kill(-pid, SIGKILL);
+      for (const auto& [pid, r] : running) waitpid(pid, nullptr, 0);
+      sigprocmask(SIG_SETMASK, &old, nullptr);
+      return sig;
+    }
 
     Clock::time_point now = Clock::now();
     for (auto it = running.begin(); it != running.end();) {
-      int status = 0;
-      pid_t got = waitpid(it->first, &status, WNOHANG);
-      if (got == 0) {
+      // Looked at without reaping: while the child is a zombie its process group cannot be
+      // reused, so killing the group afterwards reaches only what the program left running.
+      siginfo_t info{};
+      int seen = waitid(P_PID, static_cast<id_t>(it->first), &info, WEXITED | WNOHANG | WNOWAIT);
+      if (seen == 0 && info.si_pid == 0) {
         if (!it->second.killed && now >= it->second.deadline) {
-          kill(it->first, SIGKILL);
+          kill(-it->first, SIGKILL);
           it->second.killed = true;
         }
         ++it;
         continue;
       }
+      kill(-it->first, SIGKILL);
+      int status = 0;
+      pid_t got = waitpid(it->first, &status, 0);
       JobOutcome outcome;
       outcome.seconds = std::chrono::duration<double>(now - it->second.start).count();
       if (got < 0) {
@@ -207,6 +226,7 @@ void runJobs(const std::vector<Job>& jobs, int parallel,
     }
   }
   sigprocmask(SIG_SETMASK, &old, nullptr);
+  return 0;
 }
 
 }  // namespace rb::grade

@@ -40,8 +40,10 @@ struct JobOutcome {
 std::string describe(const JobOutcome& outcome, const Job& job);
 
 /// Runs every job, at most `parallel` at once (at least 1), in order of the list. `done` is
-/// called in the calling process as each job ends, with its index. Returns when all ended.
-void runJobs(const std::vector<Job>& jobs, int parallel,
+/// called in the calling process as each job ends, with its index. Returns when all ended: 0,
+/// or the signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) that came meanwhile, after ending every
+/// running job with its process group (the caller cleans up, then ends by that signal).
+int runJobs(const std::vector<Job>& jobs, int parallel,
              const std::function<void(size_t, const JobOutcome&)>& done);
 
 /// True when this build runs under AddressSanitizer, whose shadow memory does not fit under a

@@ -132,3 +132,30 @@ TEST_CASE("a child that eats memory runs into its memory limit", "[grade][pool]"
     fs::remove_all(dir);
   }
 }
+
+TEST_CASE("what a job starts in the background ends with it, finished or killed", "[grade][pool]") {
+  fs::path dir = scratch();
+  // One job exits at once, leaving a sleeper behind; the other is killed at its time limit with
+  // its sleeper. Neither sleeper survives runJobs.
+  Job left = shell("sleep 60 & echo $! > left.pid; exit 0");
+  left.cwd = dir.string();
+  Job hung = shell("sleep 60 & echo $! > hung.pid; sleep 60", 0.3);
+  hung.cwd = dir.string();
+  std::vector<JobOutcome> got(2);
+  runJobs({left, hung}, 2, [&](size_t i, const JobOutcome& o) { got[i] = o; });
+  CHECK(got[0].kind == JobOutcome::Exited);
+  CHECK(got[1].kind == JobOutcome::TimedOut);
+  for (const char* file : {"left.pid", "hung.pid"}) {
+    INFO(file);
+    pid_t sleeper = std::stoi(slurp((dir / file).string()));
+    // Killed; reaped by init (it was re-parented), so at most a zombie for a moment.
+    bool gone = false;
+    for (int i = 0; i < 100 && !gone; ++i) {
+      std::string state = slurp("/proc/" + std::to_string(sleeper) + "/stat");
+      gone = state.empty() || state.find(") Z") != std::string::npos;
+      if (!gone) usleep(10000);
+    }
+    CHECK(gone);
+  }
+  fs::remove_all(dir);
+}

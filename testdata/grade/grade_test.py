@@ -15,6 +15,8 @@ import csv
 import io
 import json
 import os
+import time
+import signal
 import re
 import shutil
 import struct
@@ -595,6 +597,42 @@ def case_regex_linear(env):
     bad = env.write("bad.toml", '[[check]]\nkind = "output"\nregex = ["(a"]\n')
     r = env.rb_run("test", "-a", bad, prog)
     expect(r.returncode == 64 and "bad.toml:3:9: bad regex '(a': missing )" in r.stderr, "bad pattern", r.stderr)
+
+
+def case_interrupt(env):
+    # Ctrl-C while programs run: every child ends with what it started (its process group), the
+    # temporary files go, and rb test ends by SIGINT, as a shell expects.
+    tmp = env.path("tmp")
+    os.makedirs(tmp)
+    os.makedirs(env.path("hung"))
+    for name in ("a", "b"):
+        env.write(f"hung/{name}.bas", "// timeout: 20\nwhile 1\nwend\n")
+    proc = subprocess.Popen([env.rb, "test", "-j", "2", env.path("hung")], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, env=dict(os.environ, TMPDIR=tmp))
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline and len(children(proc.pid)) < 2:
+        time.sleep(0.05)
+    kids = children(proc.pid)
+    expect(len(kids) == 2, "two programs running", kids)
+    proc.send_signal(signal.SIGINT)
+    proc.communicate(timeout=10)
+    expect(proc.returncode == -signal.SIGINT, f"ended by SIGINT, not {proc.returncode}")
+    alive = [k for k in kids if os.path.exists(f"/proc/{k}") and ") Z" not in open(f"/proc/{k}/stat").read()]
+    expect(not alive, "no program left running", alive)
+    expect(os.listdir(tmp) == [], "no temporary files left", os.listdir(tmp))
+
+
+def children(pid):
+    found = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                stat = open(f"/proc/{entry}/stat").read()
+            except OSError:
+                continue
+            if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
+                found.append(int(entry))
+    return found
 
 
 def case_similarity(env):
