@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "png_writer.h"
+#include "robot/protocol.h"
 #include "robot_view.h"
 #include "sixel_image.h"
 #include "svg_writer.h"
@@ -67,12 +68,6 @@ class Waiting {
  private:
   const char*& slot_;
 };
-
-std::string hex2(unsigned v) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "%02x", v & 0xFF);
-  return buf;
-}
 
 }  // namespace
 
@@ -938,9 +933,10 @@ void TuiHost::drawStatus() {
     s.port = real->name();
     s.commands = link.commands;
     if (link.replies > 0) {
+      // The sensor bytes as they came over the wire (bumper, feel, sense), then the result.
+      const auto wire = protocol::encodeReply(link.last);
       s.lastReply = "cmd " + std::to_string(link.lastCode) + "," + std::to_string(link.lastParam) +
-                    " -> " + hex2(link.last.feel) + " " + hex2(link.last.bumper) + " " +
-                    hex2(link.last.sense) + " = " + std::to_string(link.last.result);
+                    " -> " + protocol::hexBytes(wire.data(), 3) + " = " + std::to_string(link.last.result);
     }
     if (!link.fault.empty()) s.lastReply = link.fault;
   }

@@ -92,12 +92,12 @@ TEST_CASE("tui status panel", "[tui]") {
   s.real = true;
   s.port = "/dev/ttyUSB0";
   s.commands = 12;
-  s.lastReply = "cmd 3,90 -> 00 04 00 = 0";
+  s.lastReply = "cmd 3,90 -> 04 00 00 = 0";
   lines = statusLines(s, 40);
   CHECK(has("robot   not placed"));
   CHECK(has("link    /dev/ttyUSB0"));
   CHECK(has("sent    12 commands"));
-  CHECK(has("reply   cmd 3,90 -> 00 04 00 = 0"));
+  CHECK(has("reply   cmd 3,90 -> 04 00 00 = 0"));
   auto compact = compactStatusLines(s, 200);
   CHECK(compact[0] == "paused  x1/4");
   CHECK(compact[1] == "robot not placed");

@@ -55,6 +55,17 @@ TEST_CASE("the emulated robot's sensors see the screen edge", "[emulator]") {
   CHECK(decode(emu.handle(200, 7)).result == 0);
 }
 
+TEST_CASE("the emulator answers bumper, feel, sense, then the result high byte first", "[emulator]") {
+  // Read the bytes themselves, not through protocol::decodeReply: the order on the wire is
+  // what a real robot's firmware (the SR15 RROS sketch) sends.
+  RobotEmulator emu({});
+  CHECK(emu.handle(66, 0).bytes == std::vector<uint8_t>{0, 0, 0, 0x01, 0x90});  // x = 400
+  // Up against the top wall: the front bumper (4) in the first byte; the infrared sensors
+  // that see the wall (front and both 45-degree ones: 2 + 4 + 8) in the second.
+  emu.handle(6, 255);
+  CHECK(emu.handle(6, 255).bytes == std::vector<uint8_t>{4, 14, 0, 0, 0});
+}
+
 TEST_CASE("the pen draws without making the trail an obstacle", "[emulator]") {
   RobotEmulator emu({});
   emu.handle(129, 1);

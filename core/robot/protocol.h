@@ -38,11 +38,14 @@ constexpr int kMaxParameter = 255;
 constexpr double kMaxAmount = 32767;
 
 /// Where each field sits in the five reply bytes, and which bits a well-formed reply may set.
-/// rFeel has five sensors and rBumper four bumpers; rSense is left open because a robot may
+/// The order bumper, feel, sense is inferred (decisions.md, 2026-11-26): the "SR15 RROS for
+/// Arduino" sketch, a robot firmware written for RobotBASIC's protocol, answers every command
+/// with rBumper, rFeel, rSense, 0, 0, with the same bit layouts as rb.
+/// rBumper has four bumpers and rFeel five sensors; rSense is left open because a robot may
 /// report any "sense" data there (SERVO, March 2008).
 struct ReplyLayout {
-  int feel = 0, bumper = 1, sense = 2, resultHigh = 3, resultLow = 4;
-  uint8_t feelMask = 0x1f, bumperMask = 0x0f, senseMask = 0xff;
+  int bumper = 0, feel = 1, sense = 2, resultHigh = 3, resultLow = 4;
+  uint8_t bumperMask = 0x0f, feelMask = 0x1f, senseMask = 0xff;
 };
 inline constexpr ReplyLayout kReply{};
 constexpr int kReplySize = 5;
@@ -86,14 +89,14 @@ inline std::string hexBytes(const uint8_t* data, size_t n, size_t shown = SIZE_M
 /// True when every field of a reply only sets bits its sensors can set: a reply that does not
 /// is noise on the line or a robot speaking another protocol.
 inline bool plausibleReply(const std::array<uint8_t, kReplySize>& b) {
-  return (b[kReply.feel] & ~kReply.feelMask) == 0 && (b[kReply.bumper] & ~kReply.bumperMask) == 0 &&
+  return (b[kReply.bumper] & ~kReply.bumperMask) == 0 && (b[kReply.feel] & ~kReply.feelMask) == 0 &&
          (b[kReply.sense] & ~kReply.senseMask) == 0;
 }
 
 inline RobotReply decodeReply(const std::array<uint8_t, kReplySize>& b) {
   RobotReply r;
-  r.feel = b[kReply.feel];
   r.bumper = b[kReply.bumper];
+  r.feel = b[kReply.feel];
   r.sense = b[kReply.sense];
   r.result = static_cast<uint16_t>(b[kReply.resultHigh] << 8 | b[kReply.resultLow]);
   return r;
@@ -101,8 +104,8 @@ inline RobotReply decodeReply(const std::array<uint8_t, kReplySize>& b) {
 
 inline std::array<uint8_t, kReplySize> encodeReply(const RobotReply& r) {
   std::array<uint8_t, kReplySize> b{};
-  b[kReply.feel] = r.feel;
   b[kReply.bumper] = r.bumper;
+  b[kReply.feel] = r.feel;
   b[kReply.sense] = r.sense;
   b[kReply.resultHigh] = static_cast<uint8_t>(r.result >> 8);
   b[kReply.resultLow] = static_cast<uint8_t>(r.result & 0xff);

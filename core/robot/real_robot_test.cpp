@@ -190,16 +190,24 @@ TEST_CASE("rCommand checks its bytes and rChargeLevel has no command", "[real]")
 
 TEST_CASE("the reply layout decodes, encodes and rejects impossible bits", "[real][protocol]") {
   using namespace protocol;
-  std::array<uint8_t, kReplySize> b{31, 15, 7, 0x01, 0x2c};
+  // Bumper, feel, sense, then the result high byte first (the SR15 RROS sketch's order).
+  std::array<uint8_t, kReplySize> b{15, 31, 7, 0x01, 0x2c};
   RobotReply r = decodeReply(b);
-  CHECK(r.feel == 31);
   CHECK(r.bumper == 15);
+  CHECK(r.feel == 31);
   CHECK(r.sense == 7);
   CHECK(r.result == 300);
   CHECK(encodeReply(r) == b);
   CHECK(plausibleReply(b));
-  CHECK_FALSE(plausibleReply({32, 0, 0, 0, 0}));
-  CHECK_FALSE(plausibleReply({0, 16, 0, 0, 0}));
+  // What that firmware sends with the front bumper, the left infrared and the middle floor
+  // sensor on: feel 16 is a left sensor, not a bumper bit no robot has.
+  RobotReply sr15 = decodeReply({4, 16, 2, 0, 0});
+  CHECK(sr15.bumper == 4);
+  CHECK(sr15.feel == 16);
+  CHECK(sr15.sense == 2);
+  CHECK(plausibleReply({4, 16, 2, 0, 0}));
+  CHECK_FALSE(plausibleReply({16, 0, 0, 0, 0}));  // a fifth bumper
+  CHECK_FALSE(plausibleReply({0, 32, 0, 0, 0}));  // a sixth infrared sensor
   CHECK(plausibleReply({0, 0, 255, 255, 255}));  // sense is free for any data
   const uint8_t cmd[] = {6, 255};
   CHECK(hexBytes(cmd, 2) == "06 ff");
