@@ -17,7 +17,9 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
+import tty
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RB = None
@@ -70,6 +72,47 @@ class Emulator:
             if len(parts) >= 3 and len(parts[0]) == 2 and len(parts[1]) == 2 and "->" in parts:
                 out.append(parts[0] + " " + parts[1])
         return out
+
+
+class StandIn:
+    """A robot on a pseudo-terminal that answers every two-byte command with the same five bytes,
+    as the "SR15 RROS for Arduino" sketch (a firmware written for RobotBASIC's protocol) does:
+    rBumper, rFeel, rSense, 0, 0. Written here, not with rb's own emulator, so that the bytes on
+    the wire do not come from rb's encoding."""
+
+    def __init__(self, reply):
+        self.reply = bytes(reply)
+        self.master, self.slave = os.openpty()
+        tty.setraw(self.slave)  # no echo of the replies back to this side
+        self.path = os.ttyname(self.slave)
+        self.commands = []
+        self.stop = threading.Event()
+        self.thread = threading.Thread(target=self.serve, daemon=True)
+        self.thread.start()
+
+    def serve(self):
+        pending = b""
+        while not self.stop.is_set():
+            ready, _, _ = select.select([self.master], [], [], 0.05)
+            if not ready:
+                continue
+            try:
+                pending += os.read(self.master, 64)
+            except OSError:
+                return
+            while len(pending) >= 2:
+                self.commands.append(pending[:2].hex(" "))
+                pending = pending[2:]
+                os.write(self.master, self.reply)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.stop.set()
+        self.thread.join(5)
+        os.close(self.slave)
+        os.close(self.master)
 
 
 def rb(*args, stdin="", timeout=30):
@@ -170,6 +213,30 @@ def case_large_moves(tmp):
     expect(code == 0, f"exit {code}", err)
     want = ["03 00", "0c ff", "0c 91", "0d ff", "0d 91", "0c 5a", "03 00", "06 ff", "06 ff", "06 5a", "42 00", "42 01"]
     expect(sent == want, "commands on the wire", sent)
+
+
+def case_sr15_reply_order(tmp):
+    """A robot that answers as the SR15 RROS sketch does (bumper, feel, sense, then the result):
+    bytes 04 10 02 00 00 are the front bumper, the left infrared sensor and the middle floor
+    sensor. rb once read them as feel 4 and bumper 16 and stopped with a malformed reply."""
+    readings = "print rBumper()\nprint rFeel()\nprint rSense()\n"
+    real = os.path.join(tmp, "real.bas")
+    with open(real, "w") as f:
+        f.write("rLocate 400, 300\nrForward 10\n" + readings)
+    comm = os.path.join(tmp, "comm.bas")
+    with open(comm, "w") as f:
+        f.write("rCommPort 5\n" + readings + "print rCommand(200, 7)\nrCommPort 0\n")
+    with StandIn([4, 16, 2, 0, 0]) as robot:
+        code, out, err, _ = rb("run", "--real", "--port", robot.path, real)
+        expect(code == 0, f"--real: exit {code}", err)
+        expect(out == "4\n16\n2\n", "--real: rBumper, rFeel, rSense", out, err)
+        expect(robot.commands == ["03 00", "06 0a"], "--real: commands on the wire", robot.commands)
+        del robot.commands[:]
+        code, out, err, _ = rb("run", "--port", robot.path, comm)
+        expect(code == 0, f"rCommPort: exit {code}", err)
+        expect(out == "4\n16\n2\n0\n", "rCommPort: rBumper, rFeel, rSense, rCommand", out, err)
+        # Nothing exchanged yet at rBumper(): rb asks with the status command (06 00) once.
+        expect(robot.commands == ["06 00", "c8 07"], "rCommPort: commands on the wire", robot.commands)
 
 
 # ----------------------------------------------------------------------------------------------
