@@ -83,6 +83,7 @@ void ObstacleField::rebuild() {
   for (float& d : dist_) d = std::sqrt(d);
   capped_ = false;
   pending_.clear();
+  fresh_.clear();
   near_ = PixelBox{};
   ++rebuilds_;
 }
@@ -110,11 +111,92 @@ void ObstacleField::takeChanges() {
     }
     if (!joined) pending_.push_back(box);
     if (pending_.size() > kMaxPending) {  // too many scattered boxes: apply the oldest now
-      update(pending_.front());
+      apply(pending_.front());
       pending_.erase(pending_.begin());
     }
   }
   recomputeNear();
+}
+
+void ObstacleField::apply(const PixelBox& changed) {
+  PixelBox box;
+  box.x0 = std::max(changed.x0, 0), box.y0 = std::max(changed.y0, 0);
+  box.x1 = std::min(changed.x1, Canvas::kWidth - 1), box.y1 = std::min(changed.y1, Canvas::kHeight - 1);
+  if (box.x0 > box.x1 || box.y0 > box.y1) return;
+  // Compare the canvas with the mask: which pixels became obstacles, and did any stop being one?
+  added_.clear();
+  bool removed = false;
+  for (int y = box.y0; y <= box.y1 && !removed; ++y) {
+    const uint8_t* m = mask_.data() + static_cast<size_t>(y + 1) * kW + 1;
+    for (int x = box.x0; x <= box.x1; ++x) {
+      bool now = canvas_.isObstacleColour(canvas_.at(x, y));
+      if (now == (m[x] != 0)) continue;
+      if (!now) {
+        removed = true;
+        break;
+      }
+      added_.push_back(static_cast<uint32_t>(y) << 16 | static_cast<uint32_t>(x));
+    }
+  }
+  if (removed) {
+    // Distances may grow: a local update recomputes them, over the fresh pixels' groups the box
+    // meets too (some of their pixels may be gone).
+    PixelBox whole = box;
+    for (size_t i = 0; i < fresh_.size();) {
+      const PixelBox& f = fresh_[i].box;
+      if (f.x0 <= box.x1 && f.x1 >= box.x0 && f.y0 <= box.y1 && f.y1 >= box.y0) {
+        whole.add(f);
+        fresh_.erase(fresh_.begin() + static_cast<long>(i));
+      } else {
+        ++i;
+      }
+    }
+    update(whole);
+    return;
+  }
+  if (added_.empty()) return;
+  PixelBox addedBox;
+  for (uint32_t p : added_) {
+    mask_[static_cast<size_t>((p >> 16) + 1) * kW + (p & 0xffff) + 1] = 1;
+    addedBox.add(static_cast<int>(p & 0xffff), static_cast<int>(p >> 16));
+  }
+  // Join the group it meets (the trail goes on from the last step), or start one.
+  const int j = ObstacleChanges::kJoin;
+  Fresh* group = nullptr;
+  for (Fresh& f : fresh_)
+    if (addedBox.x0 <= f.box.x1 + j && addedBox.x1 >= f.box.x0 - j && addedBox.y0 <= f.box.y1 + j &&
+        addedBox.y1 >= f.box.y0 - j) {
+      group = &f;
+      break;
+    }
+  if (!group) {
+    if (fresh_.size() >= kMaxFreshGroups) {  // too many scattered groups: the oldest is computed
+      update(fresh_.front().box);
+      fresh_.erase(fresh_.begin());
+    }
+    group = &fresh_.emplace_back();
+  }
+  group->box.add(addedBox);
+  group->pixels.insert(group->pixels.end(), added_.begin(), added_.end());
+  if (group->pixels.size() > kMaxFresh) {  // a long list costs every query near it: compute it
+    update(group->box);
+    fresh_.erase(fresh_.begin() + (group - fresh_.data()));
+  }
+}
+
+float ObstacleField::freshDistance(int x, int y, float d) const {
+  // Squared distances are whole numbers, exact in a float up to the screen's size, and the
+  // square root of the smallest is the distance a rebuild would find.
+  float best = d * d;
+  for (const Fresh& f : fresh_) {
+    int bx = std::max({f.box.x0 - x, 0, x - f.box.x1}), by = std::max({f.box.y0 - y, 0, y - f.box.y1});
+    if (float(bx * bx + by * by) >= best) continue;
+    for (uint32_t p : f.pixels) {
+      int dx = static_cast<int>(p & 0xffff) - x, dy = static_cast<int>(p >> 16) - y;
+      best = std::min(best, float(dx * dx + dy * dy));
+    }
+  }
+  return best < d * d ? std::sqrt(best) : d;
 }
 
 void ObstacleField::recomputeNear() {
@@ -132,7 +214,7 @@ void ObstacleField::applyNear(int x, int y) {
     const PixelBox b = pending_[i];
     bool near = x >= b.x0 - kLocalReach && x <= b.x1 + kLocalReach && y >= b.y0 - kLocalReach &&
                 y <= b.y1 + kLocalReach;
-    if (near) update(b);
+    if (near) apply(b);
     else pending_[kept++] = b;
   }
   pending_.resize(kept);

@@ -92,7 +92,60 @@ TEST_CASE("a change far from every query is never computed", "[sim]") {
   }
   CHECK(field.rebuilds() == rebuilt);
   CHECK(field.localUpdates() == 0);
-  // Near the text the distances are exact.
+  // Near the text the distances are exact. Text drawn without a background over itself only
+  // adds ink, so its pixels are a list of added pixels and no local update is needed.
+  CHECK(field.distance(30, 60) == Approx(bruteDistance(canvas, 30, 60)).margin(1e-3));
   CHECK(field.distance(30, 60) == Approx(30).margin(16));
+  CHECK(field.localUpdates() == 0);
+  // Text over an opaque background also clears pixels: then the box waits for a local update,
+  // computed once a query comes near.
+  TextStyle opaque;
+  opaque.background = colours::kWhite;
+  for (int i = 0; i < 10; ++i) canvas.text(10, 10, "step " + std::to_string(i), opaque, colours::kBlack);
+  CHECK(field.distance(400, 300) == Approx(ObstacleField::kLocalReach));
+  CHECK(field.localUpdates() == 0);
+  CHECK(field.distance(30, 60) == Approx(bruteDistance(canvas, 30, 60)).margin(1e-3));
   CHECK(field.localUpdates() == 1);
+}
+
+TEST_CASE("a trail that only adds obstacle pixels is followed without local updates", "[sim]") {
+  // The robot's pen trail in an obstacle colour, drawn a pixel at a time: each step's few new
+  // pixels join a list, and the distances near them are the rebuilt field's, exactly.
+  Canvas a, b;
+  ObstacleField field(a), reference(b);
+  auto both = [&](auto draw) { draw(a), draw(b); };
+  CHECK(field.distance(400, 300) == Approx(300));
+  const float reach = float(ObstacleField::kLocalReach);
+  auto agree = [&](int x, int y) {
+    b.setInvisible(b.invisible());  // the reference rebuilds
+    INFO("pixel " << x << "," << y);
+    float got = field.distance(x, y), truth = reference.distance(x, y);
+    CHECK(got <= truth + 1e-3f);
+    CHECK(std::min(got, reach) == std::min(truth, reach));  // the same float below the cap
+    CHECK(field.obstacle(x, y) == reference.obstacle(x, y));
+  };
+  int x = 400, y = 300;
+  both([&](Canvas& c) { c.trailStart(x, y, 4, colours::kBlack); });
+  for (int i = 0; i < 120; ++i) {
+    --y;
+    both([&](Canvas& c) { c.trailTo(x, y); });
+    agree(x, y - 20);
+    agree(x + 7, y + 3);
+    agree(x - 30, y - 40);
+  }
+  CHECK(field.localUpdates() == 0);
+  CHECK(field.freshPixels() > 0);
+  // The list is bounded: a long trail becomes a local update of its box.
+  for (int i = 0; i < 400; ++i) {
+    ++x;
+    both([&](Canvas& c) { c.trailTo(x, y); });
+    agree(x + 20, y);
+  }
+  CHECK(field.localUpdates() > 0);
+  CHECK(field.freshPixels() <= ObstacleField::kMaxFresh);
+  // Erasing part of the trail makes distances grow again.
+  both([&](Canvas& c) { c.rectangle({x - 60, y - 10}, {x + 2, y + 10}, 1, colours::kWhite, colours::kWhite); });
+  agree(x - 30, y);
+  agree(x - 30, y - 12);
+  agree(x + 10, y);
 }
