@@ -65,6 +65,7 @@ std::string closestMatch(std::string_view word, const std::vector<std::string_vi
   int limit = word.size() <= 2 ? 0 : std::clamp(static_cast<int>(word.size()) / 3, 1, 4);
   int best = limit + 1;
   std::string_view bestWord;
+  bool bestFirst = false;  // bestWord begins with the word's first letter
   // Or sharing a long beginning (InitializeRobot -> InitializeSimulator): at least 4
   // characters and more than half of the word.
   size_t bestPrefix = 0;
@@ -82,19 +83,39 @@ std::string closestMatch(std::string_view word, const std::vector<std::string_vi
     }
     int lengthGap = static_cast<int>(c.size()) - static_cast<int>(word.size());
     if (std::abs(lengthGap) > limit) continue;
+    // A tie goes to the first candidate that begins as the word does (a slip rarely changes
+    // the first letter: "wnd" is wend rather than end).
+    bool first = !word.empty() && !c.empty() && fold(word[0], true) == fold(c[0], true);
     int d = editDistance(word, c, ignoreCase, static_cast<size_t>(best));
-    if (d < best) {
+    if (d < best || (d == best && d <= limit && first && !bestFirst)) {
       best = d;
       bestWord = c;
+      bestFirst = first;
     }
   }
   if (best <= limit) return std::string(bestWord);
   return std::string(prefixWord);
 }
 
+const std::vector<std::string_view>& statementKeywords() {
+  static const std::vector<std::string_view> words = [] {
+    std::vector<std::string_view> w;
+    for (std::string_view k : keywordSpellings()) {
+      switch (keywordKind(k)) {
+        case Tok::KwAnd: case Tok::KwOr: case Tok::KwNot: case Tok::KwMod:
+        case Tok::KwThen: case Tok::KwTo: case Tok::KwStep:
+          break;  // operators and the words inside a statement
+        default: w.push_back(k);
+      }
+    }
+    return w;
+  }();
+  return words;
+}
+
 std::string suggestCommand(const BuiltinTable& builtins, std::string_view word) {
   std::vector<std::string_view> names = builtins.names(BuiltinKind::Command);
-  for (std::string_view k : keywordSpellings()) names.push_back(k);
+  for (std::string_view k : statementKeywords()) names.push_back(k);
   return closestMatch(word, names, true);
 }
 

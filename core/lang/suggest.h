@@ -1,6 +1,9 @@
 #pragma once
 // "Did you mean" suggestions from edit distance, for unknown commands, functions, labels and
-// variables.
+// variables. A suggestion comes only from names that can stand where the word stands: at the
+// start of a statement a command or a keyword that starts statements (never an operator such
+// as `not`); in an expression a function where a call stands, else a variable; after goto or
+// gosub a label. docs/diagnostics.md, "Suggestions".
 
 #include <string>
 #include <string_view>
@@ -17,11 +20,17 @@ int editDistance(std::string_view a, std::string_view b, bool ignoreCase);
 int editDistance(std::string_view a, std::string_view b, bool ignoreCase, size_t bound);
 
 /// The closest candidate within a distance that grows with the length of `word`, or "" when
-/// none is close enough. A candidate equal to `word` apart from case wins outright.
+/// none is close enough. A candidate equal to `word` apart from case wins outright; of equally
+/// close ones, the first that begins with the word's first letter, else the first.
 std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates,
                          bool ignoreCase);
 
-/// A command of `builtins` or a statement keyword close to `word` ("prit" -> "print").
+/// The keywords (lower case) that can begin a statement: `print`, `next`, `endif`, ... (not
+/// `and`, `or`, `not`, `mod`, `then`, `to`, `step`, which stand inside one).
+const std::vector<std::string_view>& statementKeywords();
+
+/// A command of `builtins` or a keyword that begins statements, close to `word` ("prit" ->
+/// "print", "nxt" -> "next"): what the first word of a statement may be.
 std::string suggestCommand(const BuiltinTable& builtins, std::string_view word);
 
 }  // namespace rb

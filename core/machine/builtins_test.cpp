@@ -41,6 +41,13 @@ TEST_CASE("edit distance and suggestions", "[suggest]") {
         "InitializeSimulator");
 }
 
+TEST_CASE("the standard table's suggestions for a statement's first word", "[suggest]") {
+  const BuiltinTable& t = standardBuiltins();
+  CHECK(suggestCommand(t, "nxt") == "next");  // not `not`, an operator
+  CHECK(suggestCommand(t, "wnd") == "wend");
+  CHECK(suggestCommand(t, "rForwad") == "rForward");
+}
+
 TEST_CASE("a bounded edit distance is the distance, or bound + 1 beyond it", "[suggest]") {
   // Words over a small alphabet, so that near and far pairs both occur; some longer than the
   // 47 characters kept on the stack.
