@@ -180,6 +180,7 @@ class Compiler {
   void gotoOrGosub(const Stmt& s);
   void label(const Stmt& s);
   void brokenOpener(const Stmt& s);
+  void guessedCloser(const Stmt& s);
   Block& openIf(const Stmt& s, const char* word);
   Block* innermostLoop();
   Block closeLoop(const Stmt& s, Block::Kind kind, const char* closer, const char* opener);
