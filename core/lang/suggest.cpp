@@ -119,4 +119,43 @@ std::string suggestCommand(const BuiltinTable& builtins, std::string_view word) 
   return closestMatch(word, names, true);
 }
 
+namespace {
+bool isNameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
+
+/// `word` appears in `text` as a whole word (case-sensitive: the help writes constants as
+/// they are spelt, "Down", where "up" is an ordinary word).
+bool namesWord(std::string_view text, std::string_view word) {
+  for (size_t at = text.find(word); at != std::string_view::npos; at = text.find(word, at + 1)) {
+    bool before = at > 0 && isNameChar(text[at - 1]);
+    bool after = at + word.size() < text.size() && isNameChar(text[at + word.size()]);
+    if (!before && !after) return true;
+  }
+  return false;
+}
+
+bool isColourParameter(std::string_view p) {
+  return p == "colour" || p == "background" || p == "outline" || p == "fill";
+}
+}  // namespace
+
+std::vector<std::string_view> constantsFitting(const BuiltinTable& builtins, const Builtin& builtin,
+                                               std::string_view param) {
+  std::vector<std::string_view> out;
+  bool colour = isColourParameter(param);
+  for (std::string_view name : builtins.names(BuiltinKind::Constant)) {
+    const Builtin* c = builtins.find(name, BuiltinKind::Constant);
+    if ((colour && c && c->group == "colour") || namesWord(builtin.help, name)) out.push_back(name);
+  }
+  return out;
+}
+
+std::string suggestValue(std::string_view word, const std::vector<std::string_view>& fitting,
+                         const std::vector<std::string_view>& variables, const BuiltinTable& builtins) {
+  std::vector<std::string_view> names = fitting;
+  names.insert(names.end(), variables.begin(), variables.end());
+  for (std::string_view c : builtins.names(BuiltinKind::Constant))
+    if (std::find(fitting.begin(), fitting.end(), c) == fitting.end()) names.push_back(c);
+  return closestMatch(word, names, true);
+}
+
 }  // namespace rb

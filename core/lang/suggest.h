@@ -2,8 +2,9 @@
 // "Did you mean" suggestions from edit distance, for unknown commands, functions, labels and
 // variables. A suggestion comes only from names that can stand where the word stands: at the
 // start of a statement a command or a keyword that starts statements (never an operator such
-// as `not`); in an expression a function where a call stands, else a variable; after goto or
-// gosub a label. docs/diagnostics.md, "Suggestions".
+// as `not`); in an expression a function where a call stands, else a variable or a constant
+// (first the constants that fit the argument the word is); after goto or gosub a label.
+// docs/diagnostics.md, "Suggestions".
 
 #include <string>
 #include <string_view>
@@ -12,6 +13,7 @@
 namespace rb {
 
 class BuiltinTable;
+struct Builtin;
 
 /// Optimal-string-alignment distance (insert, delete, substitute, swap neighbours).
 /// `ignoreCase` compares letters without case.
@@ -32,5 +34,17 @@ const std::vector<std::string_view>& statementKeywords();
 /// A command of `builtins` or a keyword that begins statements, close to `word` ("prit" ->
 /// "print", "nxt" -> "next"): what the first word of a statement may be.
 std::string suggestCommand(const BuiltinTable& builtins, std::string_view word);
+
+/// The constants of `builtins` that fit the parameter `param` of `builtin`: the colours for a
+/// colour (`colour`, `background`, `outline`, `fill`), and every constant the built-in's help
+/// names (rPen: Down and Up; flip: On and Off; xyText: the fs_ styles).
+std::vector<std::string_view> constantsFitting(const BuiltinTable& builtins, const Builtin& builtin,
+                                               std::string_view param);
+
+/// A name read in an expression that nothing assigns: the closest of the constants that fit
+/// the argument it is (`fitting`, from constantsFitting; first, so they win a tie), the
+/// variables assigned in its scope, and the other constants of `builtins`.
+std::string suggestValue(std::string_view word, const std::vector<std::string_view>& fitting,
+                         const std::vector<std::string_view>& variables, const BuiltinTable& builtins);
 
 }  // namespace rb

@@ -33,6 +33,10 @@ const BuiltinTable& table() {
   });
   return t;
 }
+
+std::vector<std::string_view> fitting(std::string_view builtin, std::string_view param) {
+  return constantsFitting(table(), *table().find(builtin, K::Command), param);
+}
 }  // namespace
 
 TEST_CASE("edit distance counts inserts, deletes, substitutions and swaps", "[suggest]") {
@@ -75,4 +79,29 @@ TEST_CASE("a statement's first word is matched against commands and statement ke
   CHECK(suggestCommand(table(), "rForwrd") == "rForward");
   CHECK(suggestCommand(table(), "lenght").empty());  // a function cannot start a statement
   CHECK(suggestCommand(table(), "nto").empty());     // nor can `not`
+}
+
+TEST_CASE("the constants that fit an argument come from the parameter and the help", "[suggest]") {
+  // rPen's help names Down and Up; `up` in rLocate's help is an ordinary word.
+  CHECK(fitting("rPen", "state") == std::vector<std::string_view>{"Up", "Down"});
+  CHECK(fitting("rLocate", "heading").empty());
+  // A colour parameter takes the colours.
+  CHECK(fitting("setColor", "colour") == std::vector<std::string_view>{"Red", "Green", "Brown"});
+  CHECK(fitting("setColor", "background") == std::vector<std::string_view>{"Red", "Green", "Brown"});
+  CHECK(fitting("rForward", "distance").empty());
+}
+
+TEST_CASE("a value read but never assigned suggests a fitting constant, a variable, a constant", "[suggest]") {
+  std::vector<std::string_view> variables = {"count", "Brwn", "total"};
+  std::vector<std::string_view> pen = fitting("rPen", "state");
+  CHECK(suggestValue("dwn", pen, variables, table()) == "Down");
+  CHECK(suggestValue("Dwn", {}, variables, table()) == "Down");  // any constant, when none fits
+  CHECK(suggestValue("cuont", pen, variables, table()) == "count");
+  CHECK(suggestValue("Total", {}, variables, table()) == "total");
+  // A tie between a variable and a constant: the constant that fits the argument first, else
+  // the program's own variable.
+  std::vector<std::string_view> colours = fitting("setColor", "colour");
+  CHECK(suggestValue("Brwon", colours, variables, table()) == "Brown");
+  CHECK(suggestValue("Brwon", {}, variables, table()) == "Brwn");
+  CHECK(suggestValue("zzzzz", pen, variables, table()).empty());
 }
