@@ -96,7 +96,7 @@ Block& Compiler::openIf(const Stmt& s, const char* word) {
 
 void Compiler::forStmt(const Stmt& s) {
   // Reported, but the loop still pairs with its next.
-  if (std::optional<std::string> why = builtins_.misuse(s.target->text, NamePlace::Store))
+  if (std::optional<std::string> why = misuse(s.target->text, NamePlace::Store, true))
     diags_.error(s.target->loc, std::move(*why), "rb-misplaced-builtin");
   uint32_t var = variable(s.target->text);
   uint32_t limit;

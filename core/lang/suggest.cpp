@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "lang/ast.h"
 #include "lang/builtins.h"
 #include "lang/token.h"
 
@@ -136,6 +137,12 @@ bool namesWord(std::string_view text, std::string_view word) {
 bool isColourParameter(std::string_view p) {
   return p == "colour" || p == "background" || p == "outline" || p == "fill";
 }
+
+std::string lowered(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = fold(c, true);
+  return r;
+}
 }  // namespace
 
 std::vector<std::string_view> constantsFitting(const BuiltinTable& builtins, const Builtin& builtin,
@@ -156,6 +163,41 @@ std::string suggestValue(std::string_view word, const std::vector<std::string_vi
   for (std::string_view c : builtins.names(BuiltinKind::Constant))
     if (std::find(fitting.begin(), fitting.end(), c) == fitting.end()) names.push_back(c);
   return closestMatch(word, names, true);
+}
+
+namespace {
+void addNamesOf(const ast::Expr* e, std::unordered_set<std::string>& out) {
+  if (!e) return;
+  if (e->kind == ast::ExprKind::Var || e->kind == ast::ExprKind::Index || e->kind == ast::ExprKind::Call)
+    out.insert(lowered(e->text));
+  for (const ast::Expr* a : e->args) addNamesOf(a, out);
+}
+}  // namespace
+
+void addNamesOf(const ast::Stmt& s, std::unordered_set<std::string>& out) {
+  if (!s.name.empty() && s.kind != ast::StmtKind::Include) out.insert(lowered(s.name));
+  for (const ast::Param& p : s.params) out.insert(lowered(p.name));
+  addNamesOf(s.target, out);
+  addNamesOf(s.value, out);
+  for (const ast::Expr* e : s.exprs) addNamesOf(e, out);
+  for (const ast::Stmt* b : s.body) addNamesOf(*b, out);
+}
+
+std::string freeName(std::string_view name, const BuiltinTable& builtins,
+                     const std::unordered_set<std::string>& taken) {
+  // The built-in's own spelling makes the better name: "myLength" for "LENGTH".
+  if (const Builtin* b = builtins.findAny(name)) name = b->name;
+  auto isFree = [&](const std::string& n) {
+    std::string low = lowered(n);
+    return !builtins.findAny(n) && keywordKind(low) == Tok::Ident && !taken.count(low);
+  };
+  std::string mine = "my" + std::string(name);
+  if (name.size() > 0) mine[2] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+  if (isFree(mine)) return mine;
+  for (size_t i = 1;; ++i) {  // `taken` is finite: some number is free
+    std::string numbered = std::string(name) + std::to_string(i);
+    if (isFree(numbered)) return numbered;
+  }
 }
 
 }  // namespace rb

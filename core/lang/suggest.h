@@ -8,12 +8,16 @@
 
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 namespace rb {
 
 class BuiltinTable;
 struct Builtin;
+namespace ast {
+struct Stmt;
+}
 
 /// Optimal-string-alignment distance (insert, delete, substitute, swap neighbours).
 /// `ignoreCase` compares letters without case.
@@ -46,5 +50,15 @@ std::vector<std::string_view> constantsFitting(const BuiltinTable& builtins, con
 /// variables assigned in its scope, and the other constants of `builtins`.
 std::string suggestValue(std::string_view word, const std::vector<std::string_view>& fitting,
                          const std::vector<std::string_view>& variables, const BuiltinTable& builtins);
+
+/// Adds every name statement `s` uses (variables, arrays, labels, subs and their parameters,
+/// what it calls) to `out`, in lower case.
+void addNamesOf(const ast::Stmt& s, std::unordered_set<std::string>& out);
+
+/// A name to use instead of the built-in's `name` for a variable, an array or a sub: "myLength"
+/// for "length", else "length1", "length2", ...: no built-in's, no keyword, and (in any case)
+/// none of `taken` (lower case, as addNamesOf gives them).
+std::string freeName(std::string_view name, const BuiltinTable& builtins,
+                     const std::unordered_set<std::string>& taken);
 
 }  // namespace rb

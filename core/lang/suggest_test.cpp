@@ -3,9 +3,15 @@
 #include <algorithm>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
+#include "base/diagnostic.h"
+#include "base/source.h"
+#include "lang/ast.h"
 #include "lang/builtins.h"
+#include "lang/lexer.h"
+#include "lang/parser.h"
 #include "lang/suggest.h"
 
 using namespace rb;
@@ -104,4 +110,24 @@ TEST_CASE("a value read but never assigned suggests a fitting constant, a variab
   CHECK(suggestValue("Brwon", colours, variables, table()) == "Brown");
   CHECK(suggestValue("Brwon", {}, variables, table()) == "Brwn");
   CHECK(suggestValue("zzzzz", pen, variables, table()).empty());
+}
+
+TEST_CASE("a free name is no built-in's, no keyword and no name of the program", "[suggest]") {
+  SourceSet sources;
+  uint32_t f = sources.add("main.bas",
+                           "length = 100\nMyLength = 1 // myAbs in a comment is no name\nabs1 = 2\n"
+                           "sub Side(width)\n  myDelay[1] = width\nendsub\ngoto Far\n");
+  DiagnosticList diags;
+  ast::Arena arena;
+  std::unordered_set<std::string> names;
+  for (const ast::Stmt* s : parseTokens(lex(sources, f, diags), arena, table(), diags)) addNamesOf(*s, names);
+  REQUIRE_FALSE(diags.hasErrors());
+  CHECK(names == std::unordered_set<std::string>{"length", "mylength", "abs1", "side", "width", "mydelay", "far"});
+
+  CHECK(freeName("length", table(), names) == "length1");  // myLength is taken, in any case
+  CHECK(freeName("LENGTH", table(), {}) == "myLength");    // the built-in's spelling
+  CHECK(freeName("abs", table(), names) == "myAbs");        // a comment holds no names
+  CHECK(freeName("abs", table(), {"myabs", "abs1"}) == "abs2");
+  CHECK(freeName("delay", table(), names) == "delay1");
+  CHECK(freeName("Red", table(), {}) == "myRed");
 }

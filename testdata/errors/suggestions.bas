@@ -21,3 +21,7 @@ print lenght("abc") // expect-error: unknown function 'lenght'; did you mean 'le
 // After goto and gosub: labels.
 goto Strat // expect-error: undefined label 'Strat'; did you mean 'Start'?
 Start:
+// A built-in's name for a variable: which built-in it is, and a name the program does not use.
+length = 100 // expect-error: cannot assign to 'length': it is a built-in function (length(s): number of characters); use another name, such as 'myLength'
+for Red = 1 to 2 // expect-error: cannot assign to 'Red': it is a built-in constant (Red: colour 4); use another name, such as 'myRed'
+next
