@@ -1,7 +1,9 @@
 #include "cli_errors.h"
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -61,6 +63,41 @@ std::vector<std::string> optionNames(const CLI::App& sub) {
   return names;
 }
 
+/// The program `word` names when it stands where a command belongs (`rb square.bas`, or
+/// `rb square` beside square.bas), or "" when it names none.
+std::string programNamed(std::string_view word) {
+  namespace fs = std::filesystem;
+  auto endsWithBas = [](std::string_view w) {
+    if (w.size() < 4) return false;
+    std::string tail(w.substr(w.size() - 4));
+    for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return tail == ".bas";
+  };
+  if (endsWithBas(word)) return std::string(word);
+  std::error_code ec;
+  std::string withBas = std::string(word) + ".bas";
+  if (!word.empty() && fs::is_regular_file(withBas, ec)) return withBas;
+  return "";
+}
+
+/// `rb run FILE ARGS...` as it could be typed again (arguments with spaces or quotes quoted).
+std::string runCommandLine(const std::string& file, int argc, char** argv) {
+  auto shellWord = [](std::string_view a) {
+    bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                   "0123456789-_./=:,+%@") == std::string_view::npos;
+    if (plain) return std::string(a);
+    std::string q = "\"";
+    for (char c : a) {
+      if (c == '"' || c == '\\' || c == '$' || c == '`') q += '\\';
+      q += c;
+    }
+    return q + '"';
+  };
+  std::string line = "rb run " + shellWord(file);
+  for (int i = 2; i < argc; ++i) line += " " + shellWord(argv[i]);
+  return line;
+}
+
 bool looksLikeOption(std::string_view a) {
   if (a.size() < 2 || a[0] != '-') return false;
   // "-5" or "-.5" is a number (a negative value), not an option.
@@ -93,9 +130,14 @@ std::optional<int> precheckCommandLine(CLI::App& app, int argc, char** argv) {
   CLI::App* sub = nullptr;
   for (CLI::App* s : app.get_subcommands([](const CLI::App*) { return true; }))
     if (s->get_name() == first) sub = s;
-  if (!sub)
+  if (!sub) {
+    // A program where the command belongs: the command is most likely run.
+    if (std::string program = programNamed(first); !program.empty())
+      return usageError(nullptr, "'" + std::string(first) + "' is not an rb command; did you mean '" +
+                                     runCommandLine(program, argc, argv) + "'?");
     return usageError(nullptr, "'" + std::string(first) + "' is not an rb command" +
                                    didYouMean(first, commandNames(app)));
+  }
   // Options of the command: an unknown one is named (CLI11 would blame the file after it).
   for (int i = 2; i < argc; ++i) {
     std::string_view a = argv[i];

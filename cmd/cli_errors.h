@@ -10,8 +10,9 @@
 namespace rb::cli {
 
 /// Before CLI11 parses: no command at all (prints the usage), `rb help [COMMAND]`, an unknown
-/// command, an unknown option of a known command. Returns the exit code when rb should stop
-/// here (the message printed), nullopt to go on parsing.
+/// command (a program where the command belongs, `rb square.bas`, suggests `rb run`), an
+/// unknown option of a known command. Returns the exit code when rb should stop here (the
+/// message printed), nullopt to go on parsing.
 std::optional<int> precheckCommandLine(CLI::App& app, int argc, char** argv);
 
 /// Makes CLI11's own failures (a missing file, a bad value) print in rb's form.

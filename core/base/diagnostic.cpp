@@ -33,7 +33,7 @@ Diagnostic& DiagnosticList::add(Diagnostic d) {
   }
   if (d.severity == Severity::Error) {
     ++errorCount_;
-    errorLines_.insert((uint64_t(d.loc.file) << 32) | d.loc.line);
+    errorLines_.try_emplace(lineKey(d.loc), items_.size());
   }
   if (d.severity == Severity::Warning) ++warningCount_;
   items_.push_back(std::move(d));
@@ -60,6 +60,16 @@ void DiagnosticList::sort() {
   items_.clear();
   for (auto& g : groups)
     for (auto& d : g) items_.push_back(std::move(d));
+  errorLines_.clear();
+  for (size_t i = 0; i < items_.size(); ++i)
+    if (items_[i].severity == Severity::Error) errorLines_.try_emplace(lineKey(items_[i].loc), i);
+}
+
+Diagnostic* DiagnosticList::firstErrorAt(SourceLoc loc) {
+  auto it = errorLines_.find(lineKey(loc));
+  if (it == errorLines_.end() || it->second >= items_.size()) return nullptr;
+  Diagnostic& d = items_[it->second];
+  return d.loc == loc ? &d : nullptr;
 }
 
 const char* severityName(Severity s) {

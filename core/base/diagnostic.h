@@ -10,7 +10,7 @@
 
 #include <cstdint>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "base/source.h"
@@ -65,8 +65,12 @@ class DiagnosticList {
   /// True when an error was already reported on that line (so a parser can stay quiet about
   /// the consequences of a lexical error).
   bool hasErrorOnLine(uint32_t file, uint32_t line) const {
-    return errorLines_.count((uint64_t(file) << 32) | line) > 0;
+    return errorLines_.count(lineKey(SourceLoc{file, line, 0})) > 0;
   }
+  /// The first error reported on the line of `loc` when it starts at `loc`, else nullptr: for
+  /// adding to a message what a later stage learns (the compiler, which block a misspelt
+  /// closer leaves open). Valid until the next add or sort.
+  Diagnostic* firstErrorAt(SourceLoc loc);
   size_t errorCount() const { return errorCount_; }
   size_t warningCount() const { return warningCount_; }
   const std::vector<Diagnostic>& all() const { return items_; }
@@ -74,8 +78,10 @@ class DiagnosticList {
   void sort();
 
  private:
+  static uint64_t lineKey(SourceLoc loc) { return (uint64_t(loc.file) << 32) | loc.line; }
   std::vector<Diagnostic> items_;
-  std::unordered_set<uint64_t> errorLines_;
+  /// The lines with an error ((file << 32) | line), each with the index of its first error.
+  std::unordered_map<uint64_t, size_t> errorLines_;
   size_t errorCount_ = 0;
   size_t warningCount_ = 0;
   bool capped_ = false;

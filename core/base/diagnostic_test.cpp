@@ -104,3 +104,23 @@ TEST_CASE("program text: BOM skipped, Windows-1252 converted, binary detected", 
   DecodedText ctl = decodeSourceText("\x01\x02\x03\x04 abc");
   CHECK(ctl.kind == DecodedText::Binary);
 }
+
+TEST_CASE("the first error of a line can be found again, also after sorting", "[diagnostic]") {
+  DiagnosticList diags;
+  diags.warning({0, 3, 1}, "a warning");
+  diags.error({0, 4, 1}, "first on line 4");
+  diags.error({0, 4, 9}, "second on line 4");
+  diags.error({0, 2, 5}, "on line 2");
+  REQUIRE(diags.firstErrorAt({0, 4, 1}));
+  diags.firstErrorAt({0, 4, 1})->message += " (more)";
+  CHECK(diags.all()[1].message == "first on line 4 (more)");
+  CHECK(diags.firstErrorAt({0, 4, 9}) == nullptr);  // not the first of its line
+  CHECK(diags.firstErrorAt({0, 3, 1}) == nullptr);  // a warning
+  CHECK(diags.firstErrorAt({1, 4, 1}) == nullptr);  // another file
+  diags.sort();
+  REQUIRE(diags.firstErrorAt({0, 2, 5}));
+  CHECK(diags.firstErrorAt({0, 2, 5})->message == "on line 2");
+  CHECK(diags.firstErrorAt({0, 4, 1})->message == "first on line 4 (more)");
+  CHECK(diags.hasErrorOnLine(0, 4));
+  CHECK_FALSE(diags.hasErrorOnLine(0, 3));
+}

@@ -89,7 +89,9 @@ struct Stmt {
   std::vector<Stmt*> body;    ///< IfLine: then, else
   bool paren = false;         ///< Call/Command written with parentheses around the arguments
   bool broken = false;        ///< a block opener whose line had a syntax error (already
-                              ///< reported): it only keeps its closer paired
+                              ///< reported): it only keeps its closer paired; or, with
+                              ///< `name` set to the word as written, a closer guessed from
+                              ///< a misspelt word (Next, Wend, Until, EndIf: `nxt`)
 };
 
 /// Owns every node of a program; pointers stay valid for its lifetime (or until reset()). Nodes

@@ -294,6 +294,9 @@ std::optional<std::string> BuiltinTable::misuse(std::string_view name, NamePlace
   }
   message += ": it is a built-in ";
   message += kindWord(b->kind);
+  // Where the program names something of its own, which built-in took the name.
+  if (place == NamePlace::Store || place == NamePlace::Array || place == NamePlace::Sub)
+    message += " (" + b->usage() + ": " + std::string(b->help.substr(0, b->help.find("; "))) + ")";
   if (!how.empty()) message += "; " + how;
   return message;
 }

@@ -104,7 +104,9 @@ class BuiltinTable {
   /// The one place that decides what a built-in name may be: nullopt when `name` may stand at
   /// `place` (it names no built-in, or a command as a statement, a constant as a value, a
   /// function called, a constant as a sub name), otherwise the error, always shaped
-  /// "cannot <use> 'name': it is a built-in <kind>[; <how to use it>]".
+  /// "cannot <use> 'name': it is a built-in <kind>[ (<which>)][; <how to use it>]", where
+  /// <which>, for a place where the program names a variable, an array or a sub of its own, is
+  /// the built-in's usage and help ("length(s): number of characters").
   std::optional<std::string> misuse(std::string_view name, NamePlace place) const;
 
  private:

@@ -86,8 +86,15 @@ TEST_CASE("one rule says where a built-in name may stand, with one message shape
         "cannot use 'rforward' as a variable: it is a built-in command");
   CHECK(misuse("rForward", NamePlace::Call) ==
         "cannot call 'rForward' as a function: it is a built-in command; write it as a statement");
-  CHECK(misuse("mid", NamePlace::Array) == "cannot use 'mid' as an array: it is a built-in function");
-  CHECK(misuse("Red", NamePlace::Store) == "cannot assign to 'Red': it is a built-in constant");
-  CHECK(misuse("rForward", NamePlace::Store) == "cannot assign to 'rForward': it is a built-in command");
-  CHECK(misuse("mid", NamePlace::Sub) == "cannot use 'mid' as a sub name: it is a built-in function");
+  // Where the program names something of its own, which built-in has the name: its usage and
+  // its help up to the first "; ".
+  CHECK(misuse("mid", NamePlace::Array) ==
+        "cannot use 'mid' as an array: it is a built-in function (mid(s, start [, count]): part of s)");
+  CHECK(misuse("Red", NamePlace::Store) == "cannot assign to 'Red': it is a built-in constant (Red: colour 4)");
+  CHECK(misuse("rForward", NamePlace::Store) ==
+        "cannot assign to 'rForward': it is a built-in command (rForward distance: moves)");
+  CHECK(misuse("mid", NamePlace::Sub) ==
+        "cannot use 'mid' as a sub name: it is a built-in function (mid(s, start [, count]): part of s)");
+  CHECK(misuse("GetKey", NamePlace::Store) ==
+        "cannot assign to 'GetKey': it is a built-in command (GetKey [prompt,] &key: waits for a key)");
 }

@@ -24,7 +24,51 @@ struct NameUses {
   bool written = false;
   bool read = false;
   SourceLoc firstRead;
+  /// The first read that is a built-in's argument, and its parameter: where a constant may
+  /// have been meant (`rPen dwn`).
+  const Builtin* argOf = nullptr;
+  std::string_view param;
 };
+
+/// A variable standing alone as the argument of a built-in: its position and parameter.
+struct ArgumentPlace {
+  SourceLoc loc;
+  const Builtin* builtin;
+  std::string_view param;
+};
+
+/// The bare names of `e` (and within it) that are arguments of built-in functions.
+void builtinArguments(const ast::Expr* e, const BuiltinTable& builtins, std::vector<ArgumentPlace>& out) {
+  if (!e) return;
+  if (e->kind == ast::ExprKind::Call) {
+    if (const Builtin* b = builtins.find(e->text, BuiltinKind::Function); b && !b->printList) {
+      int n = static_cast<int>(e->args.size());
+      for (int i = 0; i < n && b->acceptsCount(n); ++i)
+        if (e->args[static_cast<size_t>(i)]->kind == ast::ExprKind::Var)
+          out.push_back({e->args[static_cast<size_t>(i)]->loc, b, b->param(n, i).name});
+    }
+  }
+  for (const ast::Expr* a : e->args) builtinArguments(a, builtins, out);
+}
+
+/// The same for a statement: the arguments of a built-in command and of the functions in it.
+void builtinArguments(const ast::Stmt& s, const BuiltinTable& builtins, std::vector<ArgumentPlace>& out) {
+  if (s.kind == ast::StmtKind::Command) {
+    const Builtin* b = builtins.find(s.name, BuiltinKind::Command);
+    int n = static_cast<int>(s.exprs.size());
+    if (b && !b->printList && b->acceptsCount(n)) {
+      for (int i = 0; i < n; ++i) {
+        const ast::Expr* a = s.exprs[static_cast<size_t>(i)];
+        if (a->kind == ast::ExprKind::Var && !b->param(n, i).out) out.push_back({a->loc, b, b->param(n, i).name});
+      }
+    }
+  }
+  builtinArguments(s.target, builtins, out);
+  builtinArguments(s.value, builtins, out);
+  for (const ast::Expr* e : s.exprs) builtinArguments(e, builtins, out);
+  for (const ast::Stmt* b : s.body) builtinArguments(*b, builtins, out);
+}
+
 struct ScopeUse {
   std::unordered_map<std::string_view, NameUses> names;  // reported in the order of names
 };
@@ -63,6 +107,7 @@ struct Linter::State {
   std::unordered_set<std::string_view> params;
   std::vector<ast::SubSpan>::const_iterator nextSpan;
   size_t subEnd = 0;
+  std::vector<ArgumentPlace> arguments;  ///< of the statement being read
 };
 
 Linter::Linter(const LoadedProgram& program) : st_(std::make_unique<State>(program)) {
@@ -102,6 +147,8 @@ void Linter::statement(const ast::Stmt& s, size_t i) {
   };
   // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
   const std::unordered_set<std::string_view>& arrays = st.program.arrays;
+  st.arguments.clear();
+  builtinArguments(s, st.program.builtins, st.arguments);
   ast::forEachName(s, st.program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
     bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !st.params.count(name));
     ScopeUse* scope = st.local && !globalName ? st.local : &st.global;
@@ -110,6 +157,14 @@ void Linter::statement(const ast::Stmt& s, size_t i) {
     if ((use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) && !uses.read) {
       uses.read = true;
       uses.firstRead = loc;
+    }
+    if (use == ast::NameUse::Read && !uses.argOf) {
+      for (const ArgumentPlace& a : st.arguments) {
+        if (a.loc != loc) continue;
+        uses.argOf = a.builtin;
+        uses.param = a.param;
+        break;
+      }
     }
   }, isByRef);
 }
@@ -122,17 +177,22 @@ void Linter::finish(DiagnosticList& diags) {
 
   auto report = [&](const ScopeUse& scope, const char* where) {
     std::vector<std::string_view> written;
-    std::vector<std::pair<std::string_view, SourceLoc>> reads;  // read and never written
+    std::vector<std::pair<std::string_view, const NameUses*>> reads;  // read and never written
     for (const auto& [name, uses] : scope.names) {
       if (uses.written) written.push_back(name);
-      else if (uses.read) reads.emplace_back(name, uses.firstRead);
+      else if (uses.read) reads.emplace_back(name, &uses);
     }
     std::sort(written.begin(), written.end());
     std::sort(reads.begin(), reads.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [name, loc] : reads) {
+    const BuiltinTable& builtins = st.program.builtins;
+    for (const auto& [name, uses] : reads) {
       if (onBrokenLines.count(std::string(name))) continue;
+      SourceLoc loc = uses->firstRead;
       std::string msg = "variable '" + std::string(name) + "' is read but never assigned" + where;
-      std::string hint = closestMatch(name, written, true);
+      // A variable of the scope, or a constant (first those that fit the argument it is).
+      std::vector<std::string_view> fitting;
+      if (uses->argOf) fitting = constantsFitting(builtins, *uses->argOf, uses->param);
+      std::string hint = suggestValue(name, fitting, written, builtins);
       if (!hint.empty()) {
         msg += "; did you mean '" + hint + "'?";
         if (editDistance(name, hint, true) == 0) msg += " (names are case-sensitive)";

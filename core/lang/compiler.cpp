@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "lang/compiler_internal.h"
+#include "lang/suggest.h"
 
 namespace rb {
 
@@ -82,7 +83,7 @@ void Compiler::declare() {
         diags_.note(p_.subs[subIndex_[s.name]].loc, quoted(s.name) + " was first defined here");
         continue;
       }
-      if (std::optional<std::string> why = builtins_.misuse(s.name, NamePlace::Sub))
+      if (std::optional<std::string> why = misuse(s.name, NamePlace::Sub, true))
         diags_.error(s.nameLoc, std::move(*why), "rb-misplaced-builtin");
       SubInfo info;
       info.name = std::string(s.name);
@@ -182,7 +183,27 @@ void Compiler::fail(Diagnostic d, std::vector<Diagnostic> notes) {
 /// Fails when `name` is a built-in's and cannot stand at `place` (the rule is
 /// BuiltinTable::misuse).
 void Compiler::checkName(std::string_view name, SourceLoc loc, NamePlace place) {
-  if (std::optional<std::string> why = builtins_.misuse(name, place)) fail(loc, std::move(*why), "rb-misplaced-builtin");
+  bool naming = place == NamePlace::Store || place == NamePlace::Array;
+  if (std::optional<std::string> why = misuse(name, place, naming)) fail(loc, std::move(*why), "rb-misplaced-builtin");
+}
+
+/// BuiltinTable::misuse; where the program names a variable, an array or a sub of its own
+/// (`naming`), the message ends with a name it could use instead, one that is no built-in's
+/// and that the program uses nowhere.
+std::optional<std::string> Compiler::misuse(std::string_view name, NamePlace place, bool naming) {
+  std::optional<std::string> why = builtins_.misuse(name, place);
+  if (why && naming) {
+    if (!programNames_) {  // once, the first time
+      programNames_ = std::make_unique<std::unordered_set<std::string>>();
+      ast::Arena arena;
+      for (ast::StmtCursor c = lp_.cursor(arena); !c.done();) {
+        arena.reset();
+        addNamesOf(*c.next(), *programNames_);
+      }
+    }
+    *why += "; use another name, such as '" + freeName(name, builtins_, *programNames_) + "'";
+  }
+  return why;
 }
 
 /// A target that receives a value: a variable, or an element of an array.

@@ -96,7 +96,7 @@ Block& Compiler::openIf(const Stmt& s, const char* word) {
 
 void Compiler::forStmt(const Stmt& s) {
   // Reported, but the loop still pairs with its next.
-  if (std::optional<std::string> why = builtins_.misuse(s.target->text, NamePlace::Store))
+  if (std::optional<std::string> why = misuse(s.target->text, NamePlace::Store, true))
     diags_.error(s.target->loc, std::move(*why), "rb-misplaced-builtin");
   uint32_t var = variable(s.target->text);
   uint32_t limit;
@@ -237,6 +237,11 @@ void Compiler::closeBlocksAtEnd(SourceLoc where) {
 /// A block statement with a syntax error: the program will not run, so only the pairing
 /// matters (no second error for the same mistake).
 void Compiler::brokenOpener(const Stmt& s) {
+  if (!s.name.empty() && (s.kind == StmtKind::Next || s.kind == StmtKind::Wend ||
+                          s.kind == StmtKind::Until || s.kind == StmtKind::EndIf)) {
+    guessedCloser(s);
+    return;
+  }
   switch (s.kind) {
     case StmtKind::If: blocks_.emplace_back(Block::If, &s); break;
     case StmtKind::For: blocks_.emplace_back(Block::For, &s); break;
@@ -245,6 +250,23 @@ void Compiler::brokenOpener(const Stmt& s) {
     case StmtKind::Until: closeLoop(s, Block::Repeat, "until", "repeat"); break;
     default: break;
   }
+}
+
+/// A misspelt closer (`nxt`, which the parser reported as an unknown command with "did you
+/// mean 'next'?"): when the innermost open block waits for that closer, it closes the block
+/// and the parser's error says so, "(the for at line 4 has no next)"; the block is not
+/// reported again as unclosed at the end of the file. Otherwise it is left alone.
+void Compiler::guessedCloser(const Stmt& s) {
+  Block::Kind kind = s.kind == StmtKind::Next ? Block::For
+                     : s.kind == StmtKind::Wend ? Block::While
+                     : s.kind == StmtKind::Until ? Block::Repeat
+                                                  : Block::If;
+  if (blocks_.empty() || blocks_.back().kind != kind) return;
+  const Block& b = blocks_.back();
+  if (Diagnostic* d = diags_.firstErrorAt(s.loc); d && d->code == "rb-unknown-command")
+    d->message += std::string(" (the ") + blockWord(b) + " at " + lineOf(b.stmt->loc) + " has no " +
+                  closerWord(b) + ")";
+  blocks_.pop_back();
 }
 
 // ---------------------------------------------------------------- labels, goto and gosub

@@ -13,6 +13,8 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -117,6 +119,7 @@ class Compiler {
   /// Reports `d` (an error) with its notes and abandons the statement.
   [[noreturn]] void fail(Diagnostic d, std::vector<Diagnostic> notes = {});
   void checkName(std::string_view name, SourceLoc loc, NamePlace place);
+  std::optional<std::string> misuse(std::string_view name, NamePlace place, bool naming);
   void checkTarget(const Expr& target);
   uint32_t emit(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc, uint16_t count = 0);
   uint32_t emitTransfer(Op op, uint32_t a, uint32_t b, uint32_t c, SourceLoc loc);
@@ -180,6 +183,7 @@ class Compiler {
   void gotoOrGosub(const Stmt& s);
   void label(const Stmt& s);
   void brokenOpener(const Stmt& s);
+  void guessedCloser(const Stmt& s);
   Block& openIf(const Stmt& s, const char* word);
   Block* innermostLoop();
   Block closeLoop(const Stmt& s, Block::Kind kind, const char* closer, const char* opener);
@@ -230,6 +234,8 @@ class Compiler {
   SourceLoc lastLoc_;      ///< the source position of the last one
 
   std::vector<Block> blocks_;
+  /// Every name the program uses, lower case, once a free name is wanted (misuse).
+  std::unique_ptr<std::unordered_set<std::string>> programNames_;
   std::map<std::string_view, LabelInfo> labels_;
   std::vector<LabelFixup> labelFixups_;
   /// A Move that copies a caller's variable into a by-reference parameter before a call.

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "lang/abandon.h"
 #include "lang/builtins.h"
@@ -146,9 +147,22 @@ class Parser {
   /// After a syntax error in a line that opens a block (for, while, repeat, a block if, sub) or
   /// closes one with a condition (until), keeps a placeholder so that the blocks still pair
   /// and no second, misleading error is reported.
+  ///
+  /// A misspelt closer (`nxt`, reported as an unknown command with "did you mean 'next'?") is
+  /// kept the same way, as a broken closer with the word in `name`: the compiler lets it close
+  /// the block it would close, and that block is not reported again as unclosed.
   void keepBlockOpener(size_t start, std::vector<Stmt*>& out) {
     size_t i = start;
     if (toks_[i].kind == Tok::Ident && toks_[i + 1].kind == Tok::Colon) i += 2;  // a label
+    std::optional<GuessedCloser> closer = std::exchange(guessedCloser_, std::nullopt);
+    if (closer && closer->loc == toks_[i].loc) {  // the line's statement, not a single-line if's
+      Stmt* s = newStmt(closer->kind, toks_[i].loc);
+      s->broken = true;
+      s->name = toks_[i].text;
+      s->nameLoc = toks_[i].loc;
+      out.push_back(s);
+      return;
+    }
     StmtKind kind;
     switch (toks_[i].kind) {
       case Tok::KwFor: kind = StmtKind::For; break;
@@ -585,7 +599,22 @@ class Parser {
     std::string msg = "unknown command '" + std::string(name.text) + "'";
     std::string hint = suggestCommand(builtins_, name.text);
     if (!hint.empty()) msg += "; did you mean '" + hint + "'?";
+    // A misspelt closer ("nxt" for next) still closes its block (see keepBlockOpener).
+    std::optional<StmtKind> closer = closerKind(hint);
+    if (closer && !diags_.hasErrorOnLine(name.loc.file, name.loc.line))
+      guessedCloser_ = GuessedCloser{*closer, name.loc};
     fail(name.loc, msg, "rb-unknown-command", hint, name.text.size());
+  }
+
+  /// The closer a keyword is (`next`, `wend`, `until`, `endif`), if it is one.
+  static std::optional<StmtKind> closerKind(std::string_view word) {
+    switch (keywordKind(word)) {
+      case Tok::KwNext: return StmtKind::Next;
+      case Tok::KwWend: return StmtKind::Wend;
+      case Tok::KwUntil: return StmtKind::Until;
+      case Tok::KwEndIf: return StmtKind::EndIf;
+      default: return std::nullopt;
+    }
   }
 
   // assignment -> lvalue ('=' | '+=' | '-=' | '*=' | '/=') expr | lvalue ('++' | '--')
@@ -802,6 +831,12 @@ class Parser {
   TokenLines& lines_;
   std::vector<Token> toks_;  ///< the line being parsed
   std::vector<Expr*> items_;  ///< argument lists being gathered (see argList)
+  /// The closer the unknown command just reported looks like, and where (see keepBlockOpener).
+  struct GuessedCloser {
+    StmtKind kind;
+    SourceLoc loc;
+  };
+  std::optional<GuessedCloser> guessedCloser_;
   ast::Arena& arena_;
   const BuiltinTable& builtins_;
   DiagnosticList& diags_;

@@ -119,6 +119,22 @@ TEST_CASE("one error per bad line, parsing goes on", "[parser]") {
   CHECK(p->stmts.size() == 1);
 }
 
+TEST_CASE("a misspelt closer is kept as a broken closer that names the word", "[parser]") {
+  auto p = parse("nxt\nL: wnd\nif 1 then nxt\nendf 5\nprnt 1\n");
+  REQUIRE(p->diags.errorCount() == 5);
+  CHECK(p->diags.all()[0].message == "unknown command 'nxt'; did you mean 'next'?");
+  // nxt, the label and wnd, endf: the single-line if's nxt and prnt leave nothing.
+  REQUIRE(p->stmts.size() == 4);
+  CHECK(p->stmts[0]->kind == StmtKind::Next);
+  CHECK(p->stmts[0]->broken);
+  CHECK(p->stmts[0]->name == "nxt");
+  CHECK(p->stmts[1]->kind == StmtKind::Label);
+  CHECK(p->stmts[2]->kind == StmtKind::Wend);
+  CHECK(p->stmts[2]->name == "wnd");
+  CHECK(p->stmts[3]->kind == StmtKind::EndIf);
+  CHECK(p->stmts[3]->broken);
+}
+
 TEST_CASE("deep nesting is an error, not a crash", "[parser]") {
   auto p = parse("x = " + std::string(5000, '(') + "1" + std::string(5000, ')'));
   REQUIRE(p->diags.errorCount() == 1);

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <set>
 
 #include "lang/suggest.h"
@@ -39,6 +40,27 @@ TEST_CASE("edit distance and suggestions", "[suggest]") {
   CHECK(suggestCommand(standardBuiltins(), "xyzzy").empty());
   CHECK(closestMatch("InitializeRobot", {"InitializeSimulator", "DrawSquare", "Main"}, false) ==
         "InitializeSimulator");
+}
+
+TEST_CASE("the standard table's suggestions: statements, fitting constants", "[suggest]") {
+  const BuiltinTable& t = standardBuiltins();
+  CHECK(suggestCommand(t, "nxt") == "next");  // not `not`, an operator
+  CHECK(suggestCommand(t, "wnd") == "wend");
+  CHECK(suggestCommand(t, "rForwad") == "rForward");
+  auto fitting = [&](std::string_view name, std::string_view param) {
+    return constantsFitting(t, *t.find(name, BuiltinKind::Command), param);
+  };
+  CHECK(fitting("rPen", "state") == std::vector<std::string_view>{"Up", "Down"});
+  CHECK(fitting("flip", "mode") == std::vector<std::string_view>{"On", "Off"});
+  std::vector<std::string_view> text = fitting("xyText", "style");
+  CHECK(std::find(text.begin(), text.end(), "fs_Bold") != text.end());
+  CHECK(std::find(text.begin(), text.end(), "Red") == text.end());
+  std::vector<std::string_view> colours = fitting("rLocate", "colour");
+  CHECK(colours.size() == 16);
+  CHECK(std::find(colours.begin(), colours.end(), "LightGreen") != colours.end());
+  CHECK(fitting("rForward", "distance").empty());
+  CHECK(suggestValue("dwn", fitting("rPen", "state"), {}, t) == "Down");
+  CHECK(suggestValue("yelow", colours, {"yellowish"}, t) == "Yellow");
 }
 
 TEST_CASE("a bounded edit distance is the distance, or bound + 1 beyond it", "[suggest]") {

@@ -25,6 +25,6 @@ endif // expect-error: endif does not match the open for at line 23
 next
 endsub // expect-error: endsub without a sub
 return 5 // expect-error: return with a value outside a sub
-for abs = 1 to 2 // expect-error: cannot assign to 'abs': it is a built-in function
+for abs = 1 to 2 // expect-error: cannot assign to 'abs': it is a built-in function (abs(x): absolute value); use another name, such as 'myAbs'
 next
 while 1 // expect-error: while without wend before the end of the file

@@ -586,6 +586,22 @@ def case_comment_limits(env):
     expect(r.returncode == 0, "granted by the person running rb test", r.stdout)
 
 
+def case_misspelt_closer(env):
+    # A student's misspelt `next`: the reason is that line, which says the loop it leaves
+    # open, not the loop's line (reported before it, as "for without next", until issue 28).
+    prog = env.write("nxt.bas", "// The square, with next misspelt.\nrLocate 400,300\nrInvisible GREEN\n"
+                     "LineWidth 4\nrPen DOWN\nfor n = 1 to 4\n  rForward 120\n  rTurn 90\nnxt\n"
+                     "print \"perimeter \" + 4 * 120\n")
+    code, programs, _ = env.grade(prog)
+    p = programs["nxt.bas"]
+    expect(code == 1 and p["result"] == "fail", f"exit {code}", p)
+    expect(p["reason"] == "rb check finds 1 error: nxt.bas:9:1: unknown command 'nxt'; did you mean 'next'? "
+           "(the for at line 6 has no next)", "reason", p["reason"])
+    r = env.rb_run("test", "-a", ASSIGNMENT, prog)
+    row = next((l for l in r.stdout.splitlines() if "nxt.bas" in l and "FAIL" in l), "")
+    expect("nxt.bas:9:1: unknown command 'nxt'; did you mean 'next'?" in row, "the text report's row", r.stdout)
+
+
 def case_regex_linear(env):
     # A pattern that backtracks for ever in a backtracking engine, against a student's output:
     # RE2 matches in time linear in the line, so the class is graded at once.
