@@ -90,6 +90,9 @@ std::string nameList(const std::vector<std::string_view>& names) {
 
 struct FlowChecks::Impl {
   Impl(const LoadedProgram& p, bool real) : program(p), builtins(p.builtins), realRobot(real) {
+    // Room for a typical program's events at once: memory not written to is never touched.
+    ev.reserve(2 * p.stmtCount() + 16);
+    robotUses.reserve(p.stmtCount() / 2 + 16);
     uint32_t span = 0;
     for (const Declaration& d : p.declarations) {
       if (d.kind != ast::StmtKind::Sub) continue;
@@ -142,7 +145,27 @@ struct FlowChecks::Impl {
     std::vector<std::string_view> names;
     SourceLoc loc;  ///< the first variable
   };
-  std::unordered_map<uint32_t, Cond> conds;  ///< by the While or Until event
+  /// A while or repeat loop being read, and its condition if the loop check can follow it.
+  struct Loop {
+    uint32_t head;
+    bool followed = false;
+    Cond cond;
+  };
+  std::vector<Loop> loops;
+  Cond scratch;  ///< a condition being read
+  /// By variable: its last write (event + 1); the last break, goto, return or end (+ 1). A loop
+  /// none of whose condition's variables is written after its head, and that nothing leaves,
+  /// is a candidate.
+  std::vector<uint32_t> lastWrite;
+  uint32_t lastExit = 0;
+  /// A loop whose condition no statement inside changes and that no statement inside leaves:
+  /// it never ends unless what it calls changes the condition.
+  struct Candidate {
+    uint32_t head, closer;
+    uint32_t scope;  ///< the sub the loop is in (kNone: the main program)
+    Cond cond;
+  };
+  std::vector<Candidate> candidates;
 
   // ---- found by finish()
   size_t n = 0;
@@ -152,15 +175,11 @@ struct FlowChecks::Impl {
   std::vector<bool> subCalled;
   std::vector<Summary> subSums, labelSums;
   std::vector<uint32_t> callSites;  ///< Call and Gosub events, in order
-  struct Candidate {
-    uint32_t head, closer, cond;
-    uint32_t scope;  ///< the sub the loop is in (kNone: the main program)
-  };
-  std::vector<Candidate> candidates;
   size_t work = 0, budget = 0;  ///< events and nodes walked for summaries, and the most allowed
   std::vector<uint32_t> stamp;  ///< by node: the walk that last saw it
   uint32_t stampNow = 0;
-  std::vector<bool> placing;    ///< by node: computePlacing()
+  static constexpr uint8_t kNotKnown = 2;
+  std::vector<uint8_t> placing;  ///< by node: mayPlace(), or kNotKnown
 
   uint32_t checked(size_t v) {
     if (v >= kNone) {
@@ -193,9 +212,7 @@ struct FlowChecks::Impl {
   void statement(const ast::Stmt& s, const Resolve& resolve) {
     events(s, resolve);
     using K = ast::StmtKind;
-    if (s.kind == K::Label) {
-      lastLabel = labelByName.at(s.name);
-    } else {
+    if (s.kind != K::Label) {  // a label is the last label (events())
       afterJump = s.kind == K::End || s.kind == K::Goto || s.kind == K::Return || s.kind == K::Break ||
                   s.kind == K::Continue;
       lastLabel = kNone;
@@ -231,36 +248,36 @@ struct FlowChecks::Impl {
         push(Ev::For);
         break;
       case K::Next: push(Ev::Next); break;
-      case K::While: {
-        uint32_t at = push(Ev::While);
-        condition(s.value, at, resolve);
+      case K::While:
+        beginLoop(push(Ev::While));
+        condition(s.value, resolve);
         expr(s.value);
         push(Ev::WhileTest);
         break;
-      }
-      case K::Wend: push(Ev::Wend); break;
-      case K::Repeat: push(Ev::Repeat); break;
-      case K::Until: {
-        uint32_t at = push(Ev::Until);
-        condition(s.value, at, resolve);
+      case K::Wend: endLoop(push(Ev::Wend)); break;
+      case K::Repeat: beginLoop(push(Ev::Repeat)); break;
+      case K::Until:
+        push(Ev::Until);
+        condition(s.value, resolve);
         expr(s.value);
-        push(Ev::UntilTest);
+        endLoop(push(Ev::UntilTest));
         break;
-      }
-      case K::Break: push(Ev::Break); break;
+      case K::Break: exit(Ev::Break); break;
       case K::Continue: push(Ev::Continue); break;
       case K::Goto:
       case K::Gosub: {
         uint32_t label = labelNumber(s.name);
         jumps.push_back(Jump{label, sub, s.nameLoc.valid() ? s.nameLoc : s.loc, s.kind == K::Gosub});
-        push(s.kind == K::Gosub ? Ev::Gosub : Ev::Goto, checked(jumps.size() - 1));
+        uint32_t jump = checked(jumps.size() - 1);
+        if (s.kind == K::Gosub) push(Ev::Gosub, jump);
+        else exit(Ev::Goto, jump);
         break;
       }
       case K::Return:
         expr(s.value);
-        push(Ev::Return);
+        exit(Ev::Return);
         break;
-      case K::End: push(Ev::End); break;
+      case K::End: exit(Ev::End); break;
       case K::Label: {
         uint32_t label = labelNumber(s.name);
         Label& l = labels[label];
@@ -272,6 +289,7 @@ struct FlowChecks::Impl {
           if (afterJump) l.after = lastLabel;
         }
         push(Ev::Label, label);
+        lastLabel = label;
         break;
       }
       case K::Call:
@@ -315,11 +333,35 @@ struct FlowChecks::Impl {
     if (b.traits & trait::kRealRobot) commPort = true;
   }
 
-  /// Notes a loop condition the loop check can follow: variables, constants and pure functions,
-  /// with at least one variable (a constant condition is written on purpose).
-  void condition(const ast::Expr* e, uint32_t at, const Resolve& resolve) {
-    Cond c;
-    if (conditionNames(e, c, resolve) && !c.vars.empty()) conds.emplace(at, std::move(c));
+  /// An event that may leave a loop.
+  void exit(Ev kind, uint32_t payload = 0) { lastExit = push(kind, payload) + 1; }
+
+  /// Notes the condition of the loop being read, if the loop check can follow it: variables,
+  /// constants and pure functions, with at least one variable (a constant condition is written
+  /// on purpose).
+  void condition(const ast::Expr* e, const Resolve& resolve) {
+    scratch.vars.clear();
+    scratch.names.clear();
+    scratch.loc = SourceLoc{};
+    if (loops.empty() || !conditionNames(e, scratch, resolve) || scratch.vars.empty()) return;
+    loops.back().followed = true;
+    loops.back().cond = scratch;
+  }
+
+  void beginLoop(uint32_t head) {
+    loops.emplace_back();
+    loops.back().head = head;
+  }
+
+  /// The end of the innermost while or repeat loop, at event `closer`.
+  void endLoop(uint32_t closer) {
+    if (loops.empty()) return;  // an error, reported by the compiler
+    Loop loop = std::move(loops.back());
+    loops.pop_back();
+    if (!loop.followed || lastExit > loop.head) return;
+    for (uint32_t var : loop.cond.vars)
+      if (lastWrite[var] > loop.head) return;
+    candidates.push_back(Candidate{loop.head, closer, sub, std::move(loop.cond)});
   }
 
   bool conditionNames(const ast::Expr* e, Cond& c, const Resolve& resolve) {
@@ -366,8 +408,6 @@ struct FlowChecks::Impl {
     };
     std::vector<Open> open;
     std::vector<uint32_t> pending;  // else and elseif events waiting for their endif
-    std::vector<uint32_t> lastWrite(globalVar.size(), 0);  // the last write of each variable + 1
-    uint32_t lastExit = 0;  // the last break, goto, return or end + 1
     uint32_t cur = kNone;
     size_t spans = subDecls.size();
     subEnd.assign(spans, kNone);
@@ -410,7 +450,6 @@ struct FlowChecks::Impl {
           cur = kNone;
           break;
         case Ev::Write:
-          lastWrite[p] = i + 1;
           if (own && globalVar[p]) own->writes.push_back(p);
           break;
         case Ev::Call:
@@ -427,7 +466,6 @@ struct FlowChecks::Impl {
           uint32_t label = jumps[p].label;
           labels[label].used = true;
           if (k == Ev::Gosub) callSites.push_back(i);
-          else lastExit = i + 1;
           if (own) {
             own->callees.push_back(labelNode(label));
             if (k == Ev::Goto) own->flags |= kJumps;
@@ -454,10 +492,9 @@ struct FlowChecks::Impl {
           if (own) own->flags |= kPlaces;
           break;
         case Ev::End:
-          lastExit = i + 1;
           if (own) own->flags |= kEnds;
           break;
-        case Ev::Return: lastExit = i + 1; break;
+        case Ev::Return: break;
         case Ev::Break:
         case Ev::Continue: {
           auto isLoop = [](const Open& o) { return o.kind != Ev::If; };
@@ -467,7 +504,6 @@ struct FlowChecks::Impl {
             break;
           }
           setPayload(i, loop->at);
-          if (k == Ev::Break) lastExit = i + 1;
           break;
         }
         case Ev::If: open.push_back(Open{Ev::If, i, i, pending.size()}); break;
@@ -499,7 +535,6 @@ struct FlowChecks::Impl {
             setPayload(o->at, i);
             if (o->test != kNone) setPayload(o->test, i);
             setPayload(i, o->at);
-            loopCandidate(o->at, o->at, i, cur, lastWrite, lastExit);
             open.pop_back();
           }
           break;
@@ -518,7 +553,6 @@ struct FlowChecks::Impl {
             }
             setPayload(o->test, i);
             setPayload(i, o->at);
-            loopCandidate(o->at, o->test, i, cur, lastWrite, lastExit);
             open.pop_back();
           }
           break;
@@ -539,17 +573,6 @@ struct FlowChecks::Impl {
       s.done = true;
     }
     labelSums.assign(labels.size(), Summary{});
-  }
-
-  /// A loop from `head` to `closer` whose condition (at `cond`) no statement inside changes and
-  /// that no statement inside leaves: a candidate, unless what it calls changes the condition.
-  void loopCandidate(uint32_t head, uint32_t cond, uint32_t closer, uint32_t scope,
-                     const std::vector<uint32_t>& lastWrite, uint32_t lastExit) {
-    auto it = conds.find(cond);
-    if (it == conds.end() || lastExit > head) return;
-    for (uint32_t var : it->second.vars)
-      if (lastWrite[var] > head) return;
-    candidates.push_back(Candidate{head, closer, cond, scope});
   }
 
   /// A jump from code of `scope` into another sub's body: its code runs on a frame not its own,
@@ -644,40 +667,16 @@ struct FlowChecks::Impl {
     return true;
   }
 
-  /// For every sub and label, whether what it runs (with what that calls) may place the robot
-  /// or use it, which stops the program when it is not placed: after it, the robot may be placed.
-  void computePlacing() {
-    size_t nodes = subSums.size() + labels.size();
-    for (uint32_t l = 0; l < labels.size(); ++l) labelSummary(l);
-    // Callers of each node, as one array in node order.
-    std::vector<uint32_t> first(nodes + 1, 0);
-    for (uint32_t node = 0; node < nodes; ++node)
-      for (uint32_t c : summary(node).callees) ++first[c + 1];
-    for (size_t k = 0; k < nodes; ++k) first[k + 1] += first[k];
-    std::vector<uint32_t> callers(first[nodes]);
-    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-    for (uint32_t node = 0; node < nodes; ++node)
-      for (uint32_t c : summary(node).callees) callers[fill[c]++] = node;
-    placing.assign(nodes, false);
-    std::vector<uint32_t> todo;
-    for (uint32_t node = 0; node < nodes; ++node) {
-      if (summary(node).flags & (kPlaces | kMoves | kUnknown)) {
-        placing[node] = true;
-        todo.push_back(node);
-      }
-    }
-    while (!todo.empty()) {
-      uint32_t node = todo.back();
-      todo.pop_back();
-      for (uint32_t k = first[node]; k < first[node + 1]; ++k) {
-        if (placing[callers[k]]) continue;
-        placing[callers[k]] = true;
-        todo.push_back(callers[k]);
-      }
-    }
+  /// Whether what `node` runs (with what that calls) may place the robot, or use it, which stops
+  /// the program when it is not placed: after it, the robot may be placed. Asked only where the
+  /// robot is not placed yet, which in most programs is nowhere past their first lines.
+  bool mayPlace(uint32_t node) {
+    if (node == kNone) return true;
+    if (placing.empty()) placing.assign(subSums.size() + labels.size(), kNotKnown);
+    if (placing[node] == kNotKnown)
+      placing[node] = !walk({node}, [](const Summary& s) { return !(s.flags & (kPlaces | kMoves | kUnknown)); });
+    return placing[node];
   }
-
-  bool mayPlace(uint32_t node) const { return node == kNone || placing[node]; }
 
   /// The node a call or gosub event runs (kNone: a sub the checks do not know).
   uint32_t callee(uint32_t i) const {
@@ -690,7 +689,7 @@ struct FlowChecks::Impl {
 
   void endlessLoops(DiagnosticList& diags) {
     for (const Candidate& c : candidates) {
-      const Cond& cond = conds.at(c.cond);
+      const Cond& cond = c.cond;
       std::vector<uint32_t> roots;
       bool unknown = false;
       auto from = std::upper_bound(callSites.begin(), callSites.end(), c.head);
@@ -734,7 +733,6 @@ struct FlowChecks::Impl {
       if (j.scope != kNone && l.scope == kNone && l.pos != kNone) reach(l.pos, kMaybePlaced);
     }
     reach(0, kUnplaced);
-    computePlacing();
     // Where an if's test goes when it fails: into the next branch, or to the endif.
     auto branch = [&](uint32_t next) {
       Ev k = next < n ? kindOf(ev[next]) : Ev::EndIf;
@@ -887,7 +885,10 @@ FlowChecks::FlowChecks(const LoadedProgram& program, bool realRobot)
 FlowChecks::~FlowChecks() = default;
 
 void FlowChecks::declareVariable(uint32_t var, bool global) {
-  if (var >= impl_->globalVar.size()) impl_->globalVar.resize(var + 1, 0);
+  if (var >= impl_->globalVar.size()) {
+    impl_->globalVar.resize(var + 1, 0);
+    impl_->lastWrite.resize(var + 1, 0);
+  }
   impl_->globalVar[var] = global;
 }
 void FlowChecks::enterSub(size_t span) {
@@ -898,6 +899,7 @@ void FlowChecks::enterSub(size_t span) {
   impl_->afterJump = false;  // a call runs the sub's first statement
   impl_->lastLabel = kNone;
   impl_->sub = impl_->checked(span);
+  impl_->loops.clear();  // a loop left open is an error
   impl_->push(Ev::SubBegin, impl_->sub);
 }
 void FlowChecks::leaveSub() {
@@ -908,7 +910,10 @@ void FlowChecks::leaveSub() {
   impl_->lastLabel = impl_->mainLastLabel;
 }
 void FlowChecks::statement(const ast::Stmt& s, const Resolve& resolve) { impl_->statement(s, resolve); }
-void FlowChecks::write(uint32_t var) { impl_->push(Ev::Write, impl_->checked(var)); }
+void FlowChecks::write(uint32_t var) {
+  uint32_t at = impl_->push(Ev::Write, impl_->checked(var));
+  if (var < impl_->lastWrite.size()) impl_->lastWrite[var] = at + 1;
+}
 void FlowChecks::finish(DiagnosticList& diags) { impl_->finish(diags); }
 
 }  // namespace rb
