@@ -75,10 +75,11 @@ struct Linter::State {
     // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
     bool globalName = ast::isGlobalRef(name) || (program.arrays.count(name) && !params.count(name));
     ScopeUse* scope = local && !globalName ? local : &global;
-    NameUses& u = scope->names[ast::globalName(name)];
+    std::string_view key = ast::globalName(name);
+    NameUses& u = scope->names[key];
     if (u.number == NameUses::kNoNumber) {
       u.number = variables++;
-      flow.declareVariable(u.number, scope == &global);
+      flow.declareVariable(u.number, scope == &global, key);
     }
     return u;
   }
@@ -127,7 +128,7 @@ void Linter::statement(const ast::Stmt& s, size_t i) {
     NameUses& uses = st.uses(name);
     if (use != ast::NameUse::Read) {
       uses.written = true;
-      st.flow.write(uses.number);
+      if (s.kind != ast::StmtKind::Sub) st.flow.write(uses.number);  // parameters: given, not set
     }
     if ((use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) && !uses.read) {
       uses.read = true;

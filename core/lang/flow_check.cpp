@@ -65,6 +65,7 @@ struct Summary {
   bool done = false;
   uint8_t flags = 0;
   std::vector<uint32_t> writes;   ///< variables assigned, sorted (a sub's: only global ones)
+  std::vector<uint32_t> localWrites;  ///< a sub's own variables it assigns, sorted
   std::vector<uint32_t> callees;  ///< nodes: a sub's span, or the number of subs + a label
 };
 
@@ -116,6 +117,7 @@ struct FlowChecks::Impl {
   bool afterJump = false, mainAfterJump = false;
   uint32_t lastLabel = kNone, mainLastLabel = kNone;  ///< the statement before, if it is a label
   std::vector<uint8_t> globalVar;  ///< by variable number
+  std::vector<std::string_view> varNames;  ///< by variable number (a global's without its '_')
   std::unordered_map<std::string_view, uint32_t> subByName;
   std::vector<const Declaration*> subDecls;  ///< by span
   struct Label {
@@ -450,7 +452,7 @@ struct FlowChecks::Impl {
           cur = kNone;
           break;
         case Ev::Write:
-          if (own && globalVar[p]) own->writes.push_back(p);
+          if (own) (globalVar[p] ? own->writes : own->localWrites).push_back(p);
           break;
         case Ev::Call:
           callSites.push_back(i);
@@ -568,8 +570,10 @@ struct FlowChecks::Impl {
     }
     closeBlocks(static_cast<uint32_t>(n));
     for (Summary& s : subSums) {
-      std::sort(s.writes.begin(), s.writes.end());
-      s.writes.erase(std::unique(s.writes.begin(), s.writes.end()), s.writes.end());
+      for (std::vector<uint32_t>* v : {&s.writes, &s.localWrites}) {
+        std::sort(v->begin(), v->end());
+        v->erase(std::unique(v->begin(), v->end()), v->end());
+      }
       s.done = true;
     }
     labelSums.assign(labels.size(), Summary{});
@@ -661,7 +665,7 @@ struct FlowChecks::Impl {
       stamp[node] = stampNow;
       if (++work > budget) return false;
       const Summary& s = summary(node);
-      if (!visit(s)) return false;
+      if (!visit(node, s)) return false;
       for (uint32_t c : s.callees) todo.push_back(c);
     }
     return true;
@@ -674,7 +678,7 @@ struct FlowChecks::Impl {
     if (node == kNone) return true;
     if (placing.empty()) placing.assign(subSums.size() + labels.size(), kNotKnown);
     if (placing[node] == kNotKnown)
-      placing[node] = !walk({node}, [](const Summary& s) { return !(s.flags & (kPlaces | kMoves | kUnknown)); });
+      placing[node] = !walk({node}, [](uint32_t, const Summary& s) { return !(s.flags & (kPlaces | kMoves | kUnknown)); });
     return placing[node];
   }
 
@@ -700,16 +704,29 @@ struct FlowChecks::Impl {
         else roots.push_back(node);
       }
       if (unknown) continue;
-      bool stays = walk(roots, [&](const Summary& s) {
+      std::vector<std::pair<uint32_t, uint32_t>> shadows;  // a sub, and a global it has a local of
+      bool stays = walk(roots, [&](uint32_t node, const Summary& s) {
         if (s.flags & (kEnds | kJumps | kUnknown)) return false;
-        for (uint32_t var : cond.vars)
+        for (uint32_t var : cond.vars) {
           if (std::binary_search(s.writes.begin(), s.writes.end(), var)) return false;
+          if (!globalVar[var]) continue;
+          for (uint32_t local : s.localWrites)
+            if (varNames[local] == varNames[var]) shadows.emplace_back(node, var);
+        }
         return true;
       });
       if (!stays) continue;
       std::string names = nameList(cond.names);
       diags.warning(cond.loc, join({"this loop never ends once it repeats: nothing in it changes ", names}),
                     "rb-endless-loop");
+      // A sub that sets a variable of that name sets its own: the mistake is likely there.
+      for (const auto& [node, var] : shadows) {
+        const Declaration& d = *subDecls[node];
+        std::string_view name = varNames[var];
+        diags.note(d.nameLoc.valid() ? d.nameLoc : d.loc,
+                   join({"sub '", d.name, "' changes its own '", name, "', not the main program's (that is '_",
+                         name, "' in the sub)"}));
+      }
     }
   }
 
@@ -884,12 +901,14 @@ FlowChecks::FlowChecks(const LoadedProgram& program, bool realRobot)
     : impl_(std::make_unique<Impl>(program, realRobot)) {}
 FlowChecks::~FlowChecks() = default;
 
-void FlowChecks::declareVariable(uint32_t var, bool global) {
+void FlowChecks::declareVariable(uint32_t var, bool global, std::string_view name) {
   if (var >= impl_->globalVar.size()) {
     impl_->globalVar.resize(var + 1, 0);
     impl_->lastWrite.resize(var + 1, 0);
+    impl_->varNames.resize(var + 1);
   }
   impl_->globalVar[var] = global;
+  impl_->varNames[var] = name;
 }
 void FlowChecks::enterSub(size_t span) {
   if (impl_->sub == kNone) {

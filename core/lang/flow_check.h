@@ -33,8 +33,9 @@ class FlowChecks {
   /// `_x` are one variable; a sub's own `x` another): given by the Linter, which knows the scopes.
   using Resolve = std::function<uint32_t(std::string_view name)>;
 
-  /// A new variable number, and whether it is a global variable (as opposed to a sub's own).
-  void declareVariable(uint32_t var, bool global);
+  /// A new variable number, whether it is a global variable (as opposed to a sub's own), and its
+  /// name (a global's without its leading '_').
+  void declareVariable(uint32_t var, bool global, std::string_view name);
   /// The statements of sub number `span` (an index into LoadedProgram::subSpans) begin.
   void enterSub(size_t span);
   /// The sub's statements end (before the statement that follows them).
