@@ -83,7 +83,9 @@ int executeCheck(const CheckOptions& opts) {
   for (const std::string& file : files) {
     CompileOptions compile;
     compile.keepCode = opts.dumpCode;  // only the diagnostics are wanted otherwise
-    LoadedFile loaded = loadFile(file, compile, true, true);
+    LintOptions lint;
+    lint.realRobot = opts.target == "rb9";  // a real robot needs no rLocate
+    LoadedFile loaded = loadFile(file, compile, true, true, {}, lint);
     if (opts.target == "rb9" && loaded.program) {
       checkRb9Target(*loaded.program, loaded.diags);
       loaded.diags.sort();

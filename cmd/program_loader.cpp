@@ -8,7 +8,7 @@
 namespace rb::cli {
 
 LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint, bool compact,
-                    const std::vector<std::string>& allowed) {
+                    const std::vector<std::string>& allowed, const LintOptions& lintOptions) {
   LoadedFile out;
   std::string text;
   std::string name = file;
@@ -28,7 +28,7 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
   out.program = loadProgram(name, std::move(text), reader, standardBuiltins(), loadOptions, out.diags);
   if (lint) {
     // One walk over the program for both.
-    Linter linter(*out.program);
+    Linter linter(*out.program, lintOptions);
     CompileOptions withLint = options;
     withLint.onStatement = [&linter](const ast::Stmt& s, size_t i) { linter.statement(s, i); };
     out.compiled = compileProgram(*out.program, withLint, out.diags);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "lang/bytecode.h"
+#include "lang/checker.h"
 #include "lang/compiler.h"
 #include "base/diagnostic.h"
 #include "lang/loader.h"
@@ -25,9 +26,10 @@ struct LoadedFile {
 /// statements in their compact form (LoadOptions::compact: for rb check, which needs only the
 /// diagnostics).
 /// `allowed`: folders the person running rb lets the program include from besides its own folder
-/// tree and the library folders (--allow-files).
+/// tree and the library folders (--allow-files). `lintOptions` go to the checks `lint` adds.
 LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint,
-                    bool compact = false, const std::vector<std::string>& allowed = {});
+                    bool compact = false, const std::vector<std::string>& allowed = {},
+                    const LintOptions& lintOptions = {});
 
 /// Prints diagnostics gcc-style; warnings and notes too unless `errorsOnly`.
 void printDiagnostics(std::FILE* out, const SourceSet& sources, const DiagnosticList& diags,

@@ -42,7 +42,9 @@ grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
 
 /// rb check's view of the program, as `rb check [--target rb9] FILE` reports it.
 void recordCheck(const JobOptions& opts, grade::RunRecord& rec) {
-  LoadedFile checked = loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles);
+  LintOptions lint;
+  lint.realRobot = opts.checkTarget == "rb9";  // a real robot needs no rLocate
+  LoadedFile checked = loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles, lint);
   if (checked.exitCode == exitcode::kNoInput) {
     rec.checkExit = exitcode::kNoInput;
     return;

@@ -187,6 +187,25 @@ TEST_CASE("lsp: diagnostics as rb check gives them, with ranges", "[lsp]") {
   CHECK(out[0]["params"]["diagnostics"].empty());
 }
 
+TEST_CASE("lsp: the warnings about a program's flow, as rb check gives them", "[lsp]") {
+  Session s;
+  s.initialize();
+  json d = s.open(kUri, "rForward 10\nx = 0\nwhile x < 3\n  print x\nwend\n");
+  REQUIRE(d.size() == 2);
+  CHECK(d[0]["code"] == "rb-robot-not-placed");
+  CHECK(d[0]["severity"] == 2);
+  CHECK(d[1]["code"] == "rb-endless-loop");
+  CHECK(d[1]["range"]["start"] == json{{"line", 2}, {"character", 6}});
+  // None while the program has an error: one mistake, one message.
+  std::vector<json> out = s.notify("textDocument/didChange",
+      {{"textDocument", {{"uri", kUri}, {"version", 2}}},
+       {"contentChanges", {{{"text", "rForward 10\nx = 0\nwhile x < 3\n  prnt x\nwend\n"}}}}});
+  REQUIRE(out.size() == 1);
+  json e = out[0]["params"]["diagnostics"];
+  REQUIRE(e.size() == 1);
+  CHECK(e[0]["severity"] == 1);
+}
+
 TEST_CASE("lsp: columns are counted in UTF-16 code units", "[lsp]") {
   Session s;
   s.initialize();

@@ -31,12 +31,27 @@ struct ParamSpec {
   bool out = false;  ///< written `&name`: the argument must be a variable that receives a result
 };
 
+/// What the checks of `rb check` may assume about a built-in (Builtin::traits, or-ed). A row
+/// without traits is assumed to read and change anything: the checks stay quiet about it.
+namespace trait {
+/// A function whose value depends on its arguments alone and that changes nothing (abs, left):
+/// a loop condition made of such calls changes only when its variables do.
+constexpr uint8_t kPure = 1;
+/// Stops the simulator with "the robot has not been placed" before the first rLocate.
+constexpr uint8_t kNeedsRobot = 2;
+/// Places the simulated robot (rLocate).
+constexpr uint8_t kPlacesRobot = 4;
+/// May hand the robot statements to a real robot, which is never placed (rCommPort).
+constexpr uint8_t kRealRobot = 8;
+}  // namespace trait
+
 /// One row of a built-in table.
 struct Builtin {
   Builtin(std::string_view name_, BuiltinKind kind_, std::string_view group_,
-          std::string_view signature_, BuiltinFn fn_, int64_t constant_, std::string_view help_)
+          std::string_view signature_, BuiltinFn fn_, int64_t constant_, std::string_view help_,
+          uint8_t traits_ = 0)
       : name(name_), kind(kind_), group(group_), signature(signature_), fn(fn_),
-        constant(constant_), help(help_) {}
+        constant(constant_), help(help_), traits(traits_) {}
 
   std::string_view name;       ///< canonical spelling, e.g. "rForward"
   BuiltinKind kind;
@@ -48,6 +63,7 @@ struct Builtin {
   BuiltinFn fn;                ///< commands and functions
   int64_t constant;            ///< constants
   std::string_view help;       ///< one line
+  uint8_t traits = 0;          ///< trait:: flags
 
   // Derived from the signature when the table is built:
   int minArgs = 0;

@@ -12,6 +12,7 @@
 
 #include "lang/ast_walk.h"
 #include "lang/builtins.h"
+#include "lang/flow_check.h"
 #include "lang/suggest.h"
 #include "lang/value.h"
 
@@ -21,6 +22,7 @@ namespace {
 
 /// How a scope (the main program or a sub) uses one name.
 struct NameUses {
+  static constexpr uint32_t kNoNumber = 0xffffffffu;
   bool written = false;
   bool read = false;
   SourceLoc firstRead;
@@ -28,6 +30,7 @@ struct NameUses {
   /// have been meant (`rPen dwn`).
   const Builtin* argOf = nullptr;
   std::string_view param;
+  uint32_t number = kNoNumber;  ///< the variable's number for the flow checks
 };
 
 /// A variable standing alone as the argument of a built-in: its position and parameter.
@@ -97,7 +100,8 @@ std::unordered_set<std::string> namesOnErrorLines(const SourceSet& sources, cons
 }  // namespace
 
 struct Linter::State {
-  explicit State(const LoadedProgram& p) : program(p), nextSpan(p.subSpans.begin()) {}
+  State(const LoadedProgram& p, const LintOptions& o)
+      : program(p), nextSpan(p.subSpans.begin()), flow(p, o.realRobot) {}
   const LoadedProgram& program;
   std::unordered_map<std::string_view, std::vector<bool>> byRef;  ///< sub parameters by reference
   ScopeUse global;
@@ -108,9 +112,26 @@ struct Linter::State {
   std::vector<ast::SubSpan>::const_iterator nextSpan;
   size_t subEnd = 0;
   std::vector<ArgumentPlace> arguments;  ///< of the statement being read
+  FlowChecks flow;
+  uint32_t variables = 0;  // numbered so far, for the flow checks
+
+  /// The uses of `name` in the scope being read, numbered for the flow checks.
+  NameUses& uses(std::string_view name) {
+    // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
+    bool globalName = ast::isGlobalRef(name) || (program.arrays.count(name) && !params.count(name));
+    ScopeUse* scope = local && !globalName ? local : &global;
+    std::string_view key = ast::globalName(name);
+    NameUses& u = scope->names[key];
+    if (u.number == NameUses::kNoNumber) {
+      u.number = variables++;
+      flow.declareVariable(u.number, scope == &global, key);
+    }
+    return u;
+  }
 };
 
-Linter::Linter(const LoadedProgram& program) : st_(std::make_unique<State>(program)) {
+Linter::Linter(const LoadedProgram& program, const LintOptions& options)
+    : st_(std::make_unique<State>(program, options)) {
   // Which sub parameters are by reference, for calls.
   for (const Declaration& s : program.declarations) {
     if (s.kind != ast::StmtKind::Sub || s.broken) continue;
@@ -127,9 +148,11 @@ void Linter::statement(const ast::Stmt& s, size_t i) {
   if ((st.local || st.skip) && i == st.subEnd) {
     st.local = nullptr;
     st.skip = false;
+    st.flow.leaveSub();
   }
   if (st.nextSpan != spans.end() && st.nextSpan->begin == i) {
     st.subEnd = st.nextSpan->end;
+    st.flow.enterSub(static_cast<size_t>(st.nextSpan - spans.begin()));
     ++st.nextSpan;
     st.params.clear();
     if (s.broken) {
@@ -145,15 +168,15 @@ void Linter::statement(const ast::Stmt& s, size_t i) {
     auto it = st.byRef.find(sub);
     return it != st.byRef.end() && k < it->second.size() && it->second[k];
   };
-  // Arrays are global: in a sub, an array name is the global array unless it is a parameter.
-  const std::unordered_set<std::string_view>& arrays = st.program.arrays;
   st.arguments.clear();
   builtinArguments(s, st.program.builtins, st.arguments);
+  st.flow.statement(s, [&st](std::string_view name) { return st.uses(name).number; });
   ast::forEachName(s, st.program.builtins, [&](std::string_view name, SourceLoc loc, ast::NameUse use) {
-    bool globalName = ast::isGlobalRef(name) || (arrays.count(name) && !st.params.count(name));
-    ScopeUse* scope = st.local && !globalName ? st.local : &st.global;
-    NameUses& uses = scope->names[ast::globalName(name)];
-    if (use != ast::NameUse::Read) uses.written = true;
+    NameUses& uses = st.uses(name);
+    if (use != ast::NameUse::Read) {
+      uses.written = true;
+      if (s.kind != ast::StmtKind::Sub) st.flow.write(uses.number);  // parameters: given, not set
+    }
     if ((use == ast::NameUse::Read || use == ast::NameUse::ReadWrite) && !uses.read) {
       uses.read = true;
       uses.firstRead = loc;
@@ -204,10 +227,11 @@ void Linter::finish(DiagnosticList& diags) {
   };
   report(st.global, "");
   for (const ScopeUse& s : st.subs) report(s, " in this sub");
+  st.flow.finish(diags);
 }
 
-void lintProgram(const LoadedProgram& program, DiagnosticList& diags) {
-  Linter linter(program);
+void lintProgram(const LoadedProgram& program, DiagnosticList& diags, const LintOptions& options) {
+  Linter linter(program, options);
   ast::Arena scratch;  // statements read back from the compact form, one at a time
   for (ast::StmtCursor c = program.cursor(scratch); !c.done();) {
     scratch.reset();

@@ -9,16 +9,24 @@
 
 namespace rb {
 
+struct LintOptions {
+  /// The program is meant for a real robot (`rb check --target rb9`), which needs no rLocate.
+  bool realRobot = false;
+};
+
 /// Warns about every variable that is read somewhere but assigned nowhere in its scope (the main
 /// program or a sub). Such a read is a runtime error, and usually a case slip: `real` vs `Real`.
-void lintProgram(const LoadedProgram& program, DiagnosticList& diags);
+/// And, in a program without errors, about what its flow shows (flow_check.h): a loop whose
+/// condition nothing in it changes, a robot statement before rLocate, a goto or gosub into a
+/// sub, a sub never called and a label never used.
+void lintProgram(const LoadedProgram& program, DiagnosticList& diags, const LintOptions& options = {});
 
 /// lintProgram() fed one statement at a time, for walking the program once with the compiler
 /// (CompileOptions::onStatement): statement() for every statement in order, then finish() once
 /// the compiler's diagnostics are in.
 class Linter {
  public:
-  explicit Linter(const LoadedProgram& program);
+  explicit Linter(const LoadedProgram& program, const LintOptions& options = {});
   ~Linter();
   Linter(const Linter&) = delete;
   Linter& operator=(const Linter&) = delete;

@@ -114,6 +114,14 @@ std::vector<Builtin> makeTable() {
   appendGraphicsBuiltins(t);
   appendInputBuiltins(t);
   appendSystemBuiltins(t);
+  // Every math and string function is pure but the random numbers, which are the run's: a
+  // watch may evaluate pure functions, and rb check knows a loop condition of them changes
+  // only with its variables.
+  for (Builtin& b : t) {
+    bool family = b.group == "math" || b.group == "string";
+    if (b.kind == K::Function && family && b.name != "random" && b.name != "rRandom")
+      b.traits |= trait::kPure;
+  }
   return t;
 }
 

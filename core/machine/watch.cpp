@@ -23,9 +23,7 @@ struct Watch::Parsed {
 
 bool isPureBuiltin(std::string_view name) {
   const Builtin* b = standardBuiltins().find(name, BuiltinKind::Function);
-  if (!b || (b->group != "math" && b->group != "string")) return false;
-  // The random numbers are the run's: drawing one would change what the program draws next.
-  return b->name != "random" && b->name != "rRandom";
+  return b && (b->traits & trait::kPure);
 }
 
 namespace {

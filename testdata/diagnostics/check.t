@@ -1,4 +1,5 @@
-# rb check's text output: gutter, ranges, rule codes, fix-its, notes, the limit and the summary.
+# rb check's text output: gutter, ranges, rule codes, fix-its, notes, the limit and the summary;
+# the warnings about a program's flow.
 $ rb check --color=never inputs/errors.bas
 inputs/errors.bas:2:11: error: expected ')', found end of line [rb-syntax]
     2 | x = (1 + 2
@@ -38,6 +39,28 @@ inputs/errors.bas:13:1: warning: if without endif before the next sub; the block
       | ^~
 7 errors, 2 warnings
 [exit 65]
+
+$ rb check --color=never inputs/flow.bas
+inputs/flow.bas:2:1: warning: the robot is not placed yet when 'rForward' runs: rLocate x, y places it [rb-robot-not-placed]
+    2 | rForward 100
+      | ^~~~~~~~
+inputs/flow.bas:5:7: warning: this loop never ends once it repeats: nothing in it changes 'sides' [rb-endless-loop]
+    5 | while sides < 4
+      |       ^~~~~
+inputs/flow.bas:9:7: warning: label 'Inner' is inside sub 'Draw': a gosub from outside the sub runs its code without the sub's variables; call the sub, or move the label out of it [rb-jump-into-sub]
+    9 | gosub Inner
+      |       ^~~~~
+inputs/flow.bas:13:1: note: 'Inner' is defined here
+   13 | Inner:
+      | ^~~~~
+inputs/flow.bas:12:5: warning: sub 'Draw' is never called [rb-unused-sub]
+   12 | sub Draw(size)
+      |     ^~~~
+inputs/flow.bas:17:1: warning: label 'Spare' is never used: no goto or gosub jumps to it, so the code after it never runs [rb-unused-label]
+   17 | Spare:
+      | ^~~~~
+5 warnings
+[exit 0]
 
 $ rb check --color=never inputs/include.bas
 In file included from inputs/include.bas:2:
