@@ -856,16 +856,30 @@ struct FlowChecks::Impl {
 
   /// Subs and labels of the main file (not of included libraries) that nothing uses.
   void unused(DiagnosticList& diags) {
+    // A library's idiom (lib/RB-9.bas): its first jump is a goto over its own routines, which
+    // the programs that include it call. What lies between that goto and its label is used
+    // from outside the file, so it is not reported.
+    uint32_t skipFrom = 0, skipTo = 0;
+    for (const Jump& j : jumps) {
+      if (j.loc.file != 0) continue;
+      const Label& target = labels[j.label];
+      if (!j.gosub && j.scope == kNone && target.loc.file == 0 && target.loc.line > j.loc.line) {
+        skipFrom = j.loc.line;
+        skipTo = target.loc.line;
+      }
+      break;
+    }
+    auto jumpedOver = [&](SourceLoc loc) { return loc.line > skipFrom && loc.line < skipTo; };
     for (size_t k = 0; k < subDecls.size(); ++k) {
       const Declaration& d = *subDecls[k];
-      if (d.broken || d.loc.file != 0 || subCalled[k]) continue;
+      if (d.broken || d.loc.file != 0 || subCalled[k] || jumpedOver(d.loc)) continue;
       diags.warning(d.nameLoc.valid() ? d.nameLoc : d.loc, join({"sub '", d.name, "' is never called"}),
                     "rb-unused-sub");
     }
     // A label the code before it falls into is a marker (`Main:`); one it does not is the start
     // of code that only a jump could run.
     for (const Label& l : labels) {
-      if (l.pos == kNone || l.loc.file != 0 || l.used || reached(l)) continue;
+      if (l.pos == kNone || l.loc.file != 0 || l.used || reached(l) || jumpedOver(l.loc)) continue;
       std::string_view why = "' is never used: no goto or gosub jumps to it, so the code after it never runs";
       diags.warning(l.loc, join({"label '", l.name, why}), "rb-unused-label");
     }
