@@ -7,11 +7,13 @@ namespace rb::ast {
 namespace {
 
 using Visit = std::function<void(std::string_view, SourceLoc, NameUse)>;
+using ByRef = std::function<bool(std::string_view, size_t)>;
 
 /// Walks the names of one statement; built-in names are not variables and are skipped.
 class NameWalker {
  public:
-  NameWalker(const BuiltinTable& builtins, const Visit& visit) : builtins_(builtins), visit_(visit) {}
+  NameWalker(const BuiltinTable& builtins, const Visit& visit, const ByRef& byRef)
+      : builtins_(builtins), visit_(visit), byRef_(byRef) {}
 
   void expr(const Expr* e) const {
     if (!e) return;
@@ -21,6 +23,17 @@ class NameWalker {
         break;
       case ExprKind::Index:
         name(e->text, e->loc, NameUse::Read);
+        for (const Expr* a : e->args) expr(a);
+        break;
+      case ExprKind::Call:
+        // A sub's by-reference argument is copied back after the call, as in a call statement.
+        if (!builtins_.find(e->text, BuiltinKind::Function)) {
+          for (size_t i = 0; i < e->args.size(); ++i) {
+            if (byRef_(e->text, i)) target(e->args[i], NameUse::ReadWrite);
+            else expr(e->args[i]);
+          }
+          break;
+        }
         for (const Expr* a : e->args) expr(a);
         break;
       default:
@@ -50,13 +63,14 @@ class NameWalker {
  private:
   const BuiltinTable& builtins_;
   const Visit& visit_;
+  const ByRef& byRef_;
 };
 
 }  // namespace
 
 void forEachName(const Stmt& s, const BuiltinTable& builtins, const Visit& visit,
                  const std::function<bool(std::string_view, size_t)>& isByRefArg) {
-  NameWalker walk(builtins, visit);
+  NameWalker walk(builtins, visit, isByRefArg);
   switch (s.kind) {
     case StmtKind::Assign:
       walk.target(s.target, s.op == Tok::Assign ? NameUse::Write : NameUse::ReadWrite);

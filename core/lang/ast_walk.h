@@ -59,8 +59,9 @@ inline std::string_view globalName(std::string_view name) {
 
 /// Calls `visit(name, loc, use)` for every variable name in `s` (and the statements of a
 /// single-line if). Names of `builtins` are skipped, as are names of called functions. Which
-/// arguments of a built-in command are outputs comes from `builtins`; for sub calls
-/// `isByRefArg(subName, index)` says whether an argument is passed by reference.
+/// arguments of a built-in command are outputs comes from `builtins`; for sub calls (statements
+/// and functions in expressions) `isByRefArg(subName, index)` says whether an argument is
+/// passed by reference.
 void forEachName(const Stmt& s, const BuiltinTable& builtins,
                  const std::function<void(std::string_view, SourceLoc, NameUse)>& visit,
                  const std::function<bool(std::string_view, size_t)>& isByRefArg);

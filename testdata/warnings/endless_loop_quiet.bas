@@ -39,6 +39,9 @@ wend
 while n < 18
   y = NextN()
 wend
+while n < 21 // a by-reference argument of a sub used as a function
+  y = Through(n)
+wend
 
 // Ways out other than the condition: break, goto, end in what it calls (below, last).
 stop = 0
@@ -82,7 +85,7 @@ wend
 repeat
 until 1
 
-print n, v // expect: 187
+print n, v // expect: 217
 gosub Finish
 while stop = 0 // ends through the end in Finish
   gosub Finish
@@ -118,4 +121,9 @@ endsub
 sub NextN()
   _n++
   return _n
+endsub
+
+sub Through(&value)
+  value = value + 1
+  return value
 endsub
