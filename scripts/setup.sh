@@ -23,6 +23,7 @@ test_packages=(
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks
+  neovim                # the Neovim snippet tested in a real (headless) Neovim, Debian 12's 0.7.2
   chromium              # the replays of rb render --animate played in a real browser (headless, driven
                         # over the DevTools protocol on a pipe by testdata/render/replay_browser.py)
 )
@@ -31,10 +32,14 @@ bench_packages=(
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)
   python3-pil           # Pillow, the shapes benchmark's peer (bench/shapes/run.sh)
 )
+# Node.js and npm (Debian's nodejs and npm) unless the machine has them: tools/ holds test tools
+# from npm, installed with `npm ci` from tools/package-lock.json (below).
+if ! command -v npm > /dev/null; then test_packages+=(nodejs npm); fi
+with_tools=0
 for arg in "$@"; do
   case "$arg" in
-    --test) packages+=("${test_packages[@]}") ;;
-    --bench) packages+=("${test_packages[@]}" "${bench_packages[@]}") ;;
+    --test) packages+=("${test_packages[@]}"); with_tools=1 ;;
+    --bench) packages+=("${test_packages[@]}" "${bench_packages[@]}"); with_tools=1 ;;
     *) echo "usage: scripts/setup.sh [--test] [--bench]" >&2; exit 64 ;;
   esac
 done
@@ -46,12 +51,26 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages present"
-  exit 0
+else
+  SUDO=""
+  if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -q
+  $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-SUDO=""
-if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
-echo "setup: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -q
-$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+# Test tools from npm, pinned by tools/package-lock.json: Microsoft's SARIF Multitool, which
+# validates rb's SARIF against the schema and GitHub code scanning's rules. npm runs no install
+# scripts here, so the tool's binary is made executable by hand.
+if [ "$with_tools" = 1 ]; then
+  tools="$(cd "$(dirname "$0")/../tools" && pwd)"
+  if [ ! -x "$tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool" ] ||
+     [ "$tools/package-lock.json" -nt "$tools/node_modules/.package-lock.json" ]; then
+    echo "setup: npm ci in tools/"
+    (cd "$tools" && npm ci --no-audit --no-fund --ignore-scripts)
+    chmod u+x "$tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool"
+  else
+    echo "setup: npm tools present"
+  fi
+fi
