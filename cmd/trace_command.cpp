@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "run_command.h"
 #include "base/diagnostic.h"
 #include "base/text.h"
 #include "exit_codes.h"
