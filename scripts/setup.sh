@@ -16,6 +16,7 @@ packages=(
   libgif-dev            # rb render --animate OUT.gif: giflib writes the animated GIF
   libre2-dev            # rb test: output patterns matched in linear time (RE2)
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
+  dpkg-dev file         # cpack's Debian package (scripts/package.sh): dpkg-shlibdeps finds what rb links
 )
 test_packages=(
   catch2                # unit tests
@@ -39,6 +40,15 @@ for arg in "$@"; do
   esac
 done
 
+# npm packages the tests need (testdata/action/classroom-reporter: GitHub Classroom's reporter
+# runs under node on rb's results). Node.js and npm come from Debian where the machine has none.
+npm_folders=()
+if [[ " $* " == *" --test "* || " $* " == *" --bench "* ]]; then
+  command -v node >/dev/null || packages+=(nodejs)
+  command -v npm >/dev/null || packages+=(npm)
+  npm_folders+=(testdata/action/classroom-reporter)
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -46,12 +56,22 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages present"
-  exit 0
+else
+  SUDO=""
+  if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -q
+  $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-SUDO=""
-if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
-echo "setup: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -q
-$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+# npm ci installs exactly the lock file's versions; skipped when they are already there.
+cd "$(dirname "$0")/.."
+for dir in "${npm_folders[@]}"; do
+  if ! (cd "$dir" && node -e 'const l = require("./package-lock.json");
+      for (const [k, v] of Object.entries(l.packages))
+        if (k && require("./" + k + "/package.json").version !== v.version) process.exit(1);' 2>/dev/null); then
+    echo "setup: npm ci in $dir"
+    (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+done
