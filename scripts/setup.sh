@@ -2,7 +2,8 @@
 # Installs rb's dependencies from Debian packages. Idempotent: packages already present are left
 # alone. Run as root or with sudo available.
 #   scripts/setup.sh           what building and running rb needs (the demo calls this)
-#   scripts/setup.sh --test    also the test tools (scripts/test.sh and .ci/run call this)
+#   scripts/setup.sh --test    also the test tools (scripts/test.sh and .ci/run call this), and
+#                              the npm packages testdata/action/classroom-reporter needs (npm ci)
 #   scripts/setup.sh --bench   also the benchmark peers (bench/*.sh call this)
 set -euo pipefail
 
