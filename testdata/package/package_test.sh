@@ -69,13 +69,14 @@ libs=$(ldd /usr/bin/rb | awk '{print $1}' | sed 's/\.so.*//; s,.*/,,' | sort -u 
 extra=$(tr ' ' '\n' <<<"$libs" | grep -Ev '^(linux-vdso|ld-linux-x86-64|ld-linux-aarch64|ld-linux|libc|libm|)$' || true)
 [ -z "$extra" ] && ok "ldd /usr/bin/rb: $libs" || fail "ldd /usr/bin/rb loads more than libc: $extra"
 
-for f in /usr/share/rb/lib/RB-9.bas /usr/share/man/man1/rb.1 /usr/share/man/man1/rb-test.1; do
+for f in /usr/share/rb/lib/RB-9.bas /usr/share/man/man1/rb.1.gz /usr/share/man/man1/rb-test.1.gz; do
   [ -f "$f" ] && ok "$f" || fail "$f is not installed"
 done
 if command -v man >/dev/null; then
   where=$(man -w rb-test 2>&1)
-  [ "$where" = /usr/share/man/man1/rb-test.1 ] || [ "$where" = /usr/share/man/man1/rb-test.1.gz ] \
-    && ok "man -w rb-test: $where" || fail "man -w rb-test: $where"
+  [ "$where" = /usr/share/man/man1/rb-test.1.gz ] && ok "man -w rb-test: $where" || fail "man -w rb-test: $where"
+  (cd / && MANWIDTH=80 man -P cat rb-test 2>/dev/null | grep -q "rb test") && ok "man rb-test shows the page" \
+    || fail "man rb-test does not show the page"
 fi
 
 # The seed's square (Figure 1.7) and Figure 1.13 (which includes RB-9.bas) from a folder of
@@ -128,12 +129,12 @@ if [ -n "$tgz" ]; then
   got=$(cd "$tmp/work" && RB_LIB_PATH= "$rb" trace fig_1_13_sim.bas 2>&1)
   [ "$got" = "$(cat "$src/testdata/seed/fig_1_13_sim.trace")" ] && ok "$top/bin/rb trace fig_1_13_sim.bas (RB-9.bas from $top/share/rb/lib)" \
     || { fail "unpacked rb trace fig_1_13_sim.bas:"; echo "$got" | head -5; }
-  for f in share/rb/lib/RB-9.bas share/man/man1/rb.1; do
+  for f in share/rb/lib/RB-9.bas share/man/man1/rb.1.gz; do
     [ -f "$tmp/somewhere/$top/$f" ] && ok "$top/$f" || fail "$top/$f is not in the archive"
   done
   if command -v man >/dev/null; then
     where=$(cd / && env -u MANPATH PATH="$tmp/somewhere/$top/bin:/usr/bin:/bin" man -w rb-test 2>&1)
-    [ "$where" = "$tmp/somewhere/$top/share/man/man1/rb-test.1" ] && ok "man -w rb-test with $top/bin on PATH: the archive's page" \
+    [ "$where" = "$tmp/somewhere/$top/share/man/man1/rb-test.1.gz" ] && ok "man -w rb-test with $top/bin on PATH: the archive's page" \
       || fail "man -w rb-test with the archive's bin on PATH: $where"
   fi
 fi
