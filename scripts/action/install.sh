@@ -75,7 +75,7 @@ case "${1:-}" in
     prefix=${2:?usage: install.sh build PREFIX}
     "$src/scripts/setup.sh"
     cmake -S "$src" -B "$src/build-action" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
-    ninja -C "$src/build-action" rb
+    ninja -C "$src/build-action" -j "$(nproc)" rb rb_man_pages
     cmake --install "$src/build-action" --prefix "$prefix" >/dev/null
     out rb "$prefix/bin/rb"
     ;;
