@@ -3,6 +3,7 @@
 # into /usr, depends only on libc) and a relocatable archive (rb-<version>-linux-<arch>.tar.gz:
 # unpack it anywhere; bin/rb finds its library files in ../share/rb/lib).
 # Usage: scripts/package.sh [OUTDIR]   (default: build/packages). Prints the two files' paths.
+# It builds build/ as scripts/build.sh does (Release, tests off); on a built tree it takes seconds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-build/packages}"
