@@ -2,7 +2,8 @@
 # Installs rb's dependencies from Debian packages. Idempotent: packages already present are left
 # alone. Run as root or with sudo available.
 #   scripts/setup.sh           what building and running rb needs (the demo calls this)
-#   scripts/setup.sh --test    also the test tools (scripts/test.sh and .ci/run call this)
+#   scripts/setup.sh --test    also the test tools (scripts/test.sh and .ci/run call this), and
+#                              the npm packages testdata/action/classroom-reporter needs (npm ci)
 #   scripts/setup.sh --bench   also the benchmark peers (bench/*.sh call this)
 set -euo pipefail
 
@@ -16,6 +17,7 @@ packages=(
   libgif-dev            # rb render --animate OUT.gif: giflib writes the animated GIF
   libre2-dev            # rb test: output patterns matched in linear time (RE2)
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
+  dpkg-dev file         # cpack's Debian package (scripts/package.sh): dpkg-shlibdeps finds what rb links
 )
 test_packages=(
   catch2                # unit tests
@@ -32,9 +34,6 @@ bench_packages=(
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)
   python3-pil           # Pillow, the shapes benchmark's peer (bench/shapes/run.sh)
 )
-# Node.js and npm (Debian's nodejs and npm) unless the machine has them: tools/ holds test tools
-# from npm, installed with `npm ci` from tools/package-lock.json (below).
-if ! command -v npm > /dev/null; then test_packages+=(nodejs npm); fi
 with_tools=0
 for arg in "$@"; do
   case "$arg" in
@@ -43,6 +42,15 @@ for arg in "$@"; do
     *) echo "usage: scripts/setup.sh [--test] [--bench]" >&2; exit 64 ;;
   esac
 done
+
+# npm packages the tests need (testdata/action/classroom-reporter: GitHub Classroom's reporter
+# runs under node on rb's results). Node.js and npm come from Debian where the machine has none.
+npm_folders=()
+if [[ " $* " == *" --test "* || " $* " == *" --bench "* ]]; then
+  command -v node >/dev/null || packages+=(nodejs)
+  command -v npm >/dev/null || packages+=(npm)
+  npm_folders+=(testdata/action/classroom-reporter)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -74,3 +82,13 @@ if [ "$with_tools" = 1 ]; then
     echo "setup: npm tools present"
   fi
 fi
+# npm ci installs exactly the lock file's versions; skipped when they are already there.
+cd "$(dirname "$0")/.."  # (tools/ above was found from the script's own folder too)
+for dir in "${npm_folders[@]}"; do
+  if ! (cd "$dir" && node -e 'const l = require("./package-lock.json");
+      for (const [k, v] of Object.entries(l.packages))
+        if (k && require("./" + k + "/package.json").version !== v.version) process.exit(1);' 2>/dev/null); then
+    echo "setup: npm ci in $dir"
+    (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+done
