@@ -70,16 +70,6 @@ Json argList(const std::string& args) {
   return out;
 }
 
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
 }  // namespace
 
 /// What one record of the stream says; the formats render it.
@@ -266,10 +256,10 @@ void TraceWriter::writeCsv(const TraceRecord& r) {
   std::string command = end ? r.limit : r.command;
   std::string col = end || r.event == "output" ? std::to_string(r.loc.col) : "";
   std::string text = r.text;
-  std::string row = (program_.empty() ? "" : csvField(program_) + ",") + std::to_string(seq_) + "," +
-                    csvField(fileName(r.loc)) + "," + std::to_string(r.loc.line) + "," + r.event + "," +
-                    csvField(command) + "," + csvField(r.args) + "," + x + "," + y + "," + h + "," + pen + "," +
-                    (r.value ? formatNumber(*r.value) : "") + "," + col + "," + csvField(text) + "," +
+  std::string row = (program_.empty() ? "" : grade::csvField(program_) + ",") + std::to_string(seq_) + "," +
+                    grade::csvField(fileName(r.loc)) + "," + std::to_string(r.loc.line) + "," + r.event + "," +
+                    grade::csvField(command) + "," + grade::csvField(r.args) + "," + x + "," + y + "," + h + "," + pen + "," +
+                    (r.value ? formatNumber(*r.value) : "") + "," + col + "," + grade::csvField(text) + "," +
                     r.status + "," + (r.steps ? std::to_string(*r.steps) : "");
   std::fprintf(out_, "%s\n", row.c_str());
   }
