@@ -500,7 +500,12 @@ RunResult Interpreter::run(const RunLimits& limits) {
     SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
     result.error = Diagnostic{Severity::Error, loc, "out of memory"};
   }
-  result.steps = stepsDone_ + static_cast<uint64_t>(chunk_ - stepsLeft_);
+  // Steps are credited at control transfers, and a loop entered at its condition is debited
+  // one in advance (the condition's jump credits it back): an error in that condition on its
+  // first test stops the count one below where it started. Never below zero (it wrapped to
+  // 2^64-1); the hosts that show a count take the larger of it and the statements they saw begin.
+  int64_t counted = static_cast<int64_t>(stepsDone_) + (chunk_ - stepsLeft_);
+  result.steps = counted < 0 ? 0 : static_cast<uint64_t>(counted);
   return result;
 }
 
