@@ -132,6 +132,24 @@ std::vector<ProgramResult::LineMark> lineMarks(const RunRecord& record, const st
   return out;
 }
 
+/// The image at half its width and height, each pixel the mean of the four it stands for: the
+/// final screens of a class report, a quarter of the pixels to encode and to load.
+render::RgbImage halfSize(const render::RgbImage& in) {
+  render::RgbImage out;
+  out.width = in.width / 2;
+  out.height = in.height / 2;
+  out.rgb.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) * 3);
+  size_t stride = static_cast<size_t>(in.width) * 3;
+  uint8_t* o = out.rgb.data();
+  for (int y = 0; y < out.height; ++y) {
+    const uint8_t* a = in.rgb.data() + static_cast<size_t>(2 * y) * stride;
+    const uint8_t* b = a + stride;
+    for (int x = 0; x < out.width; ++x, a += 6, b += 6)
+      for (int c = 0; c < 3; ++c) *o++ = static_cast<uint8_t>((a[c] + a[c + 3] + b[c] + b[c + 3] + 2) / 4);
+  }
+  return out;
+}
+
 class Grader {
  public:
   explicit Grader(const GradeOptions& o) : opts_(o) {}
@@ -756,7 +774,7 @@ void Grader::finishProgram(size_t index) {
   if (opts_.screens && !opts_.picturesDir.empty() && first.screen) {
     fs::path to = fs::path(opts_.picturesDir) / fs::path(reportName(r.program, opts_.paths)).replace_extension(".screen.png");
     std::string error;
-    if (render::writePngFile(to.string(), imageOf(*first.screen), error)) r.screen = to.string();
+    if (render::writePngFile(to.string(), halfSize(imageOf(*first.screen)), error)) r.screen = to.string();
   }
   if (!first.replayFile.empty()) {
     fs::path to = fs::path(opts_.picturesDir) / fs::path(reportName(r.program, opts_.paths)).replace_extension("." + opts_.replayFormat);

@@ -27,8 +27,8 @@ struct GradeOptions {
   /// With picturesDir: also a replay of each program's run in this format ("gif", "svg",
   /// "html"), or "" for none.
   std::string replayFormat;
-  /// With picturesDir: also each program's final screen (NAME.screen.png), as the class report
-  /// page (rb test --html) shows it.
+  /// With picturesDir: also each program's final screen at half size (NAME.screen.png, 400 x
+  /// 300), as the class report page (rb test --html) shows it.
   bool screens = false;
   /// Assignment mode: file names (globs like "*.txt") graded as programs besides *.bas.
   std::vector<std::string> include;
@@ -70,7 +70,7 @@ struct ProgramResult {
   std::string errors;              ///< the first run's standard error, shortened
   std::string picture;             ///< the PNG written for it, or ""
   std::string replay;              ///< the replay written for it, or ""
-  std::string screen;              ///< its final screen's PNG (GradeOptions::screens), or ""
+  std::string screen;              ///< its final screen's PNG, half size (GradeOptions::screens), or ""
   /// Lines of the program where its first run went wrong: its errors (rb check's, loading's),
   /// the runtime error or the limit that stopped it, in line order.
   struct LineMark {

@@ -79,7 +79,8 @@ const char* kClassStyle = R"(
             background: #e6e9ec; border-bottom: 1px solid #cdd2d6; position: sticky; top: 0; z-index: 1; }
 #controls input[type=number] { width: 5em; }
 #cards { display: grid; grid-template-columns: repeat(auto-fill, minmax(230px, 1fr)); gap: 14px; padding: 16px 20px; }
-.card { background: #fff; border: 1px solid #d4d4d0; border-radius: 6px; padding: 10px; overflow-wrap: anywhere; }
+.card { background: #fff; border: 1px solid #d4d4d0; border-radius: 6px; padding: 10px; overflow-wrap: anywhere;
+        content-visibility: auto; contain-intrinsic-size: auto 560px; }
 .card[hidden] { display: none; }
 .card.fail, .card.error, .card.missing { border-top: 4px solid var(--fail); }
 .card.pass { border-top: 4px solid var(--pass); }
@@ -158,7 +159,12 @@ const char* kClassScript = R"(
     $(id).addEventListener('input', apply);
     $(id).addEventListener('change', apply);
   }
-  apply();  // a page reopened with the browser's back button keeps its controls' values
+  // A page reopened with the browser's back button keeps its controls' values: apply them (a
+  // fresh page shows every card in file order as written, without touching them).
+  const defaults = ['f-name', 'f-min', 'f-max', 'f-check', 'f-verdict'].every(id => $(id).value === '') &&
+                   $('sort').value === 'file';
+  if (defaults) $('shown').textContent = cards.length + ' of ' + cards.length + ' shown';
+  else apply();
 })();
 )";
 
@@ -210,7 +216,7 @@ std::string card(const ClassResult& r, size_t i, const std::string& page, const 
   out += page.empty() ? "<div class=\"open\">" : "<a class=\"open\" href=\"" + htmlEscape(page) + "\">";
   std::string screen = !p.screen.empty() ? p.screen : p.picture;
   if (!screen.empty())
-    out += imageTag(screen, dir, "the final screen of " + name, " loading=\"lazy\" width=\"800\" height=\"600\"");
+    out += imageTag(screen, dir, "the final screen of " + name, " loading=\"lazy\" width=\"400\" height=\"300\"");
   else
     out += "<div class=\"noimage\">no picture</div>";
   out += "<h2>" + htmlEscape(name) + "</h2>";

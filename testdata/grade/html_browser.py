@@ -110,7 +110,7 @@ def case_loads(page):
     # The first cards' final screens are loaded (the rest load as they scroll into view).
     loaded = page.browser.js("""Array.from(document.querySelectorAll('#cards .card img')).slice(0, 3)
         .map(i => i.complete && i.naturalWidth)""")
-    expect(loaded == [800, 800, 800], f"final screens loaded: {loaded}")
+    expect(loaded == [400, 400, 400], f"final screens loaded: {loaded}")
     expect(page.browser.js("document.getElementById('shown').textContent") == "8 of 8 shown", "count shown")
     scripts = page.browser.js("document.scripts.length")
     expect(scripts == 1, f"one script, the page's own: {scripts}")
@@ -138,7 +138,7 @@ def case_opens(page):
     fails = page.browser.js("document.querySelectorAll('table.checks tr.fail').length")
     expect(fails >= 1, f"failed checks in the table: {fails}")
     images = page.browser.js("Array.from(document.querySelectorAll('#pictures img')).map(i => i.complete && i.naturalWidth)")
-    expect(images == [800, 800], f"the picture and the final screen load: {images}")
+    expect(images == [800, 400], f"the picture and the final screen load: {images}")
     frame = page.browser.js("document.querySelector('iframe.replay') && document.querySelector('iframe.replay').src")
     expect(frame and frame.endswith(".html"), f"the replay's frame: {frame}")
     # The player in the frame runs: its canvas is there and drawn (the frame is same-origin on file://
