@@ -10,8 +10,9 @@ its file name, its student's name (in the roster), its source and its output all
 that would run a script or load an image if the page let it through. Each CASE is one CTest test;
 WORK_DIR is emptied first. Exits 77 (skipped) when Chromium is not installed.
 
-  loads        index.html loads from file:// with no console error, a card per program with its
-               final screen shown, and the hostile markup shown as text, never run
+  loads        the report's folder zipped and unzipped elsewhere: index.html loads from file://
+               with no console error, a card per program with its final screen shown, and the
+               hostile markup shown as text, never run
   opens        a card's link opens its program's page: source with the failing line marked,
                checks, pictures loaded, the replay's player in its frame; the page goes back
   sort_filter  the filters (name, points, result, failed check) hide the right cards and the
@@ -75,6 +76,7 @@ class Page:
         if not chromium:
             print("SKIP: Chromium is not installed (scripts/setup.sh --test installs it)")
             sys.exit(77)
+        self.work = args.work
         self.report = grade(args)
         self.browser = Browser(chromium, args.work)
 
@@ -100,6 +102,12 @@ class Page:
 
 
 def case_loads(page):
+    # The folder zipped, unzipped elsewhere and opened there: every link is relative.
+    archive = shutil.make_archive(os.path.join(page.work, "report"), "zip", page.report)
+    shutil.rmtree(page.report)
+    moved = os.path.join(page.work, "elsewhere", "report")
+    shutil.unpack_archive(archive, moved)
+    page.report = moved
     page.open(os.path.join(page.report, "index.html"))
     page.quiet()
     cards = page.cards()
