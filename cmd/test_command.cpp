@@ -227,8 +227,8 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
                    "waypoints and regions asked for, a legend (with --student: no solution)")
       ->type_name("DIR");
   test->add_option("--replays", opts->replays,
-                   "With --pictures: also a replay of each program's run in DIR, as an animated "
-                   "gif, an animated svg or an html player")
+                   "With --pictures (or --html): also a replay of each program's run beside its "
+                   "picture, as an animated gif, an animated svg or an html player")
       ->type_name("FORMAT")
       ->check(CLI::IsMember({"gif", "svg", "html"}));
   test->add_option("--html", opts->html,

@@ -24,7 +24,8 @@ test_packages=(
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks
   chromium              # the replays of rb render --animate played in a real browser (headless, driven
-                        # over the DevTools protocol on a pipe by testdata/render/replay_browser.py)
+                        # over the DevTools protocol on a pipe by testdata/render/replay_browser.py),
+                        # and rb test --html's class report page (testdata/grade/html_browser.py)
 )
 bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers
