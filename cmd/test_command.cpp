@@ -12,6 +12,7 @@
 #include "exit_codes.h"
 #include "program_loader.h"
 #include "grader.h"
+#include "html_report.h"
 #include "png_writer.h"
 #include "report.h"
 #include "run_command.h"
@@ -30,7 +31,7 @@ struct TestOptions {
   std::optional<uint64_t> maxSteps;
   std::optional<double> timeout;
   std::string format = "text";
-  std::string junit, csv, pictures, feedback, replays;
+  std::string junit, csv, pictures, feedback, replays, html;
   std::vector<std::string> include;
   std::string roster;
   bool student = false;
@@ -109,7 +110,14 @@ int executeTest(const TestOptions& opts) {
   g.picturesDir = opts.pictures;
   g.studentPictures = opts.student;
   g.replayFormat = opts.replays;
-  if (!opts.replays.empty() && opts.pictures.empty()) {
+  if (!opts.html.empty()) {
+    // The class report page shows each program's final screen, its picture and its replay:
+    // written beside the page (DIR/pictures) unless --pictures puts them elsewhere.
+    if (g.picturesDir.empty()) g.picturesDir = (std::filesystem::path(opts.html) / "pictures").string();
+    if (g.replayFormat.empty()) g.replayFormat = "html";
+    g.screens = true;
+  }
+  if (!opts.replays.empty() && g.picturesDir.empty()) {
     std::fprintf(stderr, "rb test: --replays writes beside the pictures: give --pictures DIR too\n");
     return exitcode::kUsage;
   }
@@ -138,6 +146,13 @@ int executeTest(const TestOptions& opts) {
     };
   }
 
+  if (!opts.html.empty()) {
+    std::string why;
+    if (!render::makeFolder(opts.html, why)) {
+      std::fprintf(stderr, "rb test: %s\n", why.c_str());
+      return exitcode::kIoError;
+    }
+  }
   grade::ClassResult result = grade::gradeClass(g);
   if (result.interruptedBy) {
     // Ctrl-C (or kill): the programs were ended and the temporary files removed; no report, and
@@ -157,6 +172,13 @@ int executeTest(const TestOptions& opts) {
   if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result, g.paths) && written;
   if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
   if (!opts.csv.empty()) written = writeReport(opts.csv, grade::csvReport(result)) && written;
+  if (!opts.html.empty()) {
+    std::string error;
+    if (!grade::writeHtmlReport(result, g.paths, opts.html, error)) {
+      std::fprintf(stderr, "rb test: %s\n", error.c_str());
+      written = false;
+    }
+  }
   std::string out = opts.format == "json" ? grade::jsonReport(result) : grade::textReport(result, !opts.quiet);
   if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() || std::fflush(stdout) != 0) {
     std::fprintf(stderr, "rb test: cannot write to standard output\n");
@@ -205,10 +227,16 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
                    "waypoints and regions asked for, a legend (with --student: no solution)")
       ->type_name("DIR");
   test->add_option("--replays", opts->replays,
-                   "With --pictures: also a replay of each program's run in DIR, as an animated "
-                   "gif, an animated svg or an html player")
+                   "With --pictures (or --html): also a replay of each program's run beside its "
+                   "picture, as an animated gif, an animated svg or an html player")
       ->type_name("FORMAT")
       ->check(CLI::IsMember({"gif", "svg", "html"}));
+  test->add_option("--html", opts->html,
+                   "Write the class report page into DIR: index.html with a card per program (points, "
+                   "final screen, checks; sortable and filterable) and a page per program (source with "
+                   "the failing lines marked, feedback, picture, replay). Static, no network; pictures "
+                   "and replays go to DIR/pictures unless --pictures says otherwise")
+      ->type_name("DIR");
   test->add_option("--feedback", opts->feedback,
                    "Write one text file per program into DIR for its student: every check with its "
                    "points and hints, hidden checks only as 'a hidden check failed'")

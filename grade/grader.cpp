@@ -113,6 +113,43 @@ std::string number(double v) {
   return buf;
 }
 
+/// The lines of `program` where its run went wrong (ProgramResult::marks): diagnostics and
+/// errors in other files (includes) are left out.
+std::vector<ProgramResult::LineMark> lineMarks(const RunRecord& record, const std::string& program) {
+  std::vector<ProgramResult::LineMark> out;
+  std::string name = fs::path(program).filename().string();
+  auto add = [&](const DiagRecord& d, const std::string& prefix) {
+    if (d.line == 0 || (!d.file.empty() && fs::path(d.file).filename().string() != name)) return;
+    for (const ProgramResult::LineMark& m : out)
+      if (m.line == d.line && m.message == prefix + d.message) return;
+    out.push_back({d.line, prefix + d.message});
+  };
+  for (const DiagRecord& d : record.checkDiags)
+    if (d.severity == "error") add(d, "");
+  for (const DiagRecord& d : record.loadErrors) add(d, "");
+  if (record.error) add(*record.error, record.status == "limit" ? "stopped here: " : "");
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
+  return out;
+}
+
+/// The image at half its width and height, each pixel the mean of the four it stands for: the
+/// final screens of a class report, a quarter of the pixels to encode and to load.
+render::RgbImage halfSize(const render::RgbImage& in) {
+  render::RgbImage out;
+  out.width = in.width / 2;
+  out.height = in.height / 2;
+  out.rgb.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) * 3);
+  size_t stride = static_cast<size_t>(in.width) * 3;
+  uint8_t* o = out.rgb.data();
+  for (int y = 0; y < out.height; ++y) {
+    const uint8_t* a = in.rgb.data() + static_cast<size_t>(2 * y) * stride;
+    const uint8_t* b = a + stride;
+    for (int x = 0; x < out.width; ++x, a += 6, b += 6)
+      for (int c = 0; c < 3; ++c) *o++ = static_cast<uint8_t>((a[c] + a[c + 3] + b[c] + b[c + 3] + 2) / 4);
+  }
+  return out;
+}
+
 class Grader {
  public:
   explicit Grader(const GradeOptions& o) : opts_(o) {}
@@ -148,7 +185,8 @@ class Grader {
     return opts_.timeout.value_or(opts_.trustComments ? spec.timeout : std::min(spec.timeout, kCommentTimeoutCap));
   }
   bool screenWanted() const {
-    return assignment_ && (assignment_->needsScreen() || (!opts_.picturesDir.empty() && opts_.studentPictures));
+    return assignment_ && (assignment_->needsScreen() ||
+                           (!opts_.picturesDir.empty() && (opts_.studentPictures || opts_.screens)));
   }
 
   const GradeOptions& opts_;
@@ -649,7 +687,7 @@ ClassResult Grader::run() {
         continue;
       }
       r.notes = commentArgs(*specs_[p], programs_[p]).notes;
-      tasks.push_back(makeTask(p, programs_[p], 0, opts_.seed, false, &*specs_[p]));
+      tasks.push_back(makeTask(p, programs_[p], 0, opts_.seed, opts_.screens && !opts_.picturesDir.empty(), &*specs_[p]));
       pending_[p] = 1;
     } else {
       for (size_t s = 0; s < assignment_->seeds.size(); ++s)
@@ -731,7 +769,13 @@ void Grader::finishProgram(size_t index) {
   }
   r.output = first.output.substr(0, kReportCap);
   r.errors = first.errors.substr(0, kReportCap);
+  if (first.record) r.marks = lineMarks(*first.record, r.program);
   if (!opts_.picturesDir.empty()) writePicture(r, runs);
+  if (opts_.screens && !opts_.picturesDir.empty() && first.screen) {
+    fs::path to = fs::path(opts_.picturesDir) / fs::path(reportName(r.program, opts_.paths)).replace_extension(".screen.png");
+    std::string error;
+    if (render::writePngFile(to.string(), halfSize(imageOf(*first.screen)), error)) r.screen = to.string();
+  }
   if (!first.replayFile.empty()) {
     fs::path to = fs::path(opts_.picturesDir) / fs::path(reportName(r.program, opts_.paths)).replace_extension("." + opts_.replayFormat);
     std::error_code ec;

@@ -27,6 +27,9 @@ struct GradeOptions {
   /// With picturesDir: also a replay of each program's run in this format ("gif", "svg",
   /// "html"), or "" for none.
   std::string replayFormat;
+  /// With picturesDir: also each program's final screen at half size (NAME.screen.png, 400 x
+  /// 300), as the class report page (rb test --html) shows it.
+  bool screens = false;
   /// Assignment mode: file names (globs like "*.txt") graded as programs besides *.bas.
   std::vector<std::string> include;
   std::string roster;                     ///< a roster CSV overriding the assignment's
@@ -67,6 +70,14 @@ struct ProgramResult {
   std::string errors;              ///< the first run's standard error, shortened
   std::string picture;             ///< the PNG written for it, or ""
   std::string replay;              ///< the replay written for it, or ""
+  std::string screen;              ///< its final screen's PNG, half size (GradeOptions::screens), or ""
+  /// Lines of the program where its first run went wrong: its errors (rb check's, loading's),
+  /// the runtime error or the limit that stopped it, in line order.
+  struct LineMark {
+    uint32_t line = 0;
+    std::string message;
+  };
+  std::vector<LineMark> marks;
 };
 
 struct ClassResult {

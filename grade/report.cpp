@@ -214,6 +214,10 @@ std::string details(const ProgramResult& p, bool student, bool withErrors = true
 
 }  // namespace
 
+CheckResult shownCheck(const CheckResult& check, bool student) { return shown(check, student); }
+std::string shownReason(const ProgramResult& program, bool student) { return reasonOf(program, student); }
+std::string outputTranscript(const ProgramResult& program) { return transcript(program); }
+
 std::string xmlEscape(const std::string& text) {
   std::string clean = cleanUtf8(text, true), out;
   for (char c : clean) {

@@ -27,6 +27,15 @@ std::string junitReport(const ClassResult& result);
 /// A CSV grade book: one row per program with its result, points and reason.
 std::string csvReport(const ClassResult& result);
 
+/// A check as a report shows it: in a report for students (--student) a hidden check is only
+/// "hidden check" with its verdict.
+CheckResult shownCheck(const CheckResult& check, bool student);
+/// The first reason a program failed, as the report shows it.
+std::string shownReason(const ProgramResult& program, bool student);
+/// The program's output with what input showed marked: each line an input touched starts with
+/// "> " and the text it read is in [brackets]; other lines start with two blanks.
+std::string outputTranscript(const ProgramResult& program);
+
 /// Text escaped for XML character data and attribute values. Bytes that are not UTF-8 are
 /// read as Latin-1; control characters XML 1.0 cannot carry become U+FFFD.
 std::string xmlEscape(const std::string& text);

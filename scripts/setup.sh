@@ -27,7 +27,8 @@ test_packages=(
   python3               # golden-test helpers and PNG checks
   neovim                # the Neovim snippet tested in a real (headless) Neovim, Debian 12's 0.7.2
   chromium              # the replays of rb render --animate played in a real browser (headless, driven
-                        # over the DevTools protocol on a pipe by testdata/render/replay_browser.py)
+                        # over the DevTools protocol on a pipe by testdata/render/replay_browser.py),
+                        # and rb test --html's class report page (testdata/grade/html_browser.py)
 )
 bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers
