@@ -128,7 +128,7 @@
           frame = {rgba: new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4)), width: w, height: h};
           if (options.onFrame) options.onFrame(frame);
         },
-        yield: (ms) => (ms > 0 ? new Promise((r) => setTimeout(r, ms)) : fastYield()),
+        yield: (options.wrapYield || ((f) => f))((ms) => (ms > 0 ? new Promise((r) => setTimeout(r, ms)) : fastYield())),
       });
       const stdin = (options.stdin || []).map((l) => String(l) + '\n').join('');
       const seed = options.seed !== undefined ? Number(options.seed) : Math.floor(Math.random() * 2 ** 32);
@@ -161,7 +161,10 @@
   }
 
   const rb = {
+    // The core takes no call while a run is suspended in it: a check waits for the runs
+    // before it.
     async check(source) {
+      await queue;
       const M = await core();
       const p = cString(M, source);
       try {
