@@ -15,7 +15,9 @@ command -v emcc >/dev/null || need+=(emscripten)
 command -v xz >/dev/null || need+=(xz-utils)
 command -v patch >/dev/null || need+=(patch)
 dpkg-query -W -f='${Status}' libeigen3-dev 2>/dev/null | grep -q "install ok installed" || need+=(libeigen3-dev)
-dpkg-query -W -f='${Status}' fonts-liberation2 2>/dev/null | grep -q "install ok installed" || need+=(fonts-liberation2)
+for p in fonts-liberation2 python3-fonttools; do
+  dpkg-query -W -f='${Status}' $p 2>/dev/null | grep -q "install ok installed" || need+=($p)
+done
 if [ ${#need[@]} -gt 0 ]; then
   SUDO=""; [ "$(id -u)" != 0 ] && SUDO="sudo"
   echo "web: installing ${need[*]}"
@@ -62,9 +64,25 @@ if [ ! -f "$out/freetype-install/lib/libfreetype.a" ]; then
   ninja -C "$out/freetype" -j 2 install >/dev/null
 fi
 
+# ---- the fonts: the Liberation fonts native rb embeds, cut down to the Latin-1 characters rb
+# draws (anything else is drawn as '?', which they keep), with their hinting, metrics and
+# tables otherwise as they are: a tenth of the size, the same pixels (testdata/web/fonts_test.js
+# compares every character of every face at many sizes with native rb render).
+fonts=$out/fonts
+if [ ! -f "$fonts/.ready" ]; then
+  rm -rf "$fonts"
+  mkdir -p "$fonts"
+  for f in /usr/share/fonts/truetype/liberation2/Liberation{Mono,Sans,Serif}-{Regular,Bold,Italic,BoldItalic}.ttf; do
+    /usr/bin/python3 -m fontTools.subset "$f" --unicodes=U+0000-00FF --notdef-outline --hinting \
+      --name-IDs='*' --name-languages='*' --layout-features='' --no-prune-unicode-ranges \
+      --output-file="$fonts/$(basename "$f")" 2>/dev/null
+  done
+  touch "$fonts/.ready"
+fi
+
 # ---- the core and the browser's host
 emcmake cmake -S web -B "$out/core" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DRB_FREETYPE_DIR="$out/freetype-install" >/dev/null
+  -DRB_FREETYPE_DIR="$out/freetype-install" -DRB_FONT_DIRS="$fonts" >/dev/null
 ninja -C "$out/core" -j 2
 
 # ---- the site
