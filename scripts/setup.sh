@@ -25,7 +25,7 @@ test_packages=(
   python3               # golden-test helpers and PNG checks
   chromium              # the replays of rb render --animate played in a real browser (headless, driven
                         # over the DevTools protocol on a pipe by testdata/render/replay_browser.py)
-  emscripten xz-utils patch   # scripts/web.sh: the core as WebAssembly for the web page's tests (testdata/web)
+  emscripten xz-utils patch python3-fonttools   # scripts/web.sh: the core as WebAssembly for the web page's tests (testdata/web)
 )
 bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers

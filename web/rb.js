@@ -91,7 +91,9 @@
     chunk('IHDR', ihdr);
     chunk('IDAT', await deflate(raw));
     chunk('IEND', new Uint8Array(0));
-    const all = new Uint8Array([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, ...chunks.flatMap((c) => [...c])]);
+    const all = new Uint8Array(8 + chunks.reduce((n, c) => n + c.length, 0));
+    all.set([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+    for (let i = 0, o = 8; i < chunks.length; o += chunks[i].length, i++) all.set(chunks[i], o);
     let bin = '';
     for (let i = 0; i < all.length; i += 0x8000) bin += String.fromCharCode.apply(null, all.subarray(i, i + 0x8000));
     return 'data:image/png;base64,' + (isNode ? Buffer.from(all).toString('base64') : btoa(bin));

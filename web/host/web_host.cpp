@@ -69,6 +69,7 @@ WebHost::WebHost(bool live, std::vector<std::string> stdinLines, InputScript scr
 
 void WebHost::attachMachine(Machine& machine) {
   machine_ = &machine;
+  if (live_) stepMs_ = rb_js_step_ms();
   script_.useControls(&machine.controls);
 }
 
@@ -118,6 +119,7 @@ void WebHost::yieldToPage(bool force) {
   rb_js_yield(0);
   lastYieldMs_ = wallSeconds() * 1000;
   if (rb_js_stopped()) requestStop();
+  if (live_) stepMs_ = rb_js_step_ms();  // the page's speed may have changed
 }
 
 void WebHost::wait(double ms) {
@@ -151,10 +153,7 @@ bool WebHost::poll() {
   return !stopRequested();
 }
 
-void WebHost::animate() {
-  if (live_) stepMs_ = rb_js_step_ms();
-  yieldToPage(false);
-}
+void WebHost::animate() { yieldToPage(false); }
 
 uint64_t WebHost::memoryInUse() { return emscripten_get_heap_size(); }
 
