@@ -14,6 +14,7 @@ need=()
 command -v emcc >/dev/null || need+=(emscripten)
 command -v xz >/dev/null || need+=(xz-utils)
 command -v patch >/dev/null || need+=(patch)
+command -v npm >/dev/null || need+=(npm)
 dpkg-query -W -f='${Status}' libeigen3-dev 2>/dev/null | grep -q "install ok installed" || need+=(libeigen3-dev)
 for p in fonts-liberation2 python3-fonttools; do
   dpkg-query -W -f='${Status}' $p 2>/dev/null | grep -q "install ok installed" || need+=($p)
@@ -85,10 +86,21 @@ emcmake cmake -S web -B "$out/core" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DRB_FREETYPE_DIR="$out/freetype-install" -DRB_FONT_DIRS="$fonts" >/dev/null
 ninja -C "$out/core" -j 2
 
+# ---- the editor: CodeMirror 6 from npm (the versions web/package.json pins), bundled by esbuild
+npmdir=$out/npm
+if ! cmp -s web/package.json "$npmdir/package.json" || [ ! -d "$npmdir/node_modules" ]; then
+  rm -rf "$npmdir"
+  mkdir -p "$npmdir"
+  cp web/package.json "$npmdir/"
+  (cd "$npmdir" && npm install --no-audit --no-fund --loglevel=error >/dev/null)
+fi
+
 # ---- the site
 site=$out/site
 rm -rf "$site"
 mkdir -p "$site"
+NODE_PATH="$npmdir/node_modules" "$npmdir/node_modules/.bin/esbuild" web/editor.mjs --bundle --minify \
+  --format=iife --log-level=warning --outfile="$site/editor.js"
 cp web/index.html web/style.css web/app.js web/rb.js "$site/"
 cp "$out/core/rbcore.js" "$out/core/rbcore.wasm" "$site/"
 node web/make_examples.js "$root" > "$site/examples.js"

@@ -63,7 +63,7 @@
     source.setSelectionRange(pos, pos + (lines[line - 1] || '').length);
     $('editor').scrollTop = Math.max(0, (line - 5) * 20);
   }
-  function showDiagnostics(list) {
+  function listDiagnostics(list) {
     const ul = $('diagnostics');
     ul.textContent = '';
     marks = new Map();
@@ -74,19 +74,35 @@
       li.className = d.severity;
       li.textContent = `${d.line}:${d.col}: ${d.severity}: ${d.message}${d.code ? ' [' + d.code + ']' : ''}`;
       li.dataset.line = d.line;
-      li.onclick = () => goToLine(d.line);
+      li.onclick = () => editor.goToLine(d.line);
       ul.appendChild(li);
     }
-    renderEditor();
+    editor.setDiagnostics(list);
+  }
+  // The plain editor: the text area with its highlighting overlay and gutter, when the
+  // CodeMirror bundle (editor.js) is not there.
+  const textAreaEditor = {
+    get value() { return source.value; },
+    set value(text) { source.value = text; renderEditor(); },
+    setDiagnostics() { renderEditor(); },
+    setErrorLine(line) { errorLine = line || 0; renderEditor(); },
+    goToLine,
+    focus() { source.focus(); },
+  };
+  let editor = textAreaEditor;
+  if (window.RbEditor) {
+    $('gutter').remove();
+    $('code').remove();
+    editor = window.RbEditor.create($('editor'), {doc: '', onChange: () => changed(), onRun: () => runProgram()});
+    editor.view.dom.id = 'cm';
   }
   let checkTimer = 0;
   function changed() {
-    localStorage.setItem(STORE, source.value);
-    errorLine = 0;
-    renderEditor();
+    localStorage.setItem(STORE, editor.value);
+    if (editor === textAreaEditor) { errorLine = 0; renderEditor(); }
     clearTimeout(checkTimer);
     // During a run the check waits for its end (runProgram checks then).
-    checkTimer = setTimeout(async () => { if (!run) showDiagnostics(await rb.check(source.value)); }, 250);
+    checkTimer = setTimeout(async () => { if (!run) listDiagnostics(await rb.check(editor.value)); }, 250);
   }
   source.addEventListener('input', changed);
   source.addEventListener('keydown', (e) => {
@@ -100,8 +116,8 @@
     }
   });
   function setSource(text) {
-    source.value = text;
-    changed();
+    editor.value = text;
+    if (editor === textAreaEditor) changed();
   }
 
   // ---------------------------------------------------------------- share links, files, examples
@@ -127,7 +143,7 @@
     return new TextDecoder().decode(await pipe(fromBase64Url(m[1]), new DecompressionStream('deflate-raw')));
   }
   $('share').onclick = async () => {
-    const link = await shareLink(source.value);
+    const link = await shareLink(editor.value);
     history.replaceState(null, '', link);
     try { await navigator.clipboard.writeText(link); status.textContent = 'link copied'; } catch (e) { status.textContent = 'link in the address bar'; }
   };
@@ -142,7 +158,7 @@
     a.click();
     a.remove();
   }
-  $('save').onclick = () => download('program.bas', URL.createObjectURL(new Blob([source.value], {type: 'text/plain'})));
+  $('save').onclick = () => download('program.bas', URL.createObjectURL(new Blob([editor.value], {type: 'text/plain'})));
   $('png').onclick = () => download('screen.png', canvas.toDataURL('image/png'));
   const examples = window.RB_EXAMPLES || [];
   for (const [i, ex] of examples.entries()) {
@@ -292,8 +308,7 @@
     if (run) return;
     output.textContent = '';
     outputText = '';
-    errorLine = 0;
-    renderEditor();
+    editor.setErrorLine(0);
     clearScreen();
     input.clicks = [];
     input.held = 0;
@@ -301,7 +316,7 @@
     status.textContent = 'running';
     const started = performance.now();
     canvas.focus();
-    const r = rb.start(source.value, Object.assign(limits(), {
+    const r = rb.start(editor.value, Object.assign(limits(), {
       io,
       png: false,
       stepMs: () => Number($('speed').value),
@@ -323,17 +338,16 @@
     setRunning(false);
     if (result.frame) drawFrame(result.frame);
     const secs = ((performance.now() - started) / 1000).toFixed(2);
-    if (result.status !== 'rejected') showDiagnostics(await rb.check(source.value));
+    if (result.status !== 'rejected') listDiagnostics(await rb.check(editor.value));
     if (result.status === 'rejected') {
-      showDiagnostics(result.diagnostics);
+      listDiagnostics(result.diagnostics);
       const first = result.diagnostics.find((d) => d.severity === 'error');
-      errorLine = first ? first.line : 0;
+      editor.setErrorLine(first ? first.line : 0);
       appendOutput(result.error, 'error');
     } else if (result.error) {
-      errorLine = result.errorLine || 0;
+      editor.setErrorLine(result.errorLine || 0);
       appendOutput((outputText && !outputText.endsWith('\n') ? '\n' : '') + result.error, 'error');
     }
-    renderEditor();
     status.textContent = `${result.status} (${secs} s, ${result.steps || 0} steps)`;
     window.rbLastRun = result;
   }
@@ -368,15 +382,15 @@
 
   // ---------------------------------------------------------------- start
   window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash,
+    get source() { return editor.value; },
     get running() { return run !== null; }, ready: null};
   window.rbPage.ready = (async () => {
     clearScreen();
     const fromLink = await programFromHash().catch(() => null);
     const saved = localStorage.getItem(STORE);
-    source.value = fromLink !== null ? fromLink : saved !== null ? saved : (examples[0] ? examples[0].source : '');
-    renderEditor();
+    editor.value = fromLink !== null ? fromLink : saved !== null ? saved : (examples[0] ? examples[0].source : '');
     await rb.ready();
-    showDiagnostics(await rb.check(source.value));
+    listDiagnostics(await rb.check(editor.value));
     status.textContent = 'ready';
     return true;
   })();
