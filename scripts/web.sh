@@ -83,7 +83,7 @@ fi
 
 # ---- the core and the browser's host
 emcmake cmake -S web -B "$out/core" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DRB_FREETYPE_DIR="$out/freetype-install" -DRB_FONT_DIRS="$fonts" >/dev/null
+  -DRB_FREETYPE_DIR="$out/freetype-install" -DRB_FONT_DIRS="$fonts" -DRB_WERROR="${RB_WERROR:-OFF}" >/dev/null
 ninja -C "$out/core" -j 2
 
 # ---- the editor: CodeMirror 6 from npm (the versions web/package.json pins), bundled by esbuild
