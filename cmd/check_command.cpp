@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/rules.h"
 #include "machine/builtins.h"
 #include "lang/checker.h"
 #include "lang/code_dump.h"
@@ -24,6 +25,7 @@ struct CheckOptions {
   size_t maxErrors = 20;
   bool werror = false;
   bool listBuiltins = false;
+  bool listRules = false;
   bool dumpCode = false;  ///< also print each program's compiled code
   std::string target;  ///< "rb9": also warn about what the RB-9 robot cannot do
 };
@@ -55,10 +57,31 @@ void listBuiltins(bool json) {
   if (json) std::printf("%s\n", rows.dump(2).c_str());
 }
 
+/// Every diagnostic rule: a line each, or (JSON) id, severity, summary, description (Markdown)
+/// and the URL of its documentation; scripts/gen_rules_doc.py writes docs/diagnostics.md's table
+/// from it.
+void listRules(bool json) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const Rule& r : allRules()) {
+    if (json) {
+      rows.push_back({{"id", r.id}, {"severity", severityName(r.severity)}, {"summary", r.summary},
+                      {"description", r.description}, {"url", ruleUrl(r.id)}});
+    } else {
+      std::printf("%-24s %-8s %s\n", std::string(r.id).c_str(), severityName(r.severity),
+                  std::string(r.summary).c_str());
+    }
+  }
+  if (json) std::printf("%s\n", rows.dump(2).c_str());
+}
+
 int executeCheck(const CheckOptions& opts) {
   DiagFormat format = parseDiagFormat(opts.format);
   if (opts.listBuiltins) {
     listBuiltins(format == DiagFormat::Json);
+    return exitcode::kOk;
+  }
+  if (opts.listRules) {
+    listRules(format == DiagFormat::Json);
     return exitcode::kOk;
   }
   if (opts.files.empty()) {
@@ -132,6 +155,9 @@ void addCheckCommand(CLI::App& app, int& exitCode, bool withOptions) {
       ->check(CLI::IsMember({"rb9"}));
   check->add_flag("--list-builtins", opts->listBuiltins,
                   "List every built-in command, function and constant, then exit");
+  check->add_flag("--list-rules", opts->listRules,
+                  "List every diagnostic rule (its code, severity and summary; with --format json "
+                  "also its full description and documentation link), then exit");
   check->add_flag("--dump-code", opts->dumpCode,
                   "Also print each program's compiled code: one instruction a line, with its "
                   "operands, jump targets, labels, subs and source lines");

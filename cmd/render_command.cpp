@@ -14,6 +14,7 @@
 
 #include <unistd.h>
 
+#include "run_command.h"
 #include "animation.h"
 #include "arena_view.h"
 #include "exit_codes.h"

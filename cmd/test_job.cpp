@@ -6,6 +6,7 @@
 #include <string>
 
 #include "animation.h"
+#include "run_command.h"
 #include "exit_codes.h"
 #include "headless_run.h"
 #include "lang/checker.h"

@@ -30,7 +30,5 @@ std::string csvReport(const ClassResult& result);
 /// Text escaped for XML character data and attribute values. Bytes that are not UTF-8 are
 /// read as Latin-1; control characters XML 1.0 cannot carry become U+FFFD.
 std::string xmlEscape(const std::string& text);
-/// A CSV field, quoted when needed (RFC 4180).
-std::string csvField(const std::string& text);
 
 }  // namespace rb::grade

@@ -1,4 +1,5 @@
 #include "report.h"
+#include "text.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis.h"
+#include "base/rules.h"
 #include "lang/builtins.h"
 #include "lang/token.h"
 #include "transport.h"
@@ -519,7 +520,10 @@ void Server::publish(const Document& doc) {
                  {"source", "rb"},
                  {"message", d.message}};
     // The rule code, so that editors show it and users can look it up (docs/diagnostics.md).
-    if (!d.code.empty()) item["code"] = d.code;
+    if (!d.code.empty()) {
+      item["code"] = d.code;
+      if (findRule(d.code)) item["codeDescription"] = {{"href", ruleUrl(d.code)}};
+    }
     if (d.loc.file == 0 || !d.loc.valid()) {
       item["range"] = range(a, d.loc);
     } else {
@@ -543,14 +547,34 @@ void Server::publish(const Document& doc) {
 
 // ---- features
 
+std::string Server::ruleHelpAt(const Analysis& a, uint32_t line, size_t byteCol) const {
+  std::string out;
+  for (const Diagnostic& d : a.diags.all()) {
+    if (d.severity == Severity::Note || d.code.empty() || d.loc.file != 0 || d.loc.line != line) continue;
+    auto [first, last] = diagnosticColumns(a.program->sources, d);
+    if (byteCol < first || byteCol > last) continue;
+    const Rule* rule = findRule(d.code);
+    if (!rule || out.find(d.code) != std::string::npos) continue;
+    if (!out.empty()) out += "\n\n";
+    out += "**" + std::string(rule->id) + "** (" + severityName(rule->severity) + "): " + ruleMarkdown(*rule) +
+           " [More](" + ruleUrl(rule->id) + ")";
+  }
+  return out;
+}
+
 json Server::hover(const json& params) {
   Document* doc = document(params);
   if (!doc || !doc->analysis) return nullptr;
   const json& pos = params.at("position");
   std::string_view line = lineOf(doc->text, pos.at("line").get<uint32_t>());
   size_t col = toByteColumn(line, pos.at("character").get<uint32_t>(), encoding_);
+  // Over a diagnostic: what its rule means, from the one table of rules.
+  std::string about = ruleHelpAt(*doc->analysis, pos.at("line").get<uint32_t>() + 1, col + 1);
   Span span = nameAt(line, col);
-  if (span.empty() || inStringOrComment(line.substr(0, span.begin))) return nullptr;
+  if (span.empty() || inStringOrComment(line.substr(0, span.begin))) {
+    if (about.empty()) return nullptr;
+    return {{"contents", {{"kind", "markdown"}, {"value", about}}}};
+  }
   std::string word(line.substr(span.begin, span.end - span.begin));
   const Analysis& a = *doc->analysis;
   std::string text;
@@ -581,6 +605,7 @@ json Server::hover(const json& params) {
     auto v = a.variables.find(word);
     if (v != a.variables.end()) text = "```robotbasic\n" + word + "\n```\nvariable (names are case-sensitive)";
   }
+  if (!about.empty()) text = text.empty() ? about : about + "\n\n---\n\n" + text;
   if (text.empty()) return nullptr;
   uint32_t l = pos.at("line").get<uint32_t>();
   return {{"contents", {{"kind", "markdown"}, {"value", text}}},

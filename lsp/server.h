@@ -70,6 +70,8 @@ class Server {
   void didClose(const nlohmann::json& params);
   void fileChanged(const std::string& path);
   nlohmann::json hover(const nlohmann::json& params);
+  /// What the rules of the diagnostics at (line, byteCol) of the open document mean (1-based; "" when none).
+  std::string ruleHelpAt(const Analysis& a, uint32_t line, size_t byteCol) const;
   nlohmann::json completion(const nlohmann::json& params);
   nlohmann::json signatureHelp(const nlohmann::json& params);
   nlohmann::json definition(const nlohmann::json& params);

@@ -1,5 +1,7 @@
 #include "server.h"
 
+#include "base/rules.h"
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <map>
@@ -185,6 +187,24 @@ TEST_CASE("lsp: diagnostics as rb check gives them, with ranges", "[lsp]") {
   out = s.notify("textDocument/didClose", {{"textDocument", {{"uri", kUri}}}});
   REQUIRE(out.size() == 1);
   CHECK(out[0]["params"]["diagnostics"].empty());
+}
+
+TEST_CASE("lsp: a diagnostic links to its rule, and hover over it says what the rule means", "[lsp]") {
+  Session s;
+  s.initialize();
+  json d = s.open(kUri, "x = 1\nrForwrd 10\nprint x\n");
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["code"] == "rb-unknown-command");
+  std::string href = d[0]["codeDescription"]["href"];
+  CHECK(href.ends_with("/diagnostics.md#rb-unknown-command"));
+  CHECK(href.starts_with("https://"));
+  // Over the misspelt command: the rule's full description from the rule table.
+  std::string text = s.at("textDocument/hover", kUri, 1, 3)["result"]["contents"]["value"];
+  CHECK(text.find("**rb-unknown-command** (error)") != std::string::npos);
+  CHECK(text.find(std::string(rb::findRule("rb-unknown-command")->description.substr(0, 20))) != std::string::npos);
+  // Elsewhere, none.
+  text = s.at("textDocument/hover", kUri, 2, 1)["result"]["contents"]["value"];
+  CHECK(text.find("rb-unknown-command") == std::string::npos);
 }
 
 TEST_CASE("lsp: the warnings about a program's flow, as rb check gives them", "[lsp]") {

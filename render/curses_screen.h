@@ -2,7 +2,7 @@
 // The terminal, through ncurses: the one place rb talks to curses (this header does not include
 // it). It opens and restores the terminal, turns key and mouse reports into events with rb's key
 // codes (core/input/input.h), and draws text and arena frames in the best colours the terminal has.
-// The live view's logic (cmd/tui_*) uses only this interface.
+// The live view's logic (tui/tui_*) uses only this interface.
 
 #include <cstdint>
 #include <memory>

@@ -1,5 +1,7 @@
 #include "base/diagnostic.h"
 
+#include "base/columns.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -127,18 +129,27 @@ struct Painter {
   }
 };
 
-/// Spaces (or the tab at the same place, so terminals line them up) under line[0, col-1); a
-/// UTF-8 character takes one column.
+/// Spaces (or the tab at the same place, so terminals line them up) under line[0, col-1): as
+/// many as each character takes on a terminal (a wide character two, a combining mark none).
 std::string padTo(std::string_view line, uint32_t col) {
   std::string out;
-  for (uint32_t i = 1; i < col; ++i) {
+  uint32_t i = 1;
+  while (i < col) {
     if (i - 1 >= line.size()) {
       out += ' ';
+      ++i;
       continue;
     }
-    unsigned char c = static_cast<unsigned char>(line[i - 1]);
-    if ((c & 0xC0) == 0x80) continue;  // a UTF-8 continuation byte
-    out += c == '\t' ? '\t' : ' ';
+    if (line[i - 1] == '\t') {
+      out += '\t';
+      ++i;
+      continue;
+    }
+    uint32_t next = i + 1;
+    while (next - 1 < line.size() && (static_cast<unsigned char>(line[next - 1]) & 0xC0) == 0x80) ++next;
+    uint32_t width = displayColumn(line, next) - displayColumn(line, i);
+    out.append(width, ' ');
+    i = next;
   }
   return out;
 }
@@ -197,11 +208,17 @@ void formatOne(const SourceSet& sources, const Diagnostic& d, const Painter& p, 
     out += line;
     out += '\n';
     auto [first, last] = diagnosticColumns(sources, d);
+    // The caret, then one mark per terminal column of the rest of the range (a wide character
+    // two, as the line above shows it).
     std::string underline = "^";
     if (last > first) {
-      // One mark per character, not per byte.
-      for (uint32_t i = first + 1; i <= last && i - 1 < line.size(); ++i)
-        if ((static_cast<unsigned char>(line[i - 1]) & 0xC0) != 0x80) underline += '~';
+      uint32_t end = std::min<uint32_t>(last + 1, static_cast<uint32_t>(line.size()) + 1);
+      uint32_t firstEnd = first + 1;
+      while (firstEnd - 1 < line.size() && (static_cast<unsigned char>(line[firstEnd - 1]) & 0xC0) == 0x80) ++firstEnd;
+      while (end - 1 < line.size() && end > 1 && (static_cast<unsigned char>(line[end - 1]) & 0xC0) == 0x80) ++end;
+      uint32_t firstWidth = displayColumn(line, firstEnd) - displayColumn(line, first);
+      underline.append(firstWidth > 1 ? firstWidth - 1 : 0, '~');
+      if (end > firstEnd) underline.append(displayColumn(line, end) - displayColumn(line, firstEnd), '~');
     }
     out += blank;
     out += " | ";

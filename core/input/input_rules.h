@@ -2,7 +2,7 @@
 // The rules of input that do not depend on where the input comes from: which keys answer a
 // message box, which keys type a character, how a line is typed at an `input` prompt, what a
 // mouse press on the program's buttons and edit boxes does, and which edit box has the keyboard.
-// The live view (cmd/tui_host.cpp) and scripted input (input_script.cpp) both follow them, so a
+// The live view (tui/tui_host.cpp) and scripted input (input_script.cpp) both follow them, so a
 // script and a person at the keyboard get the same answers. docs/interaction.md states them.
 
 #include <cstdint>

@@ -23,7 +23,7 @@ class Machine;
 /// Files and other programs a RobotBASIC program may reach (FileExists, FileRename, DirSet,
 /// Spawn). Student programs are untrusted: rb's commands give an implementation that confines
 /// files to the program's folder and refuses Spawn unless the user allows more
-/// (cmd/sandbox.h). Failures are RuntimeErrors whose message names what was refused and why.
+/// (run/sandbox.h). Failures are RuntimeErrors whose message names what was refused and why.
 class SystemAccess {
  public:
   virtual ~SystemAccess() = default;

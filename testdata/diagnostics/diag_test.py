@@ -134,6 +134,8 @@ def check_sarif(doc, problems):
     if not isinstance(runs, list) or len(runs) != 1:
         problems.append("sarif: runs is not one run")
         return 0
+    if runs[0].get("columnKind") != "utf16CodeUnits":
+        problems.append("sarif: run.columnKind is not utf16CodeUnits")
     driver = runs[0].get("tool", {}).get("driver", {})
     if driver.get("name") != "rb":
         problems.append("sarif: tool.driver.name is not rb")
@@ -143,8 +145,13 @@ def check_sarif(doc, problems):
         rules = []
     ids = [r.get("id") for r in rules]
     for r in rules:
-        if not r.get("shortDescription", {}).get("text"):
-            problems.append(f"sarif: rule {r.get('id')} has no shortDescription.text")
+        for key in ("shortDescription", "fullDescription"):
+            if not r.get(key, {}).get("text"):
+                problems.append(f"sarif: rule {r.get('id')} has no {key}.text")
+        if r.get("defaultConfiguration", {}).get("level") not in ("error", "warning", "note"):
+            problems.append(f"sarif: rule {r.get('id')} has no defaultConfiguration.level")
+        if not str(r.get("helpUri", "")).startswith("https://"):
+            problems.append(f"sarif: rule {r.get('id')} has no helpUri")
     for inv in runs[0].get("invocations", []):
         if not isinstance(inv.get("executionSuccessful"), bool):
             problems.append("sarif: an invocation without executionSuccessful")
@@ -173,7 +180,11 @@ def check_sarif(doc, problems):
             if not phys.get("artifactLocation", {}).get("uri"):
                 problems.append(f"{where}: no artifactLocation.uri")
             region = phys.get("region")
-            if region is not None:
+            if region is not None and "startColumn" not in region:
+                # a whole-file finding: its lines
+                if not isinstance(region.get("startLine"), int) or region.get("endLine", 0) < region["startLine"]:
+                    problems.append(f"{where}: a whole-file region without startLine/endLine")
+            elif region is not None:
                 for key in ("startLine", "startColumn", "endLine", "endColumn"):
                     if not isinstance(region.get(key), int) or region[key] < 1:
                         problems.append(f"{where}: region.{key} missing or not 1-based")
@@ -217,15 +228,15 @@ def structure(rb, files):
 
 
 def rules(source):
-    """Every rule code the sources use is in the rule table (cmd/diagnostic_output.cpp) and
+    """Every rule code the sources use is in the rule table (core/base/rules.cpp) and
     documented in docs/diagnostics.md, and every documented code is in the table."""
-    table_src = open(os.path.join(source, "cmd", "diagnostic_output.cpp"), encoding="utf-8").read()
-    table = set(re.findall(r'\{"(rb-[a-z0-9-]+)", "', table_src))
+    table_src = open(os.path.join(source, "core", "base", "rules.cpp"), encoding="utf-8").read()
+    table = set(re.findall(r'\{"(rb-[a-z0-9-]+)", Severity::', table_src))
     used = set()
-    for folder in ("core", "cmd"):
+    for folder in ("core", "cmd", "lsp", "grade"):
         for root, _, files in os.walk(os.path.join(source, folder)):
             for f in files:
-                if f.endswith(".cpp") and not f.endswith("_test.cpp") and f != "diagnostic_output.cpp":
+                if f.endswith(".cpp") and not f.endswith("_test.cpp") and f != "rules.cpp":
                     text = open(os.path.join(root, f), encoding="utf-8").read()
                     used |= set(re.findall(r'"(rb-[a-z0-9]+(?:-[a-z0-9]+)+)"', text))
     docs = open(os.path.join(source, "docs", "diagnostics.md"), encoding="utf-8").read()

@@ -28,6 +28,9 @@ SQUARE = os.path.join(HERE, "square")
 CLASS = os.path.join(SQUARE, "class")
 ASSIGNMENT = os.path.join(SQUARE, "assignment.toml")
 SCHEMA = os.path.join(HERE, "junit.xsd")
+# Jenkins' xunit plugin's schema for JUnit reports (github.com/jenkinsci/xunit-plugin, MIT licence
+# in its header), kept as fetched: the consumer's own word on what a JUnit report may hold.
+JENKINS_SCHEMA = os.path.join(HERE, "jenkins-junit-10.xsd")
 
 
 class Failure(Exception):
@@ -147,6 +150,15 @@ def case_junit(env):
     expect(r.returncode == 1, f"exit {r.returncode}", r.stderr)
     v = subprocess.run([xmllint, "--noout", "--schema", SCHEMA, report], capture_output=True, text=True)
     expect(v.returncode == 0, "the JUnit report does not validate against junit.xsd", v.stderr)
+    v = subprocess.run([xmllint, "--noout", "--schema", JENKINS_SCHEMA, report], capture_output=True, text=True)
+    expect(v.returncode == 0, "the JUnit report does not validate against Jenkins' junit-10.xsd", v.stderr)
+    # Jenkins' schema refuses what rb wrote before: `file` on a test case, `skipped` on testsuites.
+    for bad in ('<testsuites><testsuite name="s" tests="1" failures="0" errors="0"><testcase name="a" file="a.bas"/>'
+                '</testsuite></testsuites>',
+                '<testsuites skipped="0"><testsuite name="s" tests="0" failures="0" errors="0"/></testsuites>'):
+        path = env.write("bad_jenkins.xml", bad)
+        v = subprocess.run([xmllint, "--noout", "--schema", JENKINS_SCHEMA, path], capture_output=True, text=True)
+        expect(v.returncode != 0, "jenkins-junit-10.xsd accepts what it should refuse", bad)
     # The schema must be able to fail: a count that is not a number, a test case without a name.
     for bad in ('<testsuites><testsuite name="s" tests="six"/></testsuites>',
                 '<testsuites><testsuite name="s" tests="1"><testcase classname="c"/></testsuite></testsuites>'):
@@ -159,6 +171,8 @@ def case_junit(env):
     expect(suite.get("name") == "square" and suite.get("tests") == "6" and suite.get("failures") == "5",
            "testsuite counts", suite.attrib)
     cases = {c.get("name"): c for c in suite.findall("testcase")}
+    files = {p.get("name"): p.get("value") for p in suite.find("properties").findall("property")}
+    expect(files.get("file: correct.bas", "").endswith("class/correct.bas"), "each program's path is a property", files)
     expect(sorted(cases) == sorted(EXPECTED), "test cases", sorted(cases))
     expect(cases["correct.bas"].find("failure") is None, "correct.bas has a failure")
     expect(cases["correct.bas"].find("system-out").text == "perimeter 480\n", "correct.bas's output")

@@ -12,4 +12,7 @@ namespace rb::grade {
 /// `xmlSafe` also replaces the control characters XML 1.0 cannot carry with U+FFFD.
 std::string toUtf8(std::string_view text, bool xmlSafe = false);
 
+/// A CSV field, quoted when needed (RFC 4180): rb test's grade book, rb trace's CSV.
+std::string csvField(const std::string& text);
+
 }  // namespace rb::grade

@@ -1,6 +1,6 @@
 #pragma once
 // The text of the live view's source and variables panes: pure functions, tested without a
-// terminal; cmd/tui_host.cpp draws them.
+// terminal; tui/tui_host.cpp draws them.
 
 #include <cstdint>
 #include <string>

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "robot/robot_link.h"
-#include "run_command.h"
+#include "run_options.h"
 
 namespace rb::cli {
 

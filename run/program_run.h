@@ -19,7 +19,7 @@
 #include "machine/interpreter.h"
 #include "machine/machine.h"
 #include "program_loader.h"
-#include "run_command.h"
+#include "run_options.h"
 #include "sandbox.h"
 
 namespace rb::cli {

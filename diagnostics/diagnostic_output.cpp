@@ -5,71 +5,34 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "base/columns.h"
+#include "base/rules.h"
+
 namespace rb::cli {
 
 using nlohmann::json;
 
 namespace {
 
-struct Rule {
-  const char* id;
-  const char* description;
-};
+/// The text of a line of a program ("" when there is none).
+std::string_view lineOf(const SourceSet& sources, uint32_t file, uint32_t line) {
+  return file < sources.size() ? sources.file(file).lineText(line) : std::string_view();
+}
 
-// Every rule code rb reports; docs/diagnostics.md explains each (a test keeps them in step).
-constexpr Rule kRules[] = {
-    {"rb-unreadable-file", "A program file could not be read."},
-    {"rb-binary-input", "The file is binary data, not program text."},
-    {"rb-unexpected-character", "A character that is not part of RobotBASIC."},
-    {"rb-unterminated-comment", "A /* comment that never closes."},
-    {"rb-unterminated-string", "A string without its closing quote on the same line."},
-    {"rb-number-too-large", "A hexadecimal or binary literal that does not fit in 64 bits."},
-    {"rb-syntax", "The line does not follow RobotBASIC's grammar."},
-    {"rb-unknown-directive", "A # line other than #include."},
-    {"rb-nesting-too-deep", "An expression nested more than 200 levels deep."},
-    {"rb-block-in-line-if", "A block statement (for, while, ...) inside a single-line if."},
-    {"rb-unknown-command", "A statement that is neither a command, a sub nor an assignment."},
-    {"rb-unknown-function", "A call of a function that is neither built in nor a sub."},
-    {"rb-misplaced-builtin", "A built-in's name where it cannot stand (assigned, used as a label, ...)."},
-    {"rb-duplicate-label", "Two labels with the same name."},
-    {"rb-duplicate-sub", "Two subs with the same name."},
-    {"rb-duplicate-parameter", "A sub parameter named twice."},
-    {"rb-label-is-sub", "A label with the name of a sub."},
-    {"rb-sub-as-label", "goto or gosub to a sub (subs are called with call)."},
-    {"rb-unmatched-block", "A block closer (next, wend, endif, ...) that does not match the open block."},
-    {"rb-unclosed-block", "A loop or sub that is never closed."},
-    {"rb-outside-loop", "break or continue outside a loop."},
-    {"rb-undefined-label", "goto or gosub to a label that does not exist."},
-    {"rb-too-many-arguments", "More than 65535 items in one statement."},
-    {"rb-too-many-indices", "An array index with more than 64 dimensions."},
-    {"rb-program-too-large", "More than 67,108,864 variables, constants or temporaries in one place."},
-    {"rb-argument-count", "A built-in or sub called with the wrong number of arguments."},
-    {"rb-output-argument", "A built-in's output argument that is not a variable."},
-    {"rb-reference-argument", "A by-reference (&) sub argument that is not a variable."},
-    {"rb-return-outside-sub", "return with a value outside a sub."},
-    {"rb-include-depth", "#include nested more than 32 files deep."},
-    {"rb-include-not-found", "An #include file that does not exist."},
-    {"rb-include-refused", "An #include file outside the program's folder and the library folders."},
-    {"rb-too-many-errors", "More than 10,000 errors: the rest of the program is not checked."},
-    {"rb-include-unreadable", "An #include file that exists but cannot be read."},
-    {"rb-unclosed-if", "An if without endif: the block runs to the end of the file or sub."},
-    {"rb-unassigned-variable", "A variable that is read but never assigned."},
-    {"rb-endless-loop", "A while or repeat loop whose condition nothing in the loop changes."},
-    {"rb-robot-not-placed", "A robot statement or sensor that runs before rLocate places the robot."},
-    {"rb-jump-into-sub", "goto or gosub to a label inside a sub, from outside that sub."},
-    {"rb-unused-sub", "A sub that is never called."},
-    {"rb-unused-label", "A label that no goto or gosub jumps to."},
-    {"rb-rb9-unsupported", "A function the RB-9 robot has nothing behind (rb check --target rb9)."},
-    {"rb-rb9-long-move", "A move longer than the RB-9 makes in one command (rb check --target rb9)."},
-    {"rb-runtime-error", "The program stopped with an error while running."},
-    {"rb-robot-crash", "The robot ran into something while the program ran."},
-    {"rb-limit", "The run was stopped by --max-steps or --timeout."},
-};
+/// gcc's location object: file, line, and the column three ways: "byte-column" in bytes,
+/// "display-column" as a terminal shows it (tabs to 8, wide characters 2), and "column" in
+/// gcc's default unit, the display column (-fdiagnostics-column-unit=display).
+json position(const SourceSet& sources, uint32_t file, uint32_t line, uint32_t byteCol) {
+  uint32_t display = displayColumn(lineOf(sources, file, line), byteCol);
+  return json{{"file", file < sources.size() ? sources.file(file).name() : std::string()},
+              {"line", line}, {"display-column", display}, {"byte-column", byteCol}, {"column", display}};
+}
 
-/// gcc's location object: file, line, 1-based display and byte columns.
-json position(const std::string& file, uint32_t line, uint32_t col) {
-  return json{{"file", file}, {"line", line}, {"display-column", col}, {"byte-column", col},
-              {"column", col}};
+/// The byte column where the character holding byte column `col` starts (an inclusive end
+/// may name the last byte of a multi-byte character).
+uint32_t charStart(std::string_view line, uint32_t col) {
+  while (col > 1 && col - 1 < line.size() && (static_cast<unsigned char>(line[col - 1]) & 0xC0) == 0x80) --col;
+  return col;
 }
 
 std::string fileOf(const SourceSet& sources, const SourceLoc& loc) {
@@ -97,6 +60,24 @@ std::string sarifUri(const std::string& path) {
   return out;
 }
 
+/// A rule's reportingDescriptor: its summary and full description, its level when reported,
+/// and where it is documented (GitHub code scanning shows all of them).
+json sarifRule(const std::string& id) {
+  json r{{"id", id}};
+  const Rule* rule = findRule(id);
+  if (!rule) {
+    r["shortDescription"] = {{"text", id}};
+    return r;
+  }
+  r["shortDescription"] = {{"text", std::string(rule->summary)}};
+  r["fullDescription"] = {{"text", ruleText(*rule)}, {"markdown", ruleMarkdown(*rule)}};
+  r["defaultConfiguration"] = {{"level", sarifLevel(rule->severity)}};
+  r["helpUri"] = ruleUrl(id);
+  r["help"] = {{"text", ruleText(*rule) + " See " + ruleUrl(id)},
+               {"markdown", ruleMarkdown(*rule) + " [More](" + ruleUrl(id) + ")"}};
+  return r;
+}
+
 /// GitHub workflow commands: % \r \n escaped in the message, also , and : in properties.
 std::string githubEscape(const std::string& s, bool property) {
   std::string out;
@@ -114,9 +95,8 @@ std::string githubEscape(const std::string& s, bool property) {
 }  // namespace
 
 const char* ruleDescription(const std::string& code) {
-  for (const Rule& r : kRules)
-    if (code == r.id) return r.description;
-  return "";
+  const Rule* r = findRule(code);
+  return r ? r->summary.data() : "";
 }
 
 DiagFormat parseDiagFormat(const std::string& name) {
@@ -153,16 +133,18 @@ json diagnosticToGccJson(const SourceSet& sources, const Diagnostic& d) {
   if (!d.code.empty()) j["option"] = d.code;
   j["locations"] = json::array();
   if (d.loc.valid() && d.loc.file < sources.size()) {
-    std::string file = fileOf(sources, d.loc);
     auto [first, last] = diagnosticColumns(sources, d);
+    std::string_view text = lineOf(sources, d.loc.file, d.loc.line);
     json loc;
-    loc["caret"] = position(file, d.loc.line, first);
+    loc["caret"] = position(sources, d.loc.file, d.loc.line, first);
     if (last > first) {
-      loc["start"] = position(file, d.loc.line, first);
-      loc["finish"] = position(file, d.loc.line, last);
+      loc["start"] = position(sources, d.loc.file, d.loc.line, first);
+      loc["finish"] = position(sources, d.loc.file, d.loc.line, charStart(text, last));
     }
     j["locations"].push_back(loc);
-  } else if (d.loc.file < sources.size() && d.severity != Severity::Note) {
+  } else if (d.loc.file < sources.size() && d.severity != Severity::Note && d.code != "rb-unreadable-file") {
+    // A file-level error (binary data): the file without a line. A file that could not be
+    // read has no location, as gcc reports one (its message names the file).
     j["locations"].push_back(json{{"caret", json{{"file", fileOf(sources, d.loc)}}}});
   }
   json children = json::array();
@@ -171,9 +153,8 @@ json diagnosticToGccJson(const SourceSet& sources, const Diagnostic& d) {
   if (!d.fixits.empty()) {
     json fixits = json::array();
     for (const FixIt& f : d.fixits) {
-      std::string file = fileOf(sources, f.start);
-      fixits.push_back(json{{"start", position(file, f.start.line, f.start.col)},
-                            {"next", position(file, f.end.line, f.end.col)},
+      fixits.push_back(json{{"start", position(sources, f.start.file, f.start.line, f.start.col)},
+                            {"next", position(sources, f.end.file, f.end.line, f.end.col)},
                             {"string", f.replacement}});
     }
     j["fixits"] = fixits;
@@ -239,9 +220,11 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
       const char* cmd = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "notice";
       std::string line = std::string("::") + cmd + " file=" + githubEscape(fileName, true);
       if (d.loc.valid()) {
+        // Columns in UTF-16 code units, as GitHub's pages index a line's text.
         auto [first, last] = diagnosticColumns(*sources, d);
-        line += ",line=" + std::to_string(d.loc.line) + ",col=" + std::to_string(first);
-        if (last > first) line += ",endColumn=" + std::to_string(last + 1);
+        std::string_view text = lineOf(*sources, d.loc.file, d.loc.line);
+        line += ",line=" + std::to_string(d.loc.line) + ",col=" + std::to_string(utf16Column(text, first));
+        if (last > first) line += ",endColumn=" + std::to_string(utf16Column(text, last + 1));
       }
       if (!d.code.empty()) line += ",title=" + githubEscape(d.code, true);
       std::string message = d.message;
@@ -261,9 +244,7 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
       size_t ruleIndex = static_cast<size_t>(known - ruleIds_.begin());
       if (known == ruleIds_.end()) {
         ruleIds_.push_back(rule);
-        rules_.push_back(json{{"id", rule},
-                              {"shortDescription", {{"text", ruleDescription(rule)}}},
-                              {"help", {{"text", "See docs/diagnostics.md, section " + rule + "."}}}});
+        rules_.push_back(sarifRule(rule));
       }
       result["ruleId"] = rule;
       result["ruleIndex"] = ruleIndex;
@@ -273,8 +254,14 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
       physical["artifactLocation"] = {{"uri", sarifUri(fileName)}};
       if (d.loc.valid()) {
         auto [first, last] = diagnosticColumns(*sources, d);
-        physical["region"] = {{"startLine", d.loc.line}, {"startColumn", first},
-                              {"endLine", d.loc.line}, {"endColumn", last + 1}};
+        std::string_view text = lineOf(*sources, d.loc.file, d.loc.line);
+        physical["region"] = {{"startLine", d.loc.line}, {"startColumn", utf16Column(text, first)},
+                              {"endLine", d.loc.line}, {"endColumn", utf16Column(text, last + 1)}};
+      } else {
+        // A finding about the whole file (binary data, a file that cannot be read): its lines,
+        // the minimum a whole-file region gives (the Multitool's SARIF2017).
+        uint32_t lines = d.loc.file < sources->size() ? sources->file(d.loc.file).lineCount() : 1;
+        physical["region"] = {{"startLine", 1}, {"endLine", std::max<uint32_t>(lines, 1)}};
       }
       result["locations"] = json::array({json{{"physicalLocation", physical}}});
       json related = json::array();
@@ -288,7 +275,8 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
                                {"message", {{"text", n.message}}},
                                {"physicalLocation",
                                 {{"artifactLocation", {{"uri", sarifUri(fileOf(*sources, n.loc))}}},
-                                 {"region", {{"startLine", n.loc.line}, {"startColumn", n.loc.col}}}}}});
+                                 {"region", {{"startLine", n.loc.line},
+                                             {"startColumn", utf16Column(lineOf(*sources, n.loc.file, n.loc.line), n.loc.col)}}}}}});
       }
       if (!related.empty()) result["relatedLocations"] = related;
       if (!d.fixits.empty()) {
@@ -300,8 +288,10 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
                json::array({json{{"artifactLocation", {{"uri", sarifUri(fileOf(*sources, f.start))}}},
                                  {"replacements",
                                   json::array({json{{"deletedRegion",
-                                                     {{"startLine", f.start.line}, {"startColumn", f.start.col},
-                                                      {"endLine", f.end.line}, {"endColumn", f.end.col}}},
+                                                     {{"startLine", f.start.line},
+                                                      {"startColumn", utf16Column(lineOf(*sources, f.start.file, f.start.line), f.start.col)},
+                                                      {"endLine", f.end.line},
+                                                      {"endColumn", utf16Column(lineOf(*sources, f.end.file, f.end.line), f.end.col)}}},
                                                     {"insertedContent", {{"text", f.replacement}}}}})}}})}});
         }
         result["fixes"] = fixes;
@@ -336,11 +326,12 @@ void DiagnosticReport::finish() {
       json log;
       log["$schema"] = "https://json.schemastore.org/sarif-2.1.0.json";
       log["version"] = "2.1.0";
-      json driver{{"name", "rb"}, {"rules", rules_}};
+      json driver{{"name", "rb"}, {"informationUri", std::string(docsBaseUrl()) + "diagnostics.md"}, {"rules", rules_}};
 #ifdef RB_VERSION
       driver["version"] = RB_VERSION;
 #endif
-      json run{{"tool", {{"driver", driver}}}, {"results", items_}};
+      // Columns count UTF-16 code units (SARIF 2.1.0 3.14.27), as GitHub code scanning expects.
+      json run{{"tool", {{"driver", driver}}}, {"columnKind", "utf16CodeUnits"}, {"results", items_}};
       if (truncated_)
         run["invocations"] = json::array({json{
             {"executionSuccessful", true},

@@ -1,7 +1,7 @@
 #pragma once
 // `rb run --tui`: the program runs live in an ncurses view of the arena.
 
-#include "run_command.h"
+#include "run_options.h"
 
 namespace rb::cli {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Where the parts of `rb run --tui` go on a terminal of a given size, how arena cells map to
 // screen pixels and back, and the text of the status panel. Pure functions, tested without a
-// terminal; cmd/tui_host.cpp draws with them.
+// terminal; tui/tui_host.cpp draws with them.
 
 #include <optional>
 #include <string>

@@ -2,7 +2,7 @@
 // The live view's timeline: what an earlier step of the run looked like, from the run's
 // recording (machine/recording.h: each statement with the robot's pose, the screen as
 // keyframes, the output so far), and the position bar in the output pane's header line. Pure
-// functions of the recording and the text, tested without a terminal; cmd/tui_host.cpp shows
+// functions of the recording and the text, tested without a terminal; tui/tui_host.cpp shows
 // them. Going back is looking: the program stays where it is, and resuming goes on from there.
 
 #include <cstdint>
