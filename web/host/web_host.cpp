@@ -1,7 +1,7 @@
 #include "web_host.h"
 
 #include <emscripten.h>
-#include <emscripten/heap.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -155,7 +155,12 @@ bool WebHost::poll() {
 
 void WebHost::animate() { yieldToPage(false); }
 
-uint64_t WebHost::memoryInUse() { return emscripten_get_heap_size(); }
+// What malloc has handed out now: the wasm heap itself only grows, so its size would count a
+// past run's memory against the next one.
+uint64_t WebHost::memoryInUse() {
+  struct mallinfo info = mallinfo();
+  return static_cast<uint64_t>(static_cast<unsigned>(info.uordblks)) + static_cast<unsigned>(info.hblkhd);
+}
 
 std::optional<std::string> WebHost::inputLine(std::string_view prompt) {
   output(prompt);
