@@ -45,7 +45,9 @@ LIST
   apt_opts=(-q -o Dir::Etc::SourceList="$out/apt/sources.list" -o Dir::Etc::SourceParts=-
             -o Dir::State::Lists="$out/apt/lists" -o Debug::NoLocking=1 -o APT::Sandbox::User=root)
   apt-get "${apt_opts[@]}" update >/dev/null
-  (cd "$out/apt" && apt-get "${apt_opts[@]}" --download-only source "freetype${ftver:+=$ftver}" >/dev/null)
+  # The installed version when the mirror still has it, else the newest it has.
+  (cd "$out/apt" && { apt-get "${apt_opts[@]}" --download-only source "freetype${ftver:+=$ftver}" >/dev/null 2>&1 ||
+                      apt-get "${apt_opts[@]}" --download-only source freetype >/dev/null; })
   mkdir -p "$ftsrc"
   tar -xf "$out"/apt/freetype_*.orig.tar.xz -C "$ftsrc" --strip-components=1
   tar -xf "$out"/apt/freetype_*.debian.tar.xz -C "$ftsrc"
