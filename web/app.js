@@ -338,7 +338,8 @@
     setRunning(false);
     if (result.frame) drawFrame(result.frame);
     const secs = ((performance.now() - started) / 1000).toFixed(2);
-    if (result.status !== 'rejected') listDiagnostics(await rb.check(editor.value));
+    // The diagnostics again (a check waits while a run is on); the run has ended already.
+    if (result.status !== 'rejected') rb.check(editor.value).then(listDiagnostics);
     if (result.status === 'rejected') {
       listDiagnostics(result.diagnostics);
       const first = result.diagnostics.find((d) => d.severity === 'error');

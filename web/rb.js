@@ -115,10 +115,10 @@
 
   // Runs `source`; `live`: the page's live run with its hooks (see web/app.js).
   function runWith(source, options, live) {
-    const state = {stopped: false};
+    const state = {stopped: false, wake: new Set()};
     const job = queue.then(async () => {
       const M = await core();
-      current = state;
+      current = {stop: () => { state.stopped = true; [...state.wake].forEach((w) => w()); }};
       let output = '';
       let frame = null;
       const io = Object.assign({}, noInput, options.io || {});
@@ -130,7 +130,12 @@
           frame = {rgba: new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4)), width: w, height: h};
           if (options.onFrame) options.onFrame(frame);
         },
-        yield: (options.wrapYield || ((f) => f))((ms) => (ms > 0 ? new Promise((r) => setTimeout(r, ms)) : fastYield())),
+        // A sleep ends early when the run is stopped.
+        yield: (options.wrapYield || ((f) => f))((ms) => (ms > 0 ? new Promise((r) => {
+          const done = () => { clearTimeout(timer); state.wake.delete(done); r(); };
+          const timer = setTimeout(done, ms);
+          state.wake.add(done);
+        }) : fastYield())),
       });
       const stdin = (options.stdin || []).map((l) => String(l) + '\n').join('');
       const seed = options.seed !== undefined ? Number(options.seed) : Math.floor(Math.random() * 2 ** 32);
@@ -159,7 +164,8 @@
       });
     });
     queue = job.catch(() => {});
-    return {done: job, stop: () => { state.stopped = true; }, state};
+    const stop = () => { state.stopped = true; [...state.wake].forEach((w) => w()); };
+    return {done: job, stop, state};
   }
 
   const rb = {
@@ -182,7 +188,7 @@
       return runWith(source, options, true);
     },
     stop() {
-      if (current) current.stopped = true;
+      if (current) current.stop();
     },
     ready() {
       return core().then(() => true);
