@@ -28,7 +28,9 @@ test_packages=(
   neovim                # the Neovim snippet tested in a real (headless) Neovim, Debian 12's 0.7.2
   chromium              # the replays of rb render --animate played in a real browser (headless, driven
                         # over the DevTools protocol on a pipe by testdata/render/replay_browser.py),
-                        # and rb test --html's class report page (testdata/grade/html_browser.py)
+                        # rb test --html's class report page (testdata/grade/html_browser.py) and
+                        # the web page (testdata/web)
+  emscripten xz-utils patch python3-fonttools   # scripts/web.sh: the core as WebAssembly for the web page's tests (testdata/web)
 )
 bench_packages=(
   lua5.4 yabasic brandy hyperfine   # benchmark peers

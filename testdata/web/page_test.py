@@ -1,0 +1,282 @@
+#!/usr/bin/env python3
+"""The web page (build-web/site, built by scripts/web.sh) in a real browser: headless Chromium
+driven over the DevTools protocol on a pipe (the Browser of testdata/render/replay_browser.py),
+the site served by Python's http.server on a free port.
+
+Usage: page_test.py --rb PATH/TO/rb --source SOURCE_DIR --site SITE_DIR --work WORK_DIR CASE
+
+Exits 77 (skipped) when the site has not been built or Chromium is not installed;
+scripts/test.sh builds the site and scripts/setup.sh --test installs Chromium, so CI runs these.
+"""
+
+import argparse
+import base64
+import functools
+import hashlib
+import http.server
+import json
+import os
+import shutil
+import subprocess
+import sys
+import threading
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "render"))
+from replay_browser import Browser, Failure, expect, find_chromium, first_difference, read_png  # noqa: E402
+
+CANVAS_JS = """
+window.__rgb = () => {
+  const c = document.getElementById('screen');
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  const rgb = new Uint8Array(c.width * c.height * 3);
+  for (let i = 0, j = 0; i < d.length; i += 4) { rgb[j++] = d[i]; rgb[j++] = d[i + 1]; rgb[j++] = d[i + 2]; }
+  return rgb;
+};
+window.__b64 = (rgb) => {
+  let s = '';
+  for (let i = 0; i < rgb.length; i += 32768) s += String.fromCharCode.apply(null, rgb.subarray(i, i + 32768));
+  return btoa(s);
+};
+window.__pngRgb = async (url) => {
+  const img = new Image();
+  img.src = url;
+  await img.decode();
+  const c = document.createElement('canvas');
+  c.width = img.width; c.height = img.height;
+  const g = c.getContext('2d');
+  g.drawImage(img, 0, 0);
+  const d = g.getImageData(0, 0, c.width, c.height).data;
+  const rgb = new Uint8Array(c.width * c.height * 3);
+  for (let i = 0, j = 0; i < d.length; i += 4) { rgb[j++] = d[i]; rgb[j++] = d[i + 1]; rgb[j++] = d[i + 2]; }
+  return rgb;
+};
+true
+"""
+
+
+class Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+class Env:
+    def __init__(self, args, chromium):
+        self.args = args
+        self.chromium = chromium
+        handler = functools.partial(Quiet, directory=args.site)
+        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+        self.url = f"http://127.0.0.1:{self.server.server_address[1]}/index.html"
+        self.browser = Browser(chromium, args.work)
+
+    def close(self):
+        self.browser.close()
+        self.server.shutdown()
+
+    def open(self, url=None):
+        b = self.browser
+        b.events = [e for e in b.events if e.get("method") != "Page.loadEventFired"]
+        b.call("Page.navigate", {"url": url or self.url}, session=True)
+        b.wait_event("Page.loadEventFired")
+        b.js("window.rbPage.ready")
+        b.js(CANVAS_JS)
+        return b
+
+    def render(self, path):
+        png = os.path.join(self.args.work, "render.png")
+        r = subprocess.run([self.args.rb, "render", path, "-o", png], capture_output=True, text=True,
+                           timeout=60, stdin=subprocess.DEVNULL)
+        expect(r.returncode == 0, f"rb render {path}: exit {r.returncode}\n{r.stderr}")
+        return read_png(open(png, "rb").read())
+
+    def expect_rgb(self, got_b64, want, what):
+        width, _, want_rgb = want
+        got = base64.b64decode(got_b64)
+        if hashlib.sha256(got).digest() != hashlib.sha256(want_rgb).digest():
+            raise Failure(f"{what} is not rb render's picture: {first_difference(width, got, want_rgb)}")
+
+    def run_page(self, text):
+        """Puts `text` in the editor and runs it to its end; returns the run's result."""
+        b = self.browser
+        b.js(f"rbPage.setSource({json.dumps(text)}); true")
+        return b.js("rbPage.runProgram().then(() => ({status: rbLastRun.status, error: rbLastRun.error, "
+                    "output: document.getElementById('output').textContent}))")
+
+    def expect_quiet(self):
+        b = self.browser
+        expect(not b.errors, "the console shows errors:\n" + "\n".join(b.errors))
+
+
+def case_loads(env):
+    """The page loads, checks the program in its editor and shows no console error."""
+    b = env.open()
+    expect(b.js("document.getElementById('status').textContent") == "ready", "the page is not ready")
+    expect(b.js("RB_EXAMPLES.length") >= 5, "the seed's figures are not among the examples")
+    env.expect_quiet()
+
+
+def case_square(env):
+    """The seed's square runs on the page and its canvas is rb render's PNG, pixel for pixel;
+    rb.run's png too."""
+    b = env.open()
+    fig = os.path.join(env.args.source, "examples", "fig_1_7.bas")
+    want = env.render(fig)
+    text = open(fig).read()
+    r = env.run_page(text)
+    expect(r["status"] == "finished", f"the square ended {r}")
+    env.expect_rgb(b.js("__b64(__rgb())"), want, "the page's canvas")
+    png = b.js(f"rb.run({json.dumps(text)}, {{seed: 1}}).then((r) => r.png)")
+    env.expect_rgb(b.js(f"__pngRgb({json.dumps(png)}).then(__b64)"), want, "rb.run's png")
+    # Text, in several faces: the fonts are rasterized as natively.
+    textprog = os.path.join(env.args.work, "text.bas")
+    with open(textprog, "w") as f:
+        f.write('xyText 10,10,"Hello, World 123","Arial",14,fs_Bold\n'
+                'xyText 10,60,"Serif italic","Times New Roman",20,fs_Italic\n'
+                'xyString 10,120,"print face"\nrLocate 400,300\nrForward 50\n')
+    want = env.render(textprog)
+    r = env.run_page(open(textprog).read())
+    expect(r["status"] == "finished", f"the text program ended {r}")
+    env.expect_rgb(b.js("__b64(__rgb())"), want, "the page's canvas (text)")
+    env.expect_quiet()
+
+
+def case_input_keys(env):
+    """`input` is answered inline on the page, and keys pressed on the screen reach waitKey; rb.run
+    reads its stdin list as rb run reads a pipe."""
+    b = env.open()
+    b.js("rbPage.setSource('input \"name?\", n\\nprint \"hello \" + n\\nwaitKey k\\nprint \"key \" + k\\n'); "
+         "window.__done = rbPage.runProgram(); true")
+    deadline = time.monotonic() + 20
+    while b.js("document.getElementById('inputForm').hidden"):
+        expect(time.monotonic() < deadline, "no input line appeared")
+        time.sleep(0.05)
+    b.js("document.getElementById('inputLine').value = 'Ada'; "
+         "document.getElementById('inputForm').requestSubmit(); true")
+    time.sleep(0.3)
+    b.js("document.getElementById('screen').focus(); true")
+    b.call("Input.dispatchKeyEvent", {"type": "keyDown", "key": "q", "code": "KeyQ", "text": "q",
+                                      "windowsVirtualKeyCode": 81}, session=True)
+    b.call("Input.dispatchKeyEvent", {"type": "keyUp", "key": "q", "code": "KeyQ",
+                                      "windowsVirtualKeyCode": 81}, session=True)
+    b.js("window.__done.then(() => true)", timeout=20)
+    out = b.js("document.getElementById('output').textContent")
+    expect(out == "name?Ada\nhello Ada\nkey 113\n", f"the output was {out!r}")
+    # A message box is a page dialog; a click on the screen reaches waitClick at its pixel.
+    prog = 'MsgBox "hello", "Title"\nprint "after"\nwaitClick x, y, b\nprint x; ","; y; ","; b\n'
+    b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
+    deadline = time.monotonic() + 20
+    while not b.js("document.getElementById('msgbox').open"):
+        expect(time.monotonic() < deadline, "no message box appeared")
+        time.sleep(0.05)
+    expect(b.js("document.getElementById('msgText').textContent") == "hello", "the message box's text")
+    b.js("document.getElementById('msgOk').click(); true")
+    time.sleep(0.3)
+    x, y = b.js("(() => { const r = document.getElementById('screen').getBoundingClientRect(); "
+                "const s = Math.min(r.width / 800, r.height / 600); "
+                "return [r.left + (r.width - 800 * s) / 2 + 200.5 * s, r.top + (r.height - 600 * s) / 2 + 100.5 * s]; })()")
+    for kind in ("mousePressed", "mouseReleased"):
+        b.call("Input.dispatchMouseEvent", {"type": kind, "x": x, "y": y, "button": "left", "clickCount": 1},
+               session=True)
+    b.js("window.__done.then(() => true)", timeout=20)
+    out = b.js("document.getElementById('output').textContent")
+    expect(out == "after\n200\t,\t100\t,\t1\n", f"after the message box and the click the output was {out!r}")
+    r = b.js("rb.run('input a\\ninput b\\nprint a + b\\n', {stdin: ['2', '3']}).then((r) => [r.output, r.status])")
+    expect(r == ["2\n3\n5\n", "finished"], f"rb.run with stdin gave {r}")
+    env.expect_quiet()
+
+
+def case_share(env):
+    """A share link holds the program: opened, it puts the same text in the editor."""
+    b = env.open()
+    text = 'print "shared ü"\nrLocate 100,100\n' + "// " + "x" * 300 + "\n"
+    link = b.js(f"rbPage.shareLink({json.dumps(text)})")
+    expect("#code=" in link and len(link) < 400, f"the link is {link}")
+    b.call("Page.navigate", {"url": "about:blank"}, session=True)
+    b.wait_event("Page.loadEventFired")
+    env.open(link)
+    got = b.js("rbPage.source")
+    expect(got == text, f"the editor holds {got!r}")
+    env.expect_quiet()
+
+
+def case_stop(env):
+    """Stop ends an endless loop within 100 ms, and the page stays responsive while it runs."""
+    b = env.open()
+    b.js("rbPage.setSource('x = 0\\nwhile 1\\n  x = x + 1\\nwend\\n'); window.__done = rbPage.runProgram(); true")
+    time.sleep(1.0)
+    # The page answers while the loop runs: a timer fires on time.
+    late = b.js("new Promise((r) => { const t = performance.now(); setTimeout(() => r(performance.now() - t - 50), 50); })")
+    expect(late < 100, f"a 50 ms timer fired {late:.0f} ms late while the program ran")
+    expect(b.js("rbPage.running"), "the endless loop is not running")
+    took = b.js("(async () => { const t = performance.now(); rbPage.stopProgram(); await window.__done; "
+                "return performance.now() - t; })()")
+    expect(took < 100, f"Stop took {took:.0f} ms")
+    expect(b.js("rbLastRun.status") == "stopped", "the run did not end as stopped")
+    # A delay and a waitKey end at Stop too.
+    for prog in ["delay 100000\\n", "waitKey k\\n", "input a\\n"]:
+        b.js(f"rbPage.setSource('{prog}'); window.__done = rbPage.runProgram(); true")
+        time.sleep(0.3)
+        took = b.js("(async () => { const t = performance.now(); rbPage.stopProgram(); await window.__done; "
+                    "return performance.now() - t; })()")
+        expect(took < 100, f"Stop of {prog!r} took {took:.0f} ms")
+        expect(b.js("rbLastRun.status") == "stopped", f"{prog!r} ended {b.js('rbLastRun.status')}")
+    env.expect_quiet()
+
+
+def case_error_line(env):
+    """A runtime error is shown with rb run's message and its line is marked in the editor; a
+    program that does not compile shows its error at its line too."""
+    b = env.open()
+    r = env.run_page('print "a"\nx = 0\nprint 1 / x\nprint "b"\n')
+    expect(r["status"] == "error", f"the run ended {r['status']}")
+    expect("program.bas:3:" in r["error"] and "division by zero" in r["error"], f"the error is {r['error']!r}")
+    marked = b.js("[...document.querySelectorAll('.cm-line.rb-errline')].map((e) => e.textContent)")
+    expect(marked == ["print 1 / x"], f"the marked lines are {marked}")
+    r = env.run_page('print "a"\ngosub Nowhere\n')
+    expect(r["status"] == "rejected" and "program.bas:2:" in r["error"], f"the load error is {r}")
+    listed = b.js("[...document.querySelectorAll('#diagnostics li.error')].map((e) => e.dataset.line)")
+    expect(listed == ["2"], f"the errors listed are at lines {listed}")
+    marked = b.js("document.querySelectorAll('.cm-lint-marker-error').length")
+    expect(marked == 1, f"the gutter marks {marked} errors")
+    # The same limits as rb run: --max-steps.
+    r = b.js("rb.run('while 1\\nwend\\n', {maxSteps: 1000}).then((r) => r.error)")
+    expect("stopped after 1000 steps (the --max-steps limit)" in r, f"the step limit said {r!r}")
+    env.expect_quiet()
+
+
+CASES = {"loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
+         "stop": case_stop, "error_line": case_error_line}
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--rb", required=True)
+    p.add_argument("--source", required=True)
+    p.add_argument("--site", required=True)
+    p.add_argument("--work", required=True)
+    p.add_argument("case", choices=sorted(CASES))
+    args = p.parse_args()
+    if not os.path.exists(os.path.join(args.site, "index.html")):
+        print(f"skipped: the site is not built ({args.site}; scripts/web.sh builds it)")
+        return 77
+    chromium = find_chromium()
+    if not chromium:
+        print("skipped: Chromium is not installed (scripts/setup.sh --test installs it)")
+        return 77
+    shutil.rmtree(args.work, ignore_errors=True)
+    os.makedirs(args.work)
+    env = Env(args, chromium)
+    try:
+        CASES[args.case](env)
+    except Failure as e:
+        print(f"{args.case}: FAILED: {e}")
+        return 1
+    finally:
+        env.close()
+    print(f"{args.case}: ok")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,398 @@
+// The page: editor, run controls, the screen and the output, on window.rb (web/rb.js).
+(function () {
+  'use strict';
+  const $ = (id) => document.getElementById(id);
+  const source = $('source'), highlight = $('highlight'), gutter = $('gutter');
+  const canvas = $('screen'), ctx = canvas.getContext('2d');
+  const output = $('output'), status = $('status');
+  const STORE = 'rb.source';
+
+  // ---------------------------------------------------------------- editor
+  const KEYWORDS = new Set(('if then else elseif endif for to step next while wend repeat until do loop ' +
+    'gosub goto return sub call end print input and or not mod xor break continue case select ' +
+    'endsub onerror data dim byref declare include true false').split(' '));
+  let errorLine = 0;
+  let marks = new Map();  // line -> 'err' | 'warn'
+
+  function escapeHtml(s) {
+    return s.replace(/[&<>]/g, (c) => ({'&': '&amp;', '<': '&lt;', '>': '&gt;'}[c]));
+  }
+  function highlightLine(line) {
+    let html = '';
+    const re = /(\/\/.*$|'.*$)|("[^"]*"?)|(\b\d+(?:\.\d*)?(?:e[+-]?\d+)?\b)|([A-Za-z_][A-Za-z_0-9]*:?)|(\s+|.)/gi;
+    let m;
+    let first = true;
+    while ((m = re.exec(line)) !== null) {
+      if (m[0] === '') break;
+      const t = escapeHtml(m[0]);
+      if (m[1]) html += `<span class="com">${t}</span>`;
+      else if (m[2]) html += `<span class="str">${t}</span>`;
+      else if (m[3]) html += `<span class="num">${t}</span>`;
+      else if (m[4]) {
+        const w = m[4].toLowerCase();
+        if (first && w.endsWith(':')) html += `<span class="lbl">${t}</span>`;
+        else if (w === 'rem' && first) { html += `<span class="com">${escapeHtml(line.slice(m.index))}</span>`; break; }
+        else if (KEYWORDS.has(w)) html += `<span class="kw">${t}</span>`;
+        else if (/^r[A-Z]/.test(m[4])) html += `<span class="rb">${t}</span>`;
+        else html += t;
+      } else html += t;
+      if (!/^\s+$/.test(m[0])) first = false;
+    }
+    return html;
+  }
+  function renderEditor() {
+    const lines = source.value.split('\n');
+    highlight.innerHTML = lines.map((l, i) => {
+      const h = highlightLine(l) || ' ';
+      return i + 1 === errorLine ? `<span class="errline">${h}</span>` : h;
+    }).join('\n') + '\n';
+    gutter.innerHTML = lines.map((_, i) => {
+      const m = marks.get(i + 1);
+      return m ? `<span class="${m}">${i + 1}</span>` : String(i + 1);
+    }).join('\n');
+    source.style.height = 'auto';
+    source.style.height = source.scrollHeight + 'px';
+    source.style.width = 'auto';
+    source.style.width = Math.max(source.scrollWidth, $('code').clientWidth) + 'px';
+  }
+  function goToLine(line) {
+    const lines = source.value.split('\n');
+    let pos = 0;
+    for (let i = 0; i < line - 1 && i < lines.length; i++) pos += lines[i].length + 1;
+    source.focus();
+    source.setSelectionRange(pos, pos + (lines[line - 1] || '').length);
+    $('editor').scrollTop = Math.max(0, (line - 5) * 20);
+  }
+  function listDiagnostics(list) {
+    const ul = $('diagnostics');
+    ul.textContent = '';
+    marks = new Map();
+    for (const d of list) {
+      if (d.severity === 'note') continue;
+      if (d.line) marks.set(d.line, d.severity === 'error' ? 'err' : marks.get(d.line) || 'warn');
+      const li = document.createElement('li');
+      li.className = d.severity;
+      li.textContent = `${d.line}:${d.col}: ${d.severity}: ${d.message}${d.code ? ' [' + d.code + ']' : ''}`;
+      li.dataset.line = d.line;
+      li.onclick = () => editor.goToLine(d.line);
+      ul.appendChild(li);
+    }
+    editor.setDiagnostics(list);
+  }
+  // The plain editor: the text area with its highlighting overlay and gutter, when the
+  // CodeMirror bundle (editor.js) is not there.
+  const textAreaEditor = {
+    get value() { return source.value; },
+    set value(text) { source.value = text; renderEditor(); },
+    setDiagnostics() { renderEditor(); },
+    setErrorLine(line) { errorLine = line || 0; renderEditor(); },
+    goToLine,
+    focus() { source.focus(); },
+  };
+  let editor = textAreaEditor;
+  if (window.RbEditor) {
+    $('gutter').remove();
+    $('code').remove();
+    editor = window.RbEditor.create($('editor'), {doc: '', onChange: () => changed(), onRun: () => runProgram()});
+    editor.view.dom.id = 'cm';
+  }
+  let checkTimer = 0;
+  function changed() {
+    localStorage.setItem(STORE, editor.value);
+    if (editor === textAreaEditor) { errorLine = 0; renderEditor(); }
+    clearTimeout(checkTimer);
+    // During a run the check waits for its end (runProgram checks then).
+    checkTimer = setTimeout(async () => { if (!run) listDiagnostics(await rb.check(editor.value)); }, 250);
+  }
+  source.addEventListener('input', changed);
+  source.addEventListener('keydown', (e) => {
+    if (e.key === 'Tab') {
+      e.preventDefault();
+      source.setRangeText('    ', source.selectionStart, source.selectionEnd, 'end');
+      changed();
+    } else if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) {
+      e.preventDefault();
+      runProgram();
+    }
+  });
+  function setSource(text) {
+    editor.value = text;
+    if (editor === textAreaEditor) changed();
+  }
+
+  // ---------------------------------------------------------------- share links, files, examples
+  function toBase64Url(bytes) {
+    let s = '';
+    for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+    return btoa(s).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+  }
+  function fromBase64Url(s) {
+    const b = atob(s.replace(/-/g, '+').replace(/_/g, '/'));
+    return Uint8Array.from(b, (c) => c.charCodeAt(0));
+  }
+  async function pipe(bytes, stream) {
+    return new Uint8Array(await new Response(new Blob([bytes]).stream().pipeThrough(stream)).arrayBuffer());
+  }
+  async function shareLink(text) {
+    const packed = await pipe(new TextEncoder().encode(text), new CompressionStream('deflate-raw'));
+    return location.href.split('#')[0] + '#code=' + toBase64Url(packed);
+  }
+  async function programFromHash() {
+    const m = /^#code=([A-Za-z0-9_-]+)/.exec(location.hash);
+    if (!m) return null;
+    return new TextDecoder().decode(await pipe(fromBase64Url(m[1]), new DecompressionStream('deflate-raw')));
+  }
+  $('share').onclick = async () => {
+    const link = await shareLink(editor.value);
+    history.replaceState(null, '', link);
+    try { await navigator.clipboard.writeText(link); status.textContent = 'link copied'; } catch (e) { status.textContent = 'link in the address bar'; }
+  };
+  window.addEventListener('hashchange', async () => { const p = await programFromHash(); if (p !== null) setSource(p); });
+  $('open').onclick = () => $('file').click();
+  $('file').onchange = async () => { const f = $('file').files[0]; if (f) setSource(await f.text()); $('file').value = ''; };
+  function download(name, href) {
+    const a = document.createElement('a');
+    a.href = href;
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+  }
+  $('save').onclick = () => download('program.bas', URL.createObjectURL(new Blob([editor.value], {type: 'text/plain'})));
+  $('png').onclick = () => download('screen.png', canvas.toDataURL('image/png'));
+  const examples = window.RB_EXAMPLES || [];
+  for (const [i, ex] of examples.entries()) {
+    const o = document.createElement('option');
+    o.value = String(i);
+    o.textContent = `${ex.name}: ${ex.title}`;
+    $('examples').appendChild(o);
+  }
+  $('examples').onchange = () => {
+    const ex = examples[Number($('examples').value)];
+    if (ex) setSource(ex.source);
+    $('examples').value = '';
+  };
+
+  // ---------------------------------------------------------------- keys and the mouse
+  const NAMED = {Enter: 13, Escape: 27, Backspace: 8, Tab: 9, ' ': 32, PageUp: 256 + 33, PageDown: 256 + 34,
+    End: 256 + 35, Home: 256 + 36, ArrowLeft: 256 + 37, ArrowUp: 256 + 38, ArrowRight: 256 + 39,
+    ArrowDown: 256 + 40, Insert: 256 + 45, Delete: 256 + 46};
+  function keyCode(e) {
+    if (NAMED[e.key] !== undefined) return NAMED[e.key];
+    const f = /^F(\d+)$/.exec(e.key);
+    if (f && Number(f[1]) >= 1 && Number(f[1]) <= 12) return 256 + 111 + Number(f[1]);
+    if (e.key.length === 1) {
+      let c = e.key;
+      if (/[a-zA-Z]/.test(c)) c = e.shiftKey ? c.toUpperCase() : c.toLowerCase();
+      const code = c.charCodeAt(0);
+      return code <= 255 ? code : 0;
+    }
+    return 0;
+  }
+  const input = {held: 0, keyWaiters: [], mouse: [0, 0, 0], clicks: [], clickWaiters: []};
+  function keyDown(code) {
+    if (!code) return;
+    input.held = code;
+    const w = input.keyWaiters.splice(0);
+    w.forEach((r) => r(code));
+  }
+  canvas.addEventListener('keydown', (e) => {
+    const code = keyCode(e);
+    if (!code || e.ctrlKey || e.metaKey) return;
+    e.preventDefault();
+    keyDown(code);
+  });
+  canvas.addEventListener('keyup', () => { input.held = 0; });
+  canvas.addEventListener('blur', () => { input.held = 0; });
+  function screenPoint(e) {
+    const r = canvas.getBoundingClientRect();
+    // object-fit: contain: the picture's box inside the element
+    const scale = Math.min(r.width / 800, r.height / 600);
+    const ox = (r.width - 800 * scale) / 2, oy = (r.height - 600 * scale) / 2;
+    return [Math.floor((e.clientX - r.left - ox) / scale), Math.floor((e.clientY - r.top - oy) / scale)];
+  }
+  canvas.addEventListener('mousemove', (e) => { const [x, y] = screenPoint(e); input.mouse = [x, y, e.buttons & 7]; });
+  canvas.addEventListener('mousedown', (e) => {
+    const [x, y] = screenPoint(e);
+    const bits = e.button === 0 ? 1 : e.button === 2 ? 2 : 4;
+    input.mouse = [x, y, (e.buttons & 7) | bits];
+    const c = [x, y, input.mouse[2]];
+    const w = input.clickWaiters.shift();
+    if (w) w(c); else input.clicks.push(c);
+  });
+  canvas.addEventListener('mouseup', (e) => { input.mouse = [input.mouse[0], input.mouse[1], e.buttons & 7]; });
+  canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+
+  // ---------------------------------------------------------------- the run
+  let run = null;          // {stop, done}
+  let paused = false, resumeWaiters = [];
+  let stepping = false;
+  let cancelInput = null, cancelDialog = null;
+  let outputText = '';
+
+  function setRunning(on) {
+    $('run').disabled = on;
+    $('stop').disabled = !on;
+    $('pause').disabled = !on;
+    $('step').disabled = !on || !paused;
+    $('pause').textContent = paused ? 'Resume' : 'Pause';
+  }
+  function appendOutput(text, cls) {
+    const keep = Math.max(1, Number($('keepOutput').value) || 256) * 1024;
+    outputText += text;
+    if (cls) {
+      const span = document.createElement('span');
+      span.className = cls;
+      span.textContent = text;
+      output.appendChild(span);
+      return;
+    }
+    if (outputText.length > keep) {
+      outputText = outputText.slice(outputText.length - keep);
+      output.textContent = outputText;
+    } else {
+      output.appendChild(document.createTextNode(text));
+    }
+    $('outputPane').scrollTop = $('outputPane').scrollHeight;
+  }
+  function drawFrame(f) {
+    ctx.putImageData(new ImageData(f.rgba, f.width, f.height), 0, 0);
+  }
+  function clearScreen() {
+    ctx.fillStyle = '#fff';
+    ctx.fillRect(0, 0, 800, 600);
+  }
+  const io = {
+    heldKey: () => input.held,
+    waitKey: () => (input.held ? Promise.resolve(input.held) : new Promise((r) => input.keyWaiters.push(r))),
+    mouse: () => input.mouse,
+    takeClick: () => input.clicks.shift() || null,
+    waitClick: () => (input.clicks.length ? Promise.resolve(input.clicks.shift()) : new Promise((r) => input.clickWaiters.push(r))),
+    inputLine: (prompt) => new Promise((resolve) => {
+      const form = $('inputForm'), line = $('inputLine');
+      form.hidden = false;
+      line.value = '';
+      line.focus();
+      $('outputPane').scrollTop = $('outputPane').scrollHeight;
+      const finish = (value) => { form.hidden = true; form.onsubmit = null; cancelInput = null; resolve(value); };
+      form.onsubmit = (e) => { e.preventDefault(); finish(line.value); };
+      cancelInput = () => finish(null);
+    }),
+    messageBox: (text, title) => new Promise((resolve) => {
+      const d = $('msgbox');
+      $('msgTitle').textContent = title || 'Message';
+      $('msgText').textContent = text;
+      const finish = () => { d.onclose = null; cancelDialog = null; if (d.open) d.close(); canvas.focus(); resolve(); };
+      d.onclose = finish;
+      cancelDialog = finish;
+      d.showModal();
+    }),
+  };
+  // The run's yields wait here while paused.
+  function pauseGate(inner) {
+    return async (ms) => {
+      await inner(ms);
+      if (stepping) { stepping = false; paused = true; setRunning(true); }
+      while (paused && run) await new Promise((r) => resumeWaiters.push(r));
+    };
+  }
+
+  function limits() {
+    return {
+      maxSteps: Number($('maxSteps').value) || 0,
+      timeout: Number($('timeout').value) || 0,
+      maxMemory: Number($('maxMemory').value) || 0,
+    };
+  }
+  async function runProgram() {
+    if (run) return;
+    output.textContent = '';
+    outputText = '';
+    editor.setErrorLine(0);
+    clearScreen();
+    input.clicks = [];
+    input.held = 0;
+    paused = false;
+    status.textContent = 'running';
+    const started = performance.now();
+    canvas.focus();
+    const r = rb.start(editor.value, Object.assign(limits(), {
+      io,
+      png: false,
+      stepMs: () => Number($('speed').value),
+      onOutput: (t) => appendOutput(t),
+      onFrame: drawFrame,
+      wrapYield: pauseGate,
+    }));
+    run = r;
+    setRunning(true);
+    let result;
+    try {
+      result = await r.done;
+    } catch (e) {
+      result = {status: 'error', error: String(e), output: ''};
+    }
+    run = null;
+    paused = false;
+    resumeWaiters.splice(0).forEach((w) => w());
+    setRunning(false);
+    if (result.frame) drawFrame(result.frame);
+    const secs = ((performance.now() - started) / 1000).toFixed(2);
+    // The diagnostics again (a check waits while a run is on); the run has ended already.
+    if (result.status !== 'rejected') rb.check(editor.value).then(listDiagnostics);
+    if (result.status === 'rejected') {
+      listDiagnostics(result.diagnostics);
+      const first = result.diagnostics.find((d) => d.severity === 'error');
+      editor.setErrorLine(first ? first.line : 0);
+      appendOutput(result.error, 'error');
+    } else if (result.error) {
+      editor.setErrorLine(result.errorLine || 0);
+      appendOutput((outputText && !outputText.endsWith('\n') ? '\n' : '') + result.error, 'error');
+    }
+    status.textContent = `${result.status} (${secs} s, ${result.steps || 0} steps)`;
+    window.rbLastRun = result;
+  }
+  function stopProgram() {
+    if (!run) return;
+    run.stop();
+    paused = false;
+    resumeWaiters.splice(0).forEach((w) => w());
+    input.keyWaiters.splice(0).forEach((w) => w(0));
+    input.clickWaiters.splice(0).forEach((w) => w([0, 0, 0]));
+    if (cancelInput) cancelInput();
+    if (cancelDialog) cancelDialog();
+  }
+  $('run').onclick = runProgram;
+  $('stop').onclick = stopProgram;
+  $('pause').onclick = () => {
+    if (!run) return;
+    paused = !paused;
+    if (!paused) resumeWaiters.splice(0).forEach((w) => w());
+    setRunning(true);
+    status.textContent = paused ? 'paused' : 'running';
+  };
+  $('step').onclick = () => {
+    if (!run || !paused) return;
+    stepping = true;
+    paused = false;
+    resumeWaiters.splice(0).forEach((w) => w());
+  };
+  window.addEventListener('keydown', (e) => {
+    if (e.key === 'Escape' && run && document.activeElement === canvas && e.shiftKey) stopProgram();
+  });
+
+  // ---------------------------------------------------------------- start
+  window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash,
+    get source() { return editor.value; },
+    get running() { return run !== null; }, ready: null};
+  window.rbPage.ready = (async () => {
+    clearScreen();
+    const fromLink = await programFromHash().catch(() => null);
+    const saved = localStorage.getItem(STORE);
+    editor.value = fromLink !== null ? fromLink : saved !== null ? saved : (examples[0] ? examples[0].source : '');
+    await rb.ready();
+    listDiagnostics(await rb.check(editor.value));
+    status.textContent = 'ready';
+    return true;
+  })();
+})();

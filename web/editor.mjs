@@ -1,0 +1,102 @@
+// The page's editor: CodeMirror 6 with RobotBASIC highlighting, rb's diagnostics in the gutter
+// and under the text, and the line of a runtime error marked. Bundled by scripts/web.sh
+// (esbuild) into editor.js, which sets window.RbEditor; web/app.js falls back to its text area
+// without it.
+import {EditorState, StateEffect, StateField} from '@codemirror/state';
+import {EditorView, Decoration, keymap, lineNumbers, highlightActiveLine, highlightActiveLineGutter,
+  drawSelection} from '@codemirror/view';
+import {defaultKeymap, history, historyKeymap, indentWithTab} from '@codemirror/commands';
+import {StreamLanguage, syntaxHighlighting, defaultHighlightStyle, bracketMatching} from '@codemirror/language';
+import {setDiagnostics, lintGutter} from '@codemirror/lint';
+
+const KEYWORDS = new Set(('if then else elseif endif for to step next while wend repeat until do loop ' +
+  'gosub goto return sub call end print input and or not mod xor break continue case select ' +
+  'endsub onerror data dim byref declare include true false').split(' '));
+
+const robotBasic = StreamLanguage.define({
+  name: 'robotbasic',
+  startState: () => ({lineStart: true}),
+  token(stream, state) {
+    if (stream.sol()) state.lineStart = true;
+    if (stream.eatSpace()) return null;
+    const first = state.lineStart;
+    state.lineStart = false;
+    if (stream.match('//') || stream.match("'")) { stream.skipToEnd(); return 'comment'; }
+    if (stream.match(/^"[^"]*"?/)) return 'string';
+    if (stream.match(/^\d+(\.\d*)?(e[+-]?\d+)?/i) || stream.match(/^\.\d+/)) return 'number';
+    const w = stream.match(/^[A-Za-z_][A-Za-z_0-9]*/);
+    if (w) {
+      const word = w[0].toLowerCase();
+      if (first && stream.peek() === ':') { stream.next(); return 'labelName'; }
+      if (first && word === 'rem') { stream.skipToEnd(); return 'comment'; }
+      if (KEYWORDS.has(word)) return 'keyword';
+      if (/^r[A-Z]/.test(w[0])) return 'function(variableName)';
+      return 'variableName';
+    }
+    stream.next();
+    return /[-+*\/=<>&|^%]/.test(stream.current()) ? 'operator' : null;
+  },
+  languageData: {commentTokens: {line: '//'}},
+});
+
+// The line of the last runtime error.
+const setErrorLine = StateEffect.define();
+const errorLineMark = Decoration.line({class: 'rb-errline'});
+const errorLine = StateField.define({
+  create: () => Decoration.none,
+  update(deco, tr) {
+    deco = deco.map(tr.changes);
+    for (const e of tr.effects) {
+      if (!e.is(setErrorLine)) continue;
+      const line = e.value;
+      deco = line > 0 && line <= tr.state.doc.lines
+        ? Decoration.set([errorLineMark.range(tr.state.doc.line(line).from)]) : Decoration.none;
+    }
+    if (tr.docChanged) deco = Decoration.none;
+    return deco;
+  },
+  provide: (f) => EditorView.decorations.from(f),
+});
+
+window.RbEditor = {
+  create(parent, {doc, onChange, onRun}) {
+    const view = new EditorView({
+      parent,
+      state: EditorState.create({
+        doc,
+        extensions: [
+          lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), highlightActiveLine(),
+          bracketMatching(), robotBasic, syntaxHighlighting(defaultHighlightStyle), lintGutter(), errorLine,
+          keymap.of([{key: 'Mod-Enter', run: () => { onRun(); return true; }}, indentWithTab,
+                     ...defaultKeymap, ...historyKeymap]),
+          EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),
+        ],
+      }),
+    });
+    const pos = (line, col) => {
+      const l = view.state.doc.line(Math.min(Math.max(1, line), view.state.doc.lines));
+      return Math.min(l.to, l.from + Math.max(0, (col || 1) - 1));
+    };
+    return {
+      view,
+      get value() { return view.state.doc.toString(); },
+      set value(text) { view.dispatch({changes: {from: 0, to: view.state.doc.length, insert: text}}); },
+      setDiagnostics(list) {
+        const diags = list.filter((d) => d.line > 0 && d.severity !== 'note').map((d) => {
+          const from = pos(d.line, d.col);
+          let to = d.endLine ? pos(d.endLine, d.endCol) + 1 : from + 1;
+          to = Math.min(Math.max(to, from), view.state.doc.length);
+          return {from, to, severity: d.severity, message: d.message + (d.code ? ` [${d.code}]` : '')};
+        });
+        view.dispatch(setDiagnostics(view.state, diags));
+      },
+      setErrorLine(line) { view.dispatch({effects: setErrorLine.of(line || 0)}); },
+      goToLine(line) {
+        const l = view.state.doc.line(Math.min(Math.max(1, line), view.state.doc.lines));
+        view.dispatch({selection: {anchor: l.from, head: l.to}, scrollIntoView: true});
+        view.focus();
+      },
+      focus() { view.focus(); },
+    };
+  },
+};

@@ -1,0 +1,187 @@
+// The functions web/rb.js calls: check a program (the diagnostics `rb check` gives) and run
+// one (as `rb run` does, or live on the page). Results are JSON text the caller frees.
+
+#include <emscripten.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "base/diagnostic.h"
+#include "input/input_script.h"
+#include "lang/checker.h"
+#include "lang/compiler.h"
+#include "lang/loader.h"
+#include "machine/builtins.h"
+#include "machine/interpreter.h"
+#include "machine/machine.h"
+#include "web_host.h"
+
+namespace rb::web {
+namespace {
+
+/// A program on the page is one file: an #include finds nothing.
+class NoFiles : public SourceReader {
+ public:
+  std::optional<std::string> find(const std::string&) override { return std::nullopt; }
+  std::optional<std::string> read(const std::string&) override { return std::nullopt; }
+};
+
+const char* kProgramName = "program.bas";
+
+void jsonString(std::string& out, std::string_view s) {
+  out += '"';
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (c < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  out += '"';
+}
+
+void jsonDiagnostic(std::string& out, const SourceSet& sources, const Diagnostic& d) {
+  out += "{\"severity\":";
+  jsonString(out, d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "note");
+  out += ",\"line\":" + std::to_string(d.loc.line) + ",\"col\":" + std::to_string(d.loc.col);
+  if (d.end.valid()) out += ",\"endLine\":" + std::to_string(d.end.line) + ",\"endCol\":" + std::to_string(d.end.col);
+  out += ",\"message\":";
+  jsonString(out, d.message);
+  out += ",\"code\":";
+  jsonString(out, d.code);
+  out += ",\"text\":";
+  jsonString(out, formatDiagnostic(sources, d, DiagnosticStyle{}));
+  out += '}';
+}
+
+char* give(const std::string& s) {
+  char* p = static_cast<char*>(std::malloc(s.size() + 1));
+  std::memcpy(p, s.data(), s.size() + 1);
+  return p;
+}
+
+struct Loaded {
+  DiagnosticList diags;
+  std::unique_ptr<LoadedProgram> program;
+  std::unique_ptr<Program> compiled;
+};
+
+/// Loads and compiles as rb does (with rb check's warnings when `lint`).
+std::unique_ptr<Loaded> load(const char* source, bool lint, bool keepCode) {
+  auto out = std::make_unique<Loaded>();
+  NoFiles reader;
+  out->program = loadProgram(kProgramName, source, reader, standardBuiltins(), LoadOptions{}, out->diags);
+  CompileOptions compile;
+  compile.keepCode = keepCode;
+  if (lint) {
+    Linter linter(*out->program);
+    compile.onStatement = [&linter](const ast::Stmt& s, size_t i) { linter.statement(s, i); };
+    out->compiled = compileProgram(*out->program, compile, out->diags);
+    linter.finish(out->diags);
+  } else {
+    out->compiled = compileProgram(*out->program, compile, out->diags);
+  }
+  out->diags.sort();
+  return out;
+}
+
+std::string diagnosticsJson(const Loaded& l) {
+  std::string out = "[";
+  bool first = true;
+  for (const Diagnostic& d : l.diags.all()) {
+    if (!first) out += ',';
+    first = false;
+    jsonDiagnostic(out, l.program->sources, d);
+  }
+  return out + "]";
+}
+
+
+}  // namespace
+}  // namespace rb::web
+
+using namespace rb;
+using namespace rb::web;
+
+extern "C" {
+
+/// The diagnostics `rb check` gives for the program, as a JSON array.
+EMSCRIPTEN_KEEPALIVE char* rb_check(const char* source) {
+  auto l = load(source, true, false);
+  return give(diagnosticsJson(*l));
+}
+
+/// Runs a program to its end. `stdinLines`: the lines `input` reads, each ended by "\n";
+/// `keys`: a --keys text ("" none); limits as rb run's options (0: none). Returns JSON:
+/// {status, diagnostics (load), error (runtime), steps}.
+EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, const char* keys,
+                                  double seed, double maxSteps, double timeoutSeconds,
+                                  double maxMemoryMiB, int live) {
+  auto l = load(source, false, true);
+  std::string out = "{\"diagnostics\":" + diagnosticsJson(*l);
+  if (!l->compiled) return give(out + ",\"status\":\"rejected\"}");
+
+  std::vector<std::string> lines;
+  for (const char* p = stdinLines; *p;) {
+    const char* e = std::strchr(p, '\n');
+    if (!e) e = p + std::strlen(p);
+    lines.emplace_back(p, e);
+    p = *e ? e + 1 : e;
+  }
+  InputScript script;
+  if (*keys) {
+    try {
+      script.steps = parseKeyText(keys);
+      script.given = true;
+      script.origin = "the --keys text";
+    } catch (const ScriptError& e) {
+      out += ",\"status\":\"usage\",\"error\":{\"message\":";
+      jsonString(out, std::string("--keys: ") + e.what());
+      return give(out + "}}");
+    }
+  }
+  WebHost host(live != 0, std::move(lines), std::move(script));
+  Machine machine(host, static_cast<uint64_t>(seed));
+  host.attachMachine(machine);
+  Interpreter interpreter(*l->compiled, machine);
+  RunLimits limits;
+  limits.maxSteps = static_cast<uint64_t>(maxSteps);
+  limits.timeoutSeconds = timeoutSeconds;
+  limits.maxMemoryBytes = static_cast<uint64_t>(maxMemoryMiB) * (uint64_t{1} << 20);
+  RunResult result = interpreter.run(limits);
+  host.flushOutput();
+  host.present();
+  const char* status = "finished";
+  switch (result.status) {
+    case RunStatus::Finished: status = "finished"; break;
+    case RunStatus::RuntimeError: status = "error"; break;
+    case RunStatus::StepLimit: status = "step-limit"; break;
+    case RunStatus::Timeout: status = "timeout"; break;
+    case RunStatus::Stopped: status = "stopped"; break;
+  }
+  out += ",\"status\":";
+  jsonString(out, status);
+  out += ",\"steps\":" + std::to_string(result.steps);
+  out += ",\"rngUsed\":" + std::string(machine.rngUsed() ? "true" : "false");
+  if (result.error && result.status != RunStatus::Stopped) {
+    out += ",\"error\":";
+    jsonDiagnostic(out, l->program->sources, *result.error);
+  }
+  return give(out + "}");
+}
+
+}  // extern "C"

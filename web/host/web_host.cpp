@@ -1,0 +1,273 @@
+#include "web_host.h"
+
+#include <emscripten.h>
+#include <malloc.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "robot_image.h"
+#include "robot_view.h"
+
+// The page's side of each call: Module.rbHooks, set by web/rb.js for each run. The async ones
+// suspend the run (Asyncify) until the page answers; the page answers at once after a Stop.
+// clang-format off
+EM_JS(void, rb_js_output, (const char* text, int size), { Module.rbHooks.output(UTF8ToString(text, size)); });
+EM_JS(int, rb_js_stopped, (), { return Module.rbHooks.stopped() ? 1 : 0; });
+EM_JS(double, rb_js_step_ms, (), { return Module.rbHooks.stepMs(); });
+EM_JS(void, rb_js_frame, (const uint8_t* rgba, int width, int height), { Module.rbHooks.frame(rgba, width, height); });
+EM_ASYNC_JS(void, rb_js_yield, (double ms), { await Module.rbHooks.yield(ms); });
+EM_ASYNC_JS(char*, rb_js_input_line, (const char* prompt), {
+  const line = await Module.rbHooks.inputLine(UTF8ToString(prompt));
+  if (line === null || line === undefined) return 0;
+  const size = lengthBytesUTF8(line) + 1;
+  const p = _malloc(size);
+  stringToUTF8(line, p, size);
+  return p;
+});
+EM_JS(int, rb_js_held_key, (), { return Module.rbHooks.heldKey(); });
+EM_ASYNC_JS(int, rb_js_wait_key, (), { return await Module.rbHooks.waitKey(); });
+EM_JS(void, rb_js_mouse, (int* out), {
+  const m = Module.rbHooks.mouse();
+  HEAP32[out >> 2] = m[0]; HEAP32[(out >> 2) + 1] = m[1]; HEAP32[(out >> 2) + 2] = m[2];
+});
+EM_JS(int, rb_js_take_click, (int* out), {
+  const c = Module.rbHooks.takeClick();
+  if (!c) return 0;
+  HEAP32[out >> 2] = c[0]; HEAP32[(out >> 2) + 1] = c[1]; HEAP32[(out >> 2) + 2] = c[2];
+  return 1;
+});
+EM_ASYNC_JS(void, rb_js_wait_click, (int* out), {
+  const c = await Module.rbHooks.waitClick();
+  HEAP32[out >> 2] = c[0]; HEAP32[(out >> 2) + 1] = c[1]; HEAP32[(out >> 2) + 2] = c[2];
+});
+EM_ASYNC_JS(void, rb_js_message_box, (const char* text, const char* title), {
+  await Module.rbHooks.messageBox(UTF8ToString(text), UTF8ToString(title));
+});
+// clang-format on
+
+namespace rb::web {
+
+namespace {
+/// Computing time between two yields to the page: short enough for smooth frames and a Stop
+/// within a frame, long enough that yielding costs little.
+constexpr double kLiveSliceMs = 12;
+constexpr double kHeadlessSliceMs = 40;
+/// Frames at most this often.
+constexpr double kFrameMs = 16;
+/// Waits shorter than this add up before the run sleeps (a timer's resolution).
+constexpr double kShortestSleepMs = 10;
+/// How far the virtual clock moves each time the program reads it (as HeadlessHost).
+constexpr double kClockReadMs = 1.0;
+}  // namespace
+
+WebHost::WebHost(bool live, std::vector<std::string> stdinLines, InputScript script)
+    : live_(live),
+      stdin_(std::move(stdinLines)),
+      script_(std::move(script), virtualMs_),
+      start_(std::chrono::steady_clock::now()) {}
+
+void WebHost::attachMachine(Machine& machine) {
+  machine_ = &machine;
+  if (live_) stepMs_ = rb_js_step_ms();
+  script_.useControls(&machine.controls);
+}
+
+void WebHost::output(std::string_view text) {
+  out_ += text;
+  if (out_.size() >= (1u << 16)) flushOutput();
+}
+
+void WebHost::flushOutput() {
+  if (out_.empty()) return;
+  rb_js_output(out_.data(), static_cast<int>(out_.size()));
+  out_.clear();
+}
+
+void WebHost::armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) {
+  limits_ = limits;
+  alarms_ = &alarms;
+}
+
+void WebHost::disarmWatchdog() { alarms_ = nullptr; }
+
+void WebHost::checkLimits() {
+  if (!alarms_) return;
+  if (limits_.seconds > 0 && wallSeconds() >= limits_.seconds) alarms_->raise(RunAlarms::kDeadline);
+  if (limits_.memoryBytes > 0 && memoryInUse() > limits_.memoryBytes) alarms_->raise(RunAlarms::kMemory);
+}
+
+double WebHost::wallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+double WebHost::clockMs() {
+  if (live_) return wallSeconds() * 1000 + sleepDebtMs_;
+  virtualMs_ += kClockReadMs;
+  return virtualMs_;
+}
+
+void WebHost::yieldToPage(bool force) {
+  double now = wallSeconds() * 1000;
+  if (!force && now - lastYieldMs_ < (live_ ? kLiveSliceMs : kHeadlessSliceMs)) return;
+  checkLimits();
+  flushOutput();
+  if (live_ && now - lastFrameMs_ >= kFrameMs) {
+    present();
+    lastFrameMs_ = now;
+  }
+  rb_js_yield(0);
+  lastYieldMs_ = wallSeconds() * 1000;
+  if (rb_js_stopped()) requestStop();
+  if (live_) stepMs_ = rb_js_step_ms();  // the page's speed may have changed
+}
+
+void WebHost::wait(double ms) {
+  if (!(ms > 0)) return;
+  if (!live_) {
+    virtualMs_ += ms;
+    yieldToPage(false);
+    return;
+  }
+  sleepDebtMs_ += ms;
+  if (sleepDebtMs_ < kShortestSleepMs) {
+    yieldToPage(false);
+    return;
+  }
+  flushOutput();
+  present();
+  // In pieces, so that a Stop during a long delay ends it within one piece.
+  while (sleepDebtMs_ > 0 && !stopRequested()) {
+    double piece = std::min(sleepDebtMs_, 50.0);
+    double before = wallSeconds() * 1000;
+    rb_js_yield(piece);
+    sleepDebtMs_ -= wallSeconds() * 1000 - before;
+    if (rb_js_stopped()) requestStop();
+  }
+  sleepDebtMs_ = 0;
+  lastYieldMs_ = lastFrameMs_ = wallSeconds() * 1000;
+}
+
+bool WebHost::poll() {
+  yieldToPage(false);
+  return !stopRequested();
+}
+
+void WebHost::animate() { yieldToPage(false); }
+
+// What malloc has handed out now: the wasm heap itself only grows, so its size would count a
+// past run's memory against the next one.
+uint64_t WebHost::memoryInUse() {
+  struct mallinfo info = mallinfo();
+  return static_cast<uint64_t>(static_cast<unsigned>(info.uordblks)) + static_cast<unsigned>(info.hblkhd);
+}
+
+std::optional<std::string> WebHost::inputLine(std::string_view prompt) {
+  output(prompt);
+  std::optional<std::string> line;
+  if (!live_) {
+    if (script_.given()) {
+      line = script_.inputLine("input");
+    } else if (nextLine_ < stdin_.size()) {
+      line = stdin_[nextLine_++];
+    }
+    if (line) {
+      output(*line);  // as from a pipe: the line read is written after the prompt
+      output("\n");
+    }
+    return line;
+  }
+  flushOutput();
+  present();
+  std::string promptText(prompt);
+  char* p = rb_js_input_line(promptText.c_str());
+  if (rb_js_stopped()) requestStop();
+  if (!p) return std::nullopt;
+  line = std::string(p);
+  std::free(p);
+  output(*line);
+  output("\n");
+  return line;
+}
+
+int64_t WebHost::heldKey(std::string_view who) {
+  if (!live_) return script_.heldKey(who);
+  yieldToPage(false);
+  return rb_js_held_key();
+}
+
+int64_t WebHost::waitKey(std::string_view who) {
+  if (!live_) return script_.waitKey(who);
+  flushOutput();
+  present();
+  int64_t key = rb_js_wait_key();
+  if (rb_js_stopped()) requestStop();
+  return key;
+}
+
+MouseState WebHost::mouse(std::string_view who) {
+  if (!live_) return script_.mouse(who);
+  yieldToPage(false);
+  int m[3] = {0, 0, 0};
+  rb_js_mouse(m);
+  return {m[0], m[1], m[2]};
+}
+
+MouseState WebHost::waitClick(std::string_view who) {
+  if (!live_) return script_.waitClick(who);
+  flushOutput();
+  present();
+  int m[3] = {0, 0, 0};
+  rb_js_wait_click(m);
+  if (rb_js_stopped()) requestStop();
+  return {m[0], m[1], m[2]};
+}
+
+void WebHost::updateControls(Controls& controls, std::string_view who) {
+  if (!live_) {
+    script_.updateControls(controls, who);
+    return;
+  }
+  yieldToPage(false);
+  int c[3];
+  while (rb_js_take_click(c)) rules_.press(controls, c[0], c[1]);
+}
+
+void WebHost::messageBox(std::string_view text, std::string_view title) {
+  if (!live_) {
+    script_.messageBox("MsgBox");
+    return;
+  }
+  flushOutput();
+  present();
+  std::string t(text), h(title);
+  rb_js_message_box(t.c_str(), h.c_str());
+  if (rb_js_stopped()) requestStop();
+}
+
+void WebHost::present() {
+  if (!machine_) return;
+  const Pixels& pixels = machine_->shownScreen();
+  constexpr int w = Canvas::kWidth, h = Canvas::kHeight;
+  if (pixels.size() < static_cast<size_t>(w) * h) return;
+  rgba_.resize(static_cast<size_t>(w) * h * 4);
+  uint8_t* o = rgba_.data();
+  for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i, o += 4) {
+    uint32_t rgb = colourToRgb(pixels[i]);
+    o[0] = static_cast<uint8_t>(rgb >> 16), o[1] = static_cast<uint8_t>(rgb >> 8),
+    o[2] = static_cast<uint8_t>(rgb), o[3] = 255;
+  }
+  // The robot on top, as rb render's picture and the live terminal view draw it.
+  const render::RobotView view = render::robotView(*machine_);
+  const render::RobotImage shape(view);
+  const uint32_t robotRgb = colourToRgb(view.colour);
+  if (!shape.empty())
+    shape.rasterize(1, w, h, [&](int x, int y) {
+      uint8_t* p = rgba_.data() + (static_cast<size_t>(y) * w + static_cast<size_t>(x)) * 4;
+      p[0] = static_cast<uint8_t>(robotRgb >> 16), p[1] = static_cast<uint8_t>(robotRgb >> 8),
+      p[2] = static_cast<uint8_t>(robotRgb);
+    });
+  rb_js_frame(rgba_.data(), w, h);
+}
+
+}  // namespace rb::web

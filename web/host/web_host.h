@@ -1,0 +1,87 @@
+#pragma once
+// The Host of a run in a browser (or in node): rb's core compiled to WebAssembly with
+// emscripten, the page's JavaScript (web/rb.js) on the other side. The run never blocks the
+// page: the host yields to the browser's event loop (emscripten's Asyncify) every few
+// milliseconds of computing, while the program waits (delay, robot motion) and while it waits
+// for input, so the page draws frames, takes keys and clicks and can stop the run at once.
+//
+// Two ways of running, chosen per run:
+//   headless  what `rb run` does: a virtual clock that moves only when the program waits or
+//             reads the clock, `input` lines from a given list (echoed, as from a pipe), keys,
+//             clicks and message-box answers from scripted input (core/input/input_script.h).
+//   live      the page's run: the real clock, `delay` waits, `input` is typed on the page, keys
+//             and clicks come from the page, MsgBox is a page dialog; frames are shown as the
+//             program draws.
+
+#include <chrono>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "input/input_rules.h"
+#include "input/input_script.h"
+#include "machine/host.h"
+#include "machine/machine.h"
+
+namespace rb::web {
+
+class WebHost : public Host {
+ public:
+  WebHost(bool live, std::vector<std::string> stdinLines, InputScript script);
+
+  void attachMachine(Machine& machine) override;
+  void output(std::string_view text) override;
+  std::optional<std::string> inputLine(std::string_view prompt) override;
+  double clockMs() override;
+  void wait(double ms) override;
+  double wallSeconds() override;
+  bool poll() override;
+  void animate() override;
+  double robotStepMs() const override { return live_ ? stepMs_ : 0; }
+  uint64_t memoryInUse() override;
+  /// No thread: the limits are checked each time the run yields to the page (a slice).
+  void armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) override;
+  void disarmWatchdog() override;
+
+  int64_t heldKey(std::string_view who) override;
+  int64_t waitKey(std::string_view who) override;
+  MouseState mouse(std::string_view who) override;
+  MouseState waitClick(std::string_view who) override;
+  void updateControls(Controls& controls, std::string_view who) override;
+  void messageBox(std::string_view text, std::string_view title) override;
+
+  /// The page's Stop: blocking calls return at once and the run ends at its next check.
+  void stop() { requestStop(); }
+  /// Gives the output gathered so far to the page.
+  void flushOutput();
+  /// Converts the screen, with the robot drawn on top as rb render draws it, to RGBA for the
+  /// page's canvas and hands it over.
+  void present();
+  /// Milliseconds each pixel or degree of robot motion takes (the page's speed).
+  double stepMs_ = 0;
+
+ private:
+  /// Lets the browser run (draw, take events) when enough time has passed since it last did;
+  /// `force`: now.
+  void yieldToPage(bool force);
+  void checkLimits();
+
+  bool live_;
+  std::vector<std::string> stdin_;
+  size_t nextLine_ = 0;
+  double virtualMs_ = 0;
+  ScriptedInput script_;
+  InputRules rules_;
+  Machine* machine_ = nullptr;
+  std::string out_;
+  std::vector<uint8_t> rgba_;
+  std::chrono::steady_clock::time_point start_;
+  double lastYieldMs_ = 0;
+  double lastFrameMs_ = -1000;
+  double sleepDebtMs_ = 0;  ///< live: waiting the run owes, slept once it is worth a timer
+  WatchdogLimits limits_;
+  RunAlarms* alarms_ = nullptr;
+};
+
+}  // namespace rb::web

@@ -1,0 +1,201 @@
+// rb's JavaScript API: the core (rbcore.js + rbcore.wasm, built by scripts/web.sh) behind two
+// promises, on the page's window.rb and as a node module (require('./rb.js')). docs/web.md.
+//
+//   await rb.check(source)             -> [{severity, line, col, message, code, text}, ...]
+//   await rb.run(source, {stdin, seed, maxSteps, timeout, maxMemory, keys})
+//                                      -> {output, error, png, status, steps, diagnostics}
+//   rb.start(source, options)          a live run for the page (web/app.js): {done, stop()}
+//   rb.stop()                          stops the run in progress (within one slice)
+(function (global) {
+  'use strict';
+  const isNode = typeof window === 'undefined';
+  let corePromise = null;
+
+  function core() {
+    if (!corePromise) {
+      if (isNode) {
+        const fs = require('fs'), path = require('path');
+        const create = require(path.join(__dirname, 'rbcore.js'));
+        corePromise = create({wasmBinary: fs.readFileSync(path.join(__dirname, 'rbcore.wasm'))});
+      } else {
+        corePromise = global.createRbCore({});
+      }
+    }
+    return corePromise;
+  }
+
+  // A turn of the event loop without a timer's clamp.
+  const fastYield = isNode
+    ? () => new Promise((r) => setImmediate(r))
+    : (() => {
+        const channel = new MessageChannel();
+        const waiting = [];
+        channel.port1.onmessage = () => { const r = waiting.shift(); if (r) r(); };
+        return () => new Promise((r) => { waiting.push(r); channel.port2.postMessage(0); });
+      })();
+
+  function cString(M, s) {
+    const size = M.lengthBytesUTF8(s) + 1;
+    const p = M._malloc(size);
+    M.stringToUTF8(s, p, size);
+    return p;
+  }
+  function takeString(M, p) {
+    const s = M.UTF8ToString(p);
+    M._free(p);
+    return s;
+  }
+
+  // ---- PNG: the frame's RGBA pixels, written with the platform's deflate (CompressionStream).
+  const crcTable = (() => {
+    const t = new Uint32Array(256);
+    for (let n = 0; n < 256; n++) {
+      let c = n;
+      for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+      t[n] = c >>> 0;
+    }
+    return t;
+  })();
+  function crc32(bytes) {
+    let c = 0xffffffff;
+    for (let i = 0; i < bytes.length; i++) c = crcTable[(c ^ bytes[i]) & 0xff] ^ (c >>> 8);
+    return (c ^ 0xffffffff) >>> 0;
+  }
+  async function deflate(bytes) {
+    const stream = new Blob([bytes]).stream().pipeThrough(new CompressionStream('deflate'));
+    return new Uint8Array(await new Response(stream).arrayBuffer());
+  }
+  async function pngDataUrl(rgba, width, height) {
+    const raw = new Uint8Array((width * 3 + 1) * height);
+    for (let y = 0, o = 0; y < height; y++) {
+      raw[o++] = 0;  // no filter
+      for (let x = 0; x < width; x++) {
+        const i = (y * width + x) * 4;
+        raw[o++] = rgba[i]; raw[o++] = rgba[i + 1]; raw[o++] = rgba[i + 2];
+      }
+    }
+    const chunks = [];
+    const chunk = (type, body) => {
+      const b = new Uint8Array(12 + body.length);
+      const v = new DataView(b.buffer);
+      v.setUint32(0, body.length);
+      for (let i = 0; i < 4; i++) b[4 + i] = type.charCodeAt(i);
+      b.set(body, 8);
+      v.setUint32(8 + body.length, crc32(b.subarray(4, 8 + body.length)));
+      chunks.push(b);
+    };
+    const ihdr = new Uint8Array(13);
+    const hv = new DataView(ihdr.buffer);
+    hv.setUint32(0, width); hv.setUint32(4, height);
+    ihdr[8] = 8; ihdr[9] = 2;  // 8 bits, RGB
+    chunk('IHDR', ihdr);
+    chunk('IDAT', await deflate(raw));
+    chunk('IEND', new Uint8Array(0));
+    const all = new Uint8Array(8 + chunks.reduce((n, c) => n + c.length, 0));
+    all.set([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+    for (let i = 0, o = 8; i < chunks.length; o += chunks[i].length, i++) all.set(chunks[i], o);
+    let bin = '';
+    for (let i = 0; i < all.length; i += 0x8000) bin += String.fromCharCode.apply(null, all.subarray(i, i + 0x8000));
+    return 'data:image/png;base64,' + (isNode ? Buffer.from(all).toString('base64') : btoa(bin));
+  }
+
+  // ---- runs: one at a time (the core has one suspended run at most); later ones queue.
+  let queue = Promise.resolve();
+  let current = null;  // {stopped}
+
+  const noInput = {
+    inputLine: async () => null,
+    heldKey: () => 0,
+    waitKey: async () => 0,
+    mouse: () => [0, 0, 0],
+    takeClick: () => null,
+    waitClick: async () => [0, 0, 0],
+    messageBox: async () => {},
+  };
+
+  // Runs `source`; `live`: the page's live run with its hooks (see web/app.js).
+  function runWith(source, options, live) {
+    const state = {stopped: false, wake: new Set()};
+    const job = queue.then(async () => {
+      const M = await core();
+      current = {stop: () => { state.stopped = true; [...state.wake].forEach((w) => w()); }};
+      let output = '';
+      let frame = null;
+      const io = Object.assign({}, noInput, options.io || {});
+      M.rbHooks = Object.assign({}, io, {
+        output: (text) => { output += text; if (options.onOutput) options.onOutput(text); },
+        stopped: () => state.stopped,
+        stepMs: () => (options.stepMs ? options.stepMs() : 0),
+        frame: (p, w, h) => {
+          frame = {rgba: new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4)), width: w, height: h};
+          if (options.onFrame) options.onFrame(frame);
+        },
+        // A sleep ends early when the run is stopped.
+        yield: (options.wrapYield || ((f) => f))((ms) => (ms > 0 ? new Promise((r) => {
+          const done = () => { clearTimeout(timer); state.wake.delete(done); r(); };
+          const timer = setTimeout(done, ms);
+          state.wake.add(done);
+        }) : fastYield())),
+      });
+      const stdin = (options.stdin || []).map((l) => String(l) + '\n').join('');
+      const seed = options.seed !== undefined ? Number(options.seed) : Math.floor(Math.random() * 2 ** 32);
+      const args = [cString(M, source), cString(M, stdin), cString(M, options.keys || '')];
+      let result;
+      try {
+        const p = await M.ccall('rb_run', 'number',
+          ['number', 'number', 'number', 'number', 'number', 'number', 'number', 'number'],
+          [...args, seed, options.maxSteps || 0, options.timeout || 0,
+           options.maxMemory !== undefined ? options.maxMemory : 1024, live ? 1 : 0], {async: true});
+        result = JSON.parse(takeString(M, p));
+      } finally {
+        args.forEach((a) => M._free(a));
+        current = null;
+      }
+      const errors = (result.diagnostics || []).filter((d) => d.severity === 'error');
+      let error = null;
+      if (result.error) error = result.error.text || result.error.message;
+      else if (result.status === 'rejected') error = errors.map((d) => d.text).join('');
+      return Object.assign(result, {
+        output,
+        error,
+        errorLine: result.error ? result.error.line : errors.length ? errors[0].line : null,
+        frame,
+        png: frame && options.png !== false ? await pngDataUrl(frame.rgba, frame.width, frame.height) : null,
+      });
+    });
+    queue = job.catch(() => {});
+    const stop = () => { state.stopped = true; [...state.wake].forEach((w) => w()); };
+    return {done: job, stop, state};
+  }
+
+  const rb = {
+    // The core takes no call while a run is suspended in it: a check waits for the runs
+    // before it.
+    async check(source) {
+      await queue;
+      const M = await core();
+      const p = cString(M, source);
+      try {
+        return JSON.parse(takeString(M, M.ccall('rb_check', 'number', ['number'], [p])));
+      } finally {
+        M._free(p);
+      }
+    },
+    run(source, options = {}) {
+      return runWith(source, options, false).done;
+    },
+    start(source, options = {}) {
+      return runWith(source, options, true);
+    },
+    stop() {
+      if (current) current.stop();
+    },
+    ready() {
+      return core().then(() => true);
+    },
+    pngDataUrl,
+  };
+
+  if (isNode) module.exports = rb;
+  else global.rb = rb;
+})(typeof window !== 'undefined' ? window : globalThis);
