@@ -95,9 +95,7 @@ std::unique_ptr<Analysis> analyze(const std::string& name, const std::string& te
                                   const LoadOptions& options) {
   auto a = std::make_unique<Analysis>();
   a->program = loadProgram(name, text, reader, builtins, options, a->diags);
-  compileProgram(*a->program, CompileOptions{}, a->diags);
-  lintProgram(*a->program, a->diags);
-  a->diags.sort();
+  compileChecked(*a->program, CompileOptions{}, true, a->diags);  // as rb check does
 
   const LoadedProgram& p = *a->program;
   for (size_t k = 1; k < p.sources.size(); ++k) {

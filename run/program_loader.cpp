@@ -26,17 +26,7 @@ LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool
   loadOptions.libraryDirs = libraryDirs();
   loadOptions.compact = compact;
   out.program = loadProgram(name, std::move(text), reader, standardBuiltins(), loadOptions, out.diags);
-  if (lint) {
-    // One walk over the program for both.
-    Linter linter(*out.program, lintOptions);
-    CompileOptions withLint = options;
-    withLint.onStatement = [&linter](const ast::Stmt& s, size_t i) { linter.statement(s, i); };
-    out.compiled = compileProgram(*out.program, withLint, out.diags);
-    linter.finish(out.diags);
-  } else {
-    out.compiled = compileProgram(*out.program, options, out.diags);
-  }
-  out.diags.sort();
+  out.compiled = compileChecked(*out.program, options, lint, out.diags, lintOptions);
   return out;
 }
 

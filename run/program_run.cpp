@@ -33,11 +33,7 @@ int loadForRun(const char* command, const RunOptions& opts, const CompileOptions
 uint64_t runSeed(const RunOptions& opts) { return opts.seed ? *opts.seed : std::random_device{}(); }
 
 RunLimits runLimits(const RunOptions& opts) {
-  RunLimits limits;
-  limits.maxSteps = opts.maxSteps;
-  limits.timeoutSeconds = opts.timeoutSeconds;
-  limits.maxMemoryBytes = static_cast<uint64_t>(opts.maxMemoryMiB) << 20;
-  return limits;
+  return RunLimits::of(opts.maxSteps, opts.timeoutSeconds, opts.maxMemoryMiB);
 }
 
 std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts) {

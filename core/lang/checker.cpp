@@ -310,4 +310,21 @@ void checkRb9Target(const LoadedProgram& program, DiagnosticList& diags) {
   }
 }
 
+std::unique_ptr<Program> compileChecked(const LoadedProgram& program, const CompileOptions& options, bool lint,
+                                        DiagnosticList& diags, const LintOptions& lintOptions) {
+  std::unique_ptr<Program> compiled;
+  if (lint) {
+    // One walk over the program for both.
+    Linter linter(program, lintOptions);
+    CompileOptions withLint = options;
+    withLint.onStatement = [&linter](const ast::Stmt& s, size_t i) { linter.statement(s, i); };
+    compiled = compileProgram(program, withLint, diags);
+    linter.finish(diags);
+  } else {
+    compiled = compileProgram(program, options, diags);
+  }
+  diags.sort();
+  return compiled;
+}
+
 }  // namespace rb

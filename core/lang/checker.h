@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "base/diagnostic.h"
+#include "lang/compiler.h"
 #include "lang/loader.h"
 
 namespace rb {
@@ -37,6 +38,12 @@ class Linter {
   struct State;
   std::unique_ptr<State> st_;
 };
+
+/// The compile step every front end shares after loading (the command line's runs and checks,
+/// the language server, the browser): the compiler, and with `lint` rb check's warnings from
+/// the same walk over the statements; the diagnostics sorted by place.
+std::unique_ptr<Program> compileChecked(const LoadedProgram& program, const CompileOptions& options, bool lint,
+                                        DiagnosticList& diags, const LintOptions& lintOptions = {});
 
 /// `rb check --target rb9`: warns where a program asks the RB-9 robot for what it cannot do:
 /// a single rForward with a constant distance above 250 (the seed document's limit), and the

@@ -18,6 +18,16 @@ struct RunLimits {
   double timeoutSeconds = 0;    ///< real seconds at most (0: no limit)
   uint64_t maxMemoryBytes = 0;  ///< memory rb may use at most, watched by the host (0: no limit)
   uint32_t maxCallDepth = 100000;  ///< nested gosub/call frames at most
+
+  /// The limits as every host's options give them (rb run's --max-steps, --timeout and
+  /// --max-memory in MiB, the page's fields); 0 is no limit.
+  static RunLimits of(uint64_t maxSteps, double timeoutSeconds, uint64_t maxMemoryMiB) {
+    RunLimits l;
+    l.maxSteps = maxSteps;
+    l.timeoutSeconds = timeoutSeconds;
+    l.maxMemoryBytes = maxMemoryMiB << 20;
+    return l;
+  }
 };
 
 enum class RunStatus {

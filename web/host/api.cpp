@@ -87,15 +87,7 @@ std::unique_ptr<Loaded> load(const char* source, bool lint, bool keepCode) {
   out->program = loadProgram(kProgramName, source, reader, standardBuiltins(), LoadOptions{}, out->diags);
   CompileOptions compile;
   compile.keepCode = keepCode;
-  if (lint) {
-    Linter linter(*out->program);
-    compile.onStatement = [&linter](const ast::Stmt& s, size_t i) { linter.statement(s, i); };
-    out->compiled = compileProgram(*out->program, compile, out->diags);
-    linter.finish(out->diags);
-  } else {
-    out->compiled = compileProgram(*out->program, compile, out->diags);
-  }
-  out->diags.sort();
+  out->compiled = compileChecked(*out->program, compile, lint, out->diags);
   return out;
 }
 
@@ -158,11 +150,8 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
   Machine machine(host, static_cast<uint64_t>(seed));
   host.attachMachine(machine);
   Interpreter interpreter(*l->compiled, machine);
-  RunLimits limits;
-  limits.maxSteps = static_cast<uint64_t>(maxSteps);
-  limits.timeoutSeconds = timeoutSeconds;
-  limits.maxMemoryBytes = static_cast<uint64_t>(maxMemoryMiB) * (uint64_t{1} << 20);
-  RunResult result = interpreter.run(limits);
+  RunResult result = interpreter.run(RunLimits::of(static_cast<uint64_t>(maxSteps), timeoutSeconds,
+                                                   static_cast<uint64_t>(maxMemoryMiB)));
   host.flushOutput();
   host.present();
   const char* status = "finished";
