@@ -86,6 +86,7 @@
     set value(text) { source.value = text; renderEditor(); },
     setDiagnostics() { renderEditor(); },
     setErrorLine(line) { errorLine = line || 0; renderEditor(); },
+    setStepLine(line) { errorLine = line || 0; renderEditor(); },
     goToLine,
     focus() { source.focus(); },
   };
@@ -226,7 +227,9 @@
   // ---------------------------------------------------------------- the run
   let run = null;          // {stop, done}
   let paused = false, resumeWaiters = [];
-  let stepping = false;
+  // Step: the run stops before each statement (the host asks stepping() at each yield and
+  // after each stop, and waits in atLine() until Step, Resume or Stop).
+  let stepMode = false;
   let cancelInput = null, cancelDialog = null;
   let outputText = '';
 
@@ -292,11 +295,19 @@
   function pauseGate(inner) {
     return async (ms) => {
       await inner(ms);
-      if (stepping) { stepping = false; paused = true; setRunning(true); }
       while (paused && run) await new Promise((r) => resumeWaiters.push(r));
     };
   }
 
+  // A stepped run stops here before the statement on `line`.
+  function stepAt(line) {
+    if (!run) return Promise.resolve();
+    paused = true;
+    setRunning(true);
+    editor.setStepLine(line);
+    status.textContent = `paused before line ${line}`;
+    return new Promise((r) => resumeWaiters.push(r));
+  }
   function limits() {
     return {
       maxSteps: Number($('maxSteps').value) || 0,
@@ -313,6 +324,7 @@
     input.clicks = [];
     input.held = 0;
     paused = false;
+    stepMode = false;
     status.textContent = 'running';
     const started = performance.now();
     canvas.focus();
@@ -323,6 +335,8 @@
       onOutput: (t) => appendOutput(t),
       onFrame: drawFrame,
       wrapYield: pauseGate,
+      stepping: () => stepMode,
+      atLine: stepAt,
     }));
     run = r;
     setRunning(true);
@@ -334,6 +348,8 @@
     }
     run = null;
     paused = false;
+    stepMode = false;
+    editor.setErrorLine(0);  // the stepped line
     resumeWaiters.splice(0).forEach((w) => w());
     setRunning(false);
     if (result.frame) drawFrame(result.frame);
@@ -367,14 +383,19 @@
   $('pause').onclick = () => {
     if (!run) return;
     paused = !paused;
-    if (!paused) resumeWaiters.splice(0).forEach((w) => w());
+    if (!paused) {
+      stepMode = false;
+      editor.setErrorLine(0);
+      resumeWaiters.splice(0).forEach((w) => w());
+    }
     setRunning(true);
     status.textContent = paused ? 'paused' : 'running';
   };
   $('step').onclick = () => {
     if (!run || !paused) return;
-    stepping = true;
+    stepMode = true;
     paused = false;
+    status.textContent = 'stepping';
     resumeWaiters.splice(0).forEach((w) => w());
   };
   window.addEventListener('keydown', (e) => {

@@ -39,18 +39,21 @@ const robotBasic = StreamLanguage.define({
   languageData: {commentTokens: {line: '//'}},
 });
 
-// The line of the last runtime error.
+// The line of the last runtime error ({line, step: false}), or the statement a stepped run
+// stops before ({line, step: true}).
 const setErrorLine = StateEffect.define();
 const errorLineMark = Decoration.line({class: 'rb-errline'});
+const stepLineMark = Decoration.line({class: 'rb-stepline'});
 const errorLine = StateField.define({
   create: () => Decoration.none,
   update(deco, tr) {
     deco = deco.map(tr.changes);
     for (const e of tr.effects) {
       if (!e.is(setErrorLine)) continue;
-      const line = e.value;
+      const {line, step} = e.value;
       deco = line > 0 && line <= tr.state.doc.lines
-        ? Decoration.set([errorLineMark.range(tr.state.doc.line(line).from)]) : Decoration.none;
+        ? Decoration.set([(step ? stepLineMark : errorLineMark).range(tr.state.doc.line(line).from)])
+        : Decoration.none;
     }
     if (tr.docChanged) deco = Decoration.none;
     return deco;
@@ -90,7 +93,13 @@ window.RbEditor = {
         });
         view.dispatch(setDiagnostics(view.state, diags));
       },
-      setErrorLine(line) { view.dispatch({effects: setErrorLine.of(line || 0)}); },
+      setErrorLine(line) { view.dispatch({effects: setErrorLine.of({line: line || 0, step: false})}); },
+      setStepLine(line) {
+        view.dispatch({effects: setErrorLine.of({line: line || 0, step: true})});
+        if (line > 0 && line <= view.state.doc.lines) {
+          view.dispatch({effects: EditorView.scrollIntoView(view.state.doc.line(line).from, {y: 'nearest'})});
+        }
+      },
       goToLine(line) {
         const l = view.state.doc.line(Math.min(Math.max(1, line), view.state.doc.lines));
         view.dispatch({selection: {anchor: l.from, head: l.to}, scrollIntoView: true});

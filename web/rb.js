@@ -126,6 +126,11 @@
         output: (text) => { output += text; if (options.onOutput) options.onOutput(text); },
         stopped: () => state.stopped,
         stepMs: () => (options.stepMs ? options.stepMs() : 0),
+        // Stepping (live runs, compiled with a hook before each statement): the host asks
+        // stepping() whenever it has been to the page, and while it is true waits in
+        // atLine(line) before each statement of the program's file.
+        stepping: () => (options.stepping ? options.stepping() : false),
+        atLine: (line) => (options.atLine ? options.atLine(line) : Promise.resolve()),
         frame: (p, w, h) => {
           frame = {rgba: new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4)), width: w, height: h};
           if (options.onFrame) options.onFrame(frame);

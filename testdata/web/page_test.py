@@ -224,6 +224,39 @@ def case_stop(env):
     env.expect_quiet()
 
 
+def case_step(env):
+    """Pause, then Step runs one statement at a time: the run stops before each line, marks it in
+    the editor, and has printed only what the statements before it print; Resume runs on."""
+    b = env.open()
+    prog = 'delay 400\nprint "a"\nprint "b"\nprint "c"\n'
+    b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
+    b.js("document.getElementById('pause').click(); true")
+    out = lambda: b.js("document.getElementById('output').textContent")
+    state = lambda: b.js("document.getElementById('status').textContent")
+
+    def step_to(line):
+        b.js("document.getElementById('step').click(); true")
+        deadline = time.monotonic() + 10
+        while state() != f"paused before line {line}":
+            expect(time.monotonic() < deadline, f"the run did not stop before line {line}: {state()!r}")
+            time.sleep(0.05)
+
+    step_to(2)
+    expect(out() == "", f"before line 2 the output is {out()!r}")
+    step_to(3)
+    expect(out() == "a\n", f"before line 3 the output is {out()!r}")
+    marked = b.js("(() => { const l = document.querySelector('.rb-stepline'); return l ? l.textContent : ''; })()")
+    expect(marked == 'print "b"', f"the editor marks {marked!r}, not line 3")
+    step_to(4)
+    expect(out() == "a\nb\n", f"before line 4 the output is {out()!r}")
+    b.js("document.getElementById('pause').click(); true")  # Resume
+    b.js("window.__done.then(() => true)", timeout=20)
+    expect(b.js("rbLastRun.status") == "finished", f"the run ended {b.js('rbLastRun.status')}")
+    expect(out() == "a\nb\nc\n", f"the output is {out()!r}")
+    expect(not b.js("document.querySelector('.rb-stepline')"), "the stepped line stays marked after the run")
+    env.expect_quiet()
+
+
 def case_error_line(env):
     """A runtime error is shown with rb run's message and its line is marked in the editor; a
     program that does not compile shows its error at its line too."""
@@ -246,7 +279,7 @@ def case_error_line(env):
 
 
 CASES = {"loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
-         "stop": case_stop, "error_line": case_error_line}
+         "stop": case_stop, "step": case_step, "error_line": case_error_line}
 
 
 def main():

@@ -81,12 +81,13 @@ struct Loaded {
 };
 
 /// Loads and compiles as rb does (with rb check's warnings when `lint`).
-std::unique_ptr<Loaded> load(const char* source, bool lint, bool keepCode) {
+std::unique_ptr<Loaded> load(const char* source, bool lint, bool keepCode, bool lineTracing = false) {
   auto out = std::make_unique<Loaded>();
   NoFiles reader;
   out->program = loadProgram(kProgramName, source, reader, standardBuiltins(), LoadOptions{}, out->diags);
   CompileOptions compile;
   compile.keepCode = keepCode;
+  compile.lineTracing = lineTracing;  // the page's runs: the host hears each statement (Step)
   out->compiled = compileChecked(*out->program, compile, lint, out->diags);
   return out;
 }
@@ -123,7 +124,7 @@ EMSCRIPTEN_KEEPALIVE char* rb_check(const char* source) {
 EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, const char* keys,
                                   double seed, double maxSteps, double timeoutSeconds,
                                   double maxMemoryMiB, int live) {
-  auto l = load(source, false, true);
+  auto l = load(source, false, true, live != 0);
   std::string out = "{\"diagnostics\":" + diagnosticsJson(*l);
   if (!l->compiled) return give(out + ",\"status\":\"rejected\"}");
 

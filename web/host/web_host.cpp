@@ -15,6 +15,8 @@
 EM_JS(void, rb_js_output, (const char* text, int size), { Module.rbHooks.output(UTF8ToString(text, size)); });
 EM_JS(int, rb_js_stopped, (), { return Module.rbHooks.stopped() ? 1 : 0; });
 EM_JS(double, rb_js_step_ms, (), { return Module.rbHooks.stepMs(); });
+EM_JS(int, rb_js_stepping, (), { return Module.rbHooks.stepping() ? 1 : 0; });
+EM_ASYNC_JS(void, rb_js_at_line, (int line), { await Module.rbHooks.atLine(line); });
 EM_JS(void, rb_js_frame, (const uint8_t* rgba, int width, int height), { Module.rbHooks.frame(rgba, width, height); });
 EM_ASYNC_JS(void, rb_js_yield, (double ms), { await Module.rbHooks.yield(ms); });
 EM_ASYNC_JS(char*, rb_js_input_line, (const char* prompt), {
@@ -118,8 +120,26 @@ void WebHost::yieldToPage(bool force) {
   }
   rb_js_yield(0);
   lastYieldMs_ = wallSeconds() * 1000;
+  afterPage();
+}
+
+void WebHost::afterPage() {
   if (rb_js_stopped()) requestStop();
-  if (live_) stepMs_ = rb_js_step_ms();  // the page's speed may have changed
+  if (!live_) return;
+  stepMs_ = rb_js_step_ms();  // the page's speed may have changed
+  stepping_ = rb_js_stepping() != 0;
+}
+
+void WebHost::onLine(SourceLoc loc) {
+  // Only live runs are compiled with this hook; it costs a test per statement until the page
+  // asks for steps.
+  if (!stepping_ || loc.file != 0 || stopRequested()) return;
+  flushOutput();
+  present();
+  lastFrameMs_ = wallSeconds() * 1000;
+  rb_js_at_line(static_cast<int>(loc.line));
+  lastYieldMs_ = wallSeconds() * 1000;
+  afterPage();
 }
 
 void WebHost::wait(double ms) {
@@ -142,7 +162,7 @@ void WebHost::wait(double ms) {
     double before = wallSeconds() * 1000;
     rb_js_yield(piece);
     sleepDebtMs_ -= wallSeconds() * 1000 - before;
-    if (rb_js_stopped()) requestStop();
+    afterPage();
   }
   sleepDebtMs_ = 0;
   lastYieldMs_ = lastFrameMs_ = wallSeconds() * 1000;

@@ -37,6 +37,8 @@ class WebHost : public Host {
   void wait(double ms) override;
   double wallSeconds() override;
   bool poll() override;
+  /// Before each statement of a live run: while the page steps, waits there for its Step.
+  void onLine(SourceLoc loc) override;
   void animate() override;
   double robotStepMs() const override { return live_ ? stepMs_ : 0; }
   uint64_t memoryInUse() override;
@@ -66,6 +68,8 @@ class WebHost : public Host {
   /// `force`: now.
   void yieldToPage(bool force);
   void checkLimits();
+  /// After each visit to the page: a Stop, the speed and whether the page steps.
+  void afterPage();
 
   bool live_;
   std::vector<std::string> stdin_;
@@ -79,6 +83,7 @@ class WebHost : public Host {
   std::chrono::steady_clock::time_point start_;
   double lastYieldMs_ = 0;
   double lastFrameMs_ = -1000;
+  bool stepping_ = false;   ///< the page asks to stop before each statement
   double sleepDebtMs_ = 0;  ///< live: waiting the run owes, slept once it is worth a timer
   WatchdogLimits limits_;
   RunAlarms* alarms_ = nullptr;
