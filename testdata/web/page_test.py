@@ -213,6 +213,16 @@ def case_stop(env):
                 "return performance.now() - t; })()")
     expect(took < 100, f"Stop took {took:.0f} ms")
     expect(b.js("rbLastRun.status") == "stopped", "the run did not end as stopped")
+    # rb.run runs in a Web Worker: the page answers while it loops, and rb.stop() ends it.
+    b.js("window.__api = rb.run('x = 0\\nwhile 1\\n  x = x + 1\\nwend\\n'); true")
+    time.sleep(1.0)
+    late = b.js("new Promise((r) => { const t = performance.now(); setTimeout(() => r(performance.now() - t - 50), 50); })")
+    expect(late < 100, f"a 50 ms timer fired {late:.0f} ms late while rb.run looped")
+    took = b.js("(async () => { const t = performance.now(); rb.stop(); const r = await window.__api; "
+                "return [performance.now() - t, r.status]; })()")
+    expect(took[0] < 100 and took[1] == "stopped", f"rb.stop() of rb.run: {took}")
+    r = b.js("rb.run('print 6 * 7\\n').then((r) => r.output)")
+    expect(r == "42\n", f"rb.run after a stopped one printed {r!r}")
     # A delay and a waitKey end at Stop too.
     for prog in ["delay 100000\\n", "waitKey k\\n", "input a\\n"]:
         b.js(f"rbPage.setSource('{prog}'); window.__done = rbPage.runProgram(); true")

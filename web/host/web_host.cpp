@@ -16,9 +16,14 @@ EM_JS(void, rb_js_output, (const char* text, int size), { Module.rbHooks.output(
 EM_JS(int, rb_js_stopped, (), { return Module.rbHooks.stopped() ? 1 : 0; });
 EM_JS(double, rb_js_step_ms, (), { return Module.rbHooks.stepMs(); });
 EM_JS(int, rb_js_stepping, (), { return Module.rbHooks.stepping() ? 1 : 0; });
+#ifndef RB_NO_ASYNC
 EM_ASYNC_JS(void, rb_js_at_line, (int line), { await Module.rbHooks.atLine(line); });
+#endif
 EM_JS(void, rb_js_frame, (const uint8_t* rgba, int width, int height), { Module.rbHooks.frame(rgba, width, height); });
+#ifndef RB_NO_ASYNC
 EM_ASYNC_JS(void, rb_js_yield, (double ms), { await Module.rbHooks.yield(ms); });
+#endif
+#ifndef RB_NO_ASYNC
 EM_ASYNC_JS(char*, rb_js_input_line, (const char* prompt), {
   const line = await Module.rbHooks.inputLine(UTF8ToString(prompt));
   if (line === null || line === undefined) return 0;
@@ -27,8 +32,11 @@ EM_ASYNC_JS(char*, rb_js_input_line, (const char* prompt), {
   stringToUTF8(line, p, size);
   return p;
 });
+#endif
 EM_JS(int, rb_js_held_key, (), { return Module.rbHooks.heldKey(); });
+#ifndef RB_NO_ASYNC
 EM_ASYNC_JS(int, rb_js_wait_key, (), { return await Module.rbHooks.waitKey(); });
+#endif
 EM_JS(void, rb_js_mouse, (int* out), {
   const m = Module.rbHooks.mouse();
   HEAP32[out >> 2] = m[0]; HEAP32[(out >> 2) + 1] = m[1]; HEAP32[(out >> 2) + 2] = m[2];
@@ -39,13 +47,28 @@ EM_JS(int, rb_js_take_click, (int* out), {
   HEAP32[out >> 2] = c[0]; HEAP32[(out >> 2) + 1] = c[1]; HEAP32[(out >> 2) + 2] = c[2];
   return 1;
 });
+#ifndef RB_NO_ASYNC
 EM_ASYNC_JS(void, rb_js_wait_click, (int* out), {
   const c = await Module.rbHooks.waitClick();
   HEAP32[out >> 2] = c[0]; HEAP32[(out >> 2) + 1] = c[1]; HEAP32[(out >> 2) + 2] = c[2];
 });
+#endif
+#ifndef RB_NO_ASYNC
 EM_ASYNC_JS(void, rb_js_message_box, (const char* text, const char* title), {
   await Module.rbHooks.messageBox(UTF8ToString(text), UTF8ToString(title));
 });
+#endif
+#ifdef RB_NO_ASYNC
+// rb.run's module (rbcore_fast: a Web Worker or node, headless): nothing waits for the page.
+// Headless runs never ask for input lines, keys, clicks or message boxes from the page (they
+// come from the given lines and scripted input), nor step.
+static void rb_js_yield(double) {}
+static char* rb_js_input_line(const char*) { return nullptr; }
+static int rb_js_wait_key() { return 0; }
+static void rb_js_wait_click(int* out) { out[0] = out[1] = out[2] = 0; }
+static void rb_js_message_box(const char*, const char*) {}
+static void rb_js_at_line(int) {}
+#endif
 // clang-format on
 
 namespace rb::web {
