@@ -175,8 +175,8 @@ def test_square(rb):
         check(moved is not None, "F8 did not step the robot:\n" + s.screen())
         check(status(moved, "state") == "paused", "not paused after a step:\n" + moved)
         s.keys("F2")
-        done = s.wait_for("the end", lambda t: status(t, "state") == "finished")
-        check("square done" in done, "the output pane lacks the program's output:\n" + done)
+        done = s.wait_for("the end", lambda t: status(t, "state") == "finished" and "square done" in output_pane(t))
+        check("square done" in output_pane(done), "the output pane lacks the program's output:\n" + done)
         arena = arena_lines(done)
         drawn = sum(1 for row in arena for c in row if c not in " ")
         check(drawn > 25, f"the square's trail is missing ({drawn} drawn cells):\n" + done)
@@ -368,6 +368,7 @@ def test_step(rb):
             s.keys(key)
             t = s.wait_for(f"{key} to line {line}", lambda t, line=line:
                            running_line(t) == line and status(t, "state") == "paused")
+        t = s.wait_for("the variables pane", lambda t: variable(t, "total") == "3")
         check(variable(t, "total") == "3", "the variables pane after two gosubs:\n" + t)
         s.keys("F10")
         check(s.exit_code() == 0, "exit status")
