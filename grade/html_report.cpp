@@ -248,21 +248,7 @@ std::string card(const ClassResult& r, size_t i, const std::string& page, const 
 
 }  // namespace
 
-std::string htmlEscape(const std::string& text) {
-  std::string clean = toUtf8(text, true), out;
-  out.reserve(clean.size());
-  for (char c : clean) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string htmlEscape(const std::string& text) { return markupEscape(text, "&#39;"); }
 
 std::string relativeUrl(const std::string& to, const std::string& fromDir) {
   std::error_code ec;

@@ -218,20 +218,23 @@ CheckResult shownCheck(const CheckResult& check, bool student) { return shown(ch
 std::string shownReason(const ProgramResult& program, bool student) { return reasonOf(program, student); }
 std::string outputTranscript(const ProgramResult& program) { return transcript(program); }
 
-std::string xmlEscape(const std::string& text) {
+std::string markupEscape(const std::string& text, std::string_view apostrophe) {
   std::string clean = cleanUtf8(text, true), out;
+  out.reserve(clean.size());
   for (char c : clean) {
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
+      case '\'': out += apostrophe; break;
       default: out += c;
     }
   }
   return out;
 }
+
+std::string xmlEscape(const std::string& text) { return markupEscape(text, "&apos;"); }
 
 
 std::string textReport(const ClassResult& r, bool showDetails) {

@@ -3,6 +3,7 @@
 // GitHub, GitLab and Jenkins show) and a CSV grade book.
 
 #include <string>
+#include <string_view>
 
 #include "grader.h"
 
@@ -38,6 +39,9 @@ std::string outputTranscript(const ProgramResult& program);
 
 /// Text escaped for XML character data and attribute values. Bytes that are not UTF-8 are
 /// read as Latin-1; control characters XML 1.0 cannot carry become U+FFFD.
+/// Text for XML or HTML: valid UTF-8 without XML's forbidden controls, & < > " escaped, and ' as
+/// `apostrophe` (XML's "&apos;", or HTML's "&#39;").
+std::string markupEscape(const std::string& text, std::string_view apostrophe);
 std::string xmlEscape(const std::string& text);
 
 }  // namespace rb::grade

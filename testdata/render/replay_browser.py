@@ -334,12 +334,12 @@ window.__rgb = () => {
 };
 window.__hash = async () => Array.from(new Uint8Array(await crypto.subtle.digest('SHA-256', __rgb())))
     .map((b) => b.toString(16).padStart(2, '0')).join('');
-window.__bytes = () => {
-  const rgb = __rgb();
+window.__b64 = (rgb) => {
   let s = '';
   for (let i = 0; i < rgb.length; i += 32768) s += String.fromCharCode.apply(null, rgb.subarray(i, i + 32768));
   return btoa(s);
 };
+window.__bytes = () => __b64(__rgb());
 true
 """
 

@@ -23,21 +23,11 @@ import threading
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "render"))
+from replay_browser import CANVAS_JS as REPLAY_CANVAS_JS  # noqa: E402
 from replay_browser import Browser, Failure, expect, find_chromium, first_difference, read_png  # noqa: E402
 
-CANVAS_JS = """
-window.__rgb = () => {
-  const c = document.getElementById('screen');
-  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-  const rgb = new Uint8Array(c.width * c.height * 3);
-  for (let i = 0, j = 0; i < d.length; i += 4) { rgb[j++] = d[i]; rgb[j++] = d[i + 1]; rgb[j++] = d[i + 2]; }
-  return rgb;
-};
-window.__b64 = (rgb) => {
-  let s = '';
-  for (let i = 0; i < rgb.length; i += 32768) s += String.fromCharCode.apply(null, rgb.subarray(i, i + 32768));
-  return btoa(s);
-};
+# The canvas as RGB (__rgb, __b64: replay_browser.py's), and a PNG data URL's pixels as RGB.
+CANVAS_JS = REPLAY_CANVAS_JS + """
 window.__pngRgb = async (url) => {
   const img = new Image();
   img.src = url;
