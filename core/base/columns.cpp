@@ -77,6 +77,11 @@ int codePointWidth(char32_t c) {
   return inRanges(kWide, c) ? 2 : 1;
 }
 
+int displayWidthAt(std::string_view s, size_t i, size_t& len) {
+  char32_t c = decode(s, i, len);
+  return c == '\t' ? 1 : codePointWidth(c);
+}
+
 uint32_t utf16Column(std::string_view line, uint32_t byteCol) {
   if (byteCol == 0) return 0;
   size_t target = byteCol - 1;  // 0-based byte offset

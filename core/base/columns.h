@@ -23,4 +23,8 @@ uint32_t displayColumn(std::string_view line, uint32_t byteCol, uint32_t tabStop
 /// characters and emoji, 0 for combining marks and zero-width formatting characters, else 1.
 int codePointWidth(char32_t c);
 
+/// How many terminal columns the character starting at byte `i` of `s` takes (a tab counts 1:
+/// where it stops depends on the column), and its length in bytes in `len`.
+int displayWidthAt(std::string_view s, size_t i, size_t& len);
+
 }  // namespace rb

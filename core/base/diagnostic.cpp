@@ -145,11 +145,9 @@ std::string padTo(std::string_view line, uint32_t col) {
       ++i;
       continue;
     }
-    uint32_t next = i + 1;
-    while (next - 1 < line.size() && (static_cast<unsigned char>(line[next - 1]) & 0xC0) == 0x80) ++next;
-    uint32_t width = displayColumn(line, next) - displayColumn(line, i);
-    out.append(width, ' ');
-    i = next;
+    size_t len = 1;
+    out.append(static_cast<size_t>(displayWidthAt(line, i - 1, len)), ' ');
+    i += static_cast<uint32_t>(len);
   }
   return out;
 }
