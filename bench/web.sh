@@ -9,7 +9,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 runs=3
 if [ "${1:-}" = "-n" ]; then runs=$2; shift 2; fi
 rb="${1:-$here/../build/cmd/rb}"
-site="$here/../build-web/site"
+site="${RB_WEB_SITE:-$here/../build-web/site}"
 [ -f "$site/rb.js" ] || { echo "web.sh: no site at $site (run scripts/web.sh)" >&2; exit 66; }
 exec node - "$site" "$rb" "$runs" "$here/programs" <<'JS'
 const [site, rbBin, runs, dir] = process.argv.slice(2);

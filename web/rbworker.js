@@ -3,7 +3,7 @@
 importScripts('rbcore_fast.js', 'rb.js');
 let core = null;
 onmessage = async (e) => {
-  if (!core) core = await createRbCoreFast({});
+  if (!core) core = self.rb.warmUp(await createRbCoreFast({}));
   const r = self.rb.runHeadless(core, e.data.source, e.data.options);
   postMessage(r, r.frame ? [r.frame.rgba.buffer] : []);
 };

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "machine/builtins_impl.h"
+#include "base/checked_math.h"
 #include "base/runtime_error.h"
 
 namespace rb::builtins {
@@ -63,7 +64,7 @@ Value mathPow(Machine&, Args& a) {
   if (a[0].isInt() && a[1].isInt() && a[1].i() >= 0 && a[1].i() < 64) {
     int64_t r = 1;
     bool overflow = false;
-    for (int64_t i = 0; i < a[1].i() && !overflow; ++i) overflow = __builtin_mul_overflow(r, a[0].i(), &r);
+    for (int64_t i = 0; i < a[1].i() && !overflow; ++i) overflow = mulOverflows(r, a[0].i(), &r);
     if (!overflow) return Value::integer(r);
   }
   return numberResult(std::pow(a.num(0), a.num(1)));

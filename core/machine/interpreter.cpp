@@ -4,6 +4,7 @@
 #include <limits>
 #include <new>
 
+#include "base/checked_math.h"
 #include "base/runtime_error.h"
 #include "lang/builtins.h"
 #include "lang/suggest.h"
@@ -819,7 +820,7 @@ void Interpreter::execute(uint32_t& pcOut) {
   ++ip;                                                                             \
   NEXT
     CASE(Sub) { ARITHMETIC(__builtin_sub_overflow, -); }
-    CASE(Mul) { ARITHMETIC(__builtin_mul_overflow, *); }
+    CASE(Mul) { ARITHMETIC(mulOverflows, *); }
 #undef ARITHMETIC
 // The same with a constant on the right whose type the compiler knew: only the left operand is
 // tested; a string, an empty value or an overflow goes to the general handler.
@@ -859,7 +860,7 @@ void Interpreter::execute(uint32_t& pcOut) {
     CASE(MulKNum) { ARITHMETIC_KNUM(*, op_Mul); }
     CASE(AddKInt) { ARITHMETIC_KINT(__builtin_add_overflow, +, op_Add); }
     CASE(SubKInt) { ARITHMETIC_KINT(__builtin_sub_overflow, -, op_Sub); }
-    CASE(MulKInt) { ARITHMETIC_KINT(__builtin_mul_overflow, *, op_Mul); }
+    CASE(MulKInt) { ARITHMETIC_KINT(mulOverflows, *, op_Mul); }
 #undef ARITHMETIC_KNUM
 #undef ARITHMETIC_KINT
     // The forms whose result replaces the left operand: the test of that operand's type also
@@ -896,7 +897,7 @@ void Interpreter::execute(uint32_t& pcOut) {
       }
       if (x.isInt() && b.isInt() && c.isInt()) {
         int64_t p, s;
-        if (!__builtin_mul_overflow(b.i(), c.i(), &p) && !__builtin_add_overflow(x.i(), p, &s)) [[likely]] {
+        if (!mulOverflows(b.i(), c.i(), &p) && !__builtin_add_overflow(x.i(), p, &s)) [[likely]] {
           x.setInt(s);
           ip += 2;
           NEXT;
@@ -980,9 +981,9 @@ void Interpreter::execute(uint32_t& pcOut) {
         int64_t base = a.i(), e = b.i(), r = 1;
         bool overflow = false;
         while (e > 0 && !overflow) {
-          if (e & 1) overflow = __builtin_mul_overflow(r, base, &r);
+          if (e & 1) overflow = mulOverflows(r, base, &r);
           e >>= 1;
-          if (e > 0 && !overflow) overflow = __builtin_mul_overflow(base, base, &base);
+          if (e > 0 && !overflow) overflow = mulOverflows(base, base, &base);
         }
         if (!overflow) {
           d.setInt(r);

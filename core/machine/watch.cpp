@@ -4,6 +4,7 @@
 #include <initializer_list>
 #include <limits>
 
+#include "base/checked_math.h"
 #include "base/runtime_error.h"
 #include "lang/ast_walk.h"
 #include "lang/parser.h"
@@ -140,7 +141,7 @@ Value arithmetic(Tok op, const Value& a, const Value& b) {
         int64_t r;
         bool over = op == Tok::Plus    ? __builtin_add_overflow(a.i(), b.i(), &r)
                     : op == Tok::Minus ? __builtin_sub_overflow(a.i(), b.i(), &r)
-                                       : __builtin_mul_overflow(a.i(), b.i(), &r);
+                                       : mulOverflows(a.i(), b.i(), &r);
         if (!over) return Value::integer(r);
       }
       double x = a.asDouble(), y = b.asDouble();
@@ -168,9 +169,9 @@ Value arithmetic(Tok op, const Value& a, const Value& b) {
         int64_t base = a.i(), e = b.i(), r = 1;
         bool over = false;
         while (e > 0 && !over) {
-          if (e & 1) over = __builtin_mul_overflow(r, base, &r);
+          if (e & 1) over = mulOverflows(r, base, &r);
           e >>= 1;
-          if (e > 0 && !over) over = __builtin_mul_overflow(base, base, &base);
+          if (e > 0 && !over) over = mulOverflows(base, base, &base);
         }
         if (!over) return Value::integer(r);
       }

@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""The interpreter benchmarks (bench/programs/*.bas) in rb's WebAssembly core in headless
+Chromium beside native rb, side by side in one run: bench/web.sh's table, with the page's
+`rb.run` (which runs in a Web Worker, on the rbcore_fast build) instead of node's. The wasm time
+is measured in the page (performance.now() around `await rb.run(...)`: compile, run, and the
+messages to and from the worker); native rb's is the wall time of `rb run --seed 1 FILE`.
+Median of N runs each (default 5); the outputs must be equal.
+
+Usage: bench/web_browser.py [-n N] [--site DIR] [path/to/rb]   (scripts/web.sh builds the site)
+"""
+import argparse
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "testdata", "web"))
+sys.path.insert(0, os.path.join(HERE, "..", "testdata", "render"))
+from page_test import Env  # noqa: E402
+from replay_browser import find_chromium  # noqa: E402
+
+RUN_JS = """
+(async () => {
+  const t = performance.now();
+  const r = await rb.run(%s, {seed: 1, png: false});
+  return {seconds: (performance.now() - t) / 1000, output: r.output, error: r.error && r.error.message};
+})()
+"""
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("-n", type=int, default=5, help="runs of each program on each side")
+    ap.add_argument("--site", default=os.environ.get("RB_WEB_SITE", os.path.join(HERE, "..", "build-web", "site")))
+    ap.add_argument("rb", nargs="?", default=os.path.join(HERE, "..", "build", "cmd", "rb"))
+    a = ap.parse_args()
+    chromium = find_chromium()
+    if not os.path.exists(os.path.join(a.site, "index.html")) or not chromium:
+        print("needs the site (scripts/web.sh) and Chromium", file=sys.stderr)
+        return 66
+    work = tempfile.mkdtemp()
+    env = Env(argparse.Namespace(site=a.site, work=work, rb=a.rb, source=os.path.join(HERE, "..")), chromium)
+    try:
+        b = env.open()
+        print(f"Chromium: {b.js('navigator.userAgent')}")
+        print("program         native s   wasm s   wasm/native")
+        folder = os.path.join(HERE, "programs")
+        for name in sorted(f for f in os.listdir(folder) if f.endswith(".bas")):
+            path = os.path.join(folder, name)
+            source = open(path, encoding="utf-8").read()
+            native, wasm = [], []
+            native_out = wasm_out = ""
+            for _ in range(a.n):
+                t = time.monotonic()
+                native_out = subprocess.run([a.rb, "run", "--seed", "1", path], capture_output=True, text=True,
+                                            check=True).stdout
+                native.append(time.monotonic() - t)
+                r = b.js(RUN_JS % json.dumps(source), timeout=600)
+                if r["error"]:
+                    raise SystemExit(f"{name}: {r['error']}")
+                wasm.append(r["seconds"])
+                wasm_out = r["output"]
+            if native_out != wasm_out:
+                raise SystemExit(f"{name}: the page's output differs from rb run's")
+            n, w = statistics.median(native), statistics.median(wasm)
+            print(f"{name:15} {n:8.3f} {w:8.3f}   {w / n:6.2f}")
+    finally:
+        env.close()
+        shutil.rmtree(work, ignore_errors=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
