@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "robot_image.h"
+#include "svg_writer.h"
 
 namespace rb::render {
 
@@ -157,6 +158,10 @@ std::vector<uint8_t> encodePng(const RgbImage& image) {
   }
   out.resize(size);
   return out;
+}
+
+std::string pngDataHref(const Pixels& pixels) {
+  return "data:image/png;base64," + base64Encode(encodePng(screenImage(pixels, 1)));
 }
 
 namespace {

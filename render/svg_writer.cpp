@@ -313,7 +313,7 @@ std::string base64Encode(const std::vector<uint8_t>& bytes) {
 }
 
 std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
-                      const Pixels* shown) {
+                      const Pixels* shown, RasterHref href) {
   scale = std::clamp(scale, 1, kMaxScale);
   std::string out;
   put(out, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n",
@@ -331,11 +331,10 @@ std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
       out += "<!-- The screen was changed in a way that has no vector form (flood fill, scrolling "
              "text, restoreScr, or more drawing than the display list keeps): this picture is the "
              "screen's pixels as an embedded PNG. -->\n";
-    std::vector<uint8_t> png = encodePng(screenImage(shown ? *shown : canvas.pixels(), 1));
     put(out, "<image x=\"0\" y=\"0\" width=\"", std::to_string(kScreenW), "\" height=\"",
         std::to_string(kScreenH),
         "\" image-rendering=\"optimizeSpeed\" style=\"image-rendering:pixelated\" "
-        "preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64,", base64Encode(png), "\"/>\n");
+        "preserveAspectRatio=\"none\" xlink:href=\"", href(shown ? *shown : canvas.pixels()), "\"/>\n");
   } else {
     // The list starts at the last clearScr; before any, the screen is the initial background.
     if (ops.empty() || ops.front().kind != DrawOp::Clear) builder.background(canvas.background());

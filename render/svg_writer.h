@@ -17,13 +17,21 @@ namespace rb::render {
 /// SVG must embed the raster.
 bool needsRaster(const std::vector<DrawOp>& ops);
 
+/// The link an embedded raster's <image> gets for the 800 x 600 screen `pixels` (without the
+/// robot).
+using RasterHref = std::string (*)(const Pixels& pixels);
+
+/// The pixels as a PNG (encodePng, with libpng) in a data: URL: what rb render embeds.
+std::string pngDataHref(const Pixels& pixels);
+
 /// The SVG document: width 800 * scale, height 600 * scale (scale clamped to 1..kMaxScale),
 /// viewBox in screen pixels. Deterministic: the same canvas and robot give the same bytes.
 /// Throws std::runtime_error when the embedded PNG cannot be encoded (out of memory).
 /// `shown`, when given, is what is shown instead of the canvas (flip is on: the screen at the last
-/// flip), embedded as pixels.
+/// flip), embedded as pixels. `href` makes the link of embedded pixels (the browser's host
+/// encodes its PNG in the page, after the run).
 std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
-                      const Pixels* shown = nullptr);
+                      const Pixels* shown = nullptr, RasterHref href = pngDataHref);
 
 /// Standard base64 with padding (RFC 4648), for data: URLs.
 std::string base64Encode(const std::vector<uint8_t>& bytes);

@@ -161,6 +161,12 @@
   }
   $('save').onclick = () => download('program.bas', URL.createObjectURL(new Blob([editor.value], {type: 'text/plain'})));
   $('png').onclick = () => download('screen.png', canvas.toDataURL('image/png'));
+  // The SVG is the screen as the last run left it, made by the core as `rb render -o OUT.svg`
+  // makes it (lines, shapes and text as vectors).
+  let lastSvg = null;
+  $('svg').onclick = () => {
+    if (lastSvg) download('screen.svg', URL.createObjectURL(new Blob([lastSvg], {type: 'image/svg+xml'})));
+  };
   const examples = window.RB_EXAMPLES || [];
   for (const [i, ex] of examples.entries()) {
     const o = document.createElement('option');
@@ -235,6 +241,7 @@
 
   function setRunning(on) {
     $('run').disabled = on;
+    $('svg').disabled = on || !lastSvg;
     $('stop').disabled = !on;
     $('pause').disabled = !on;
     $('step').disabled = !on || !paused;
@@ -331,6 +338,7 @@
     const r = rb.start(editor.value, Object.assign(limits(), {
       io,
       png: false,
+      svg: true,
       stepMs: () => Number($('speed').value),
       onOutput: (t) => appendOutput(t),
       onFrame: drawFrame,
@@ -347,6 +355,7 @@
       result = {status: 'error', error: String(e), output: ''};
     }
     run = null;
+    lastSvg = result.svg || null;
     paused = false;
     stepMode = false;
     editor.setErrorLine(0);  // the stepped line

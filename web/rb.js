@@ -2,8 +2,8 @@
 // promises, on the page's window.rb and as a node module (require('./rb.js')). docs/web.md.
 //
 //   await rb.check(source)             -> [{severity, line, col, message, code, text}, ...]
-//   await rb.run(source, {stdin, seed, maxSteps, timeout, maxMemory, keys})
-//                                      -> {output, error, png, status, steps, diagnostics}
+//   await rb.run(source, {stdin, seed, maxSteps, timeout, maxMemory, keys, svg})
+//                                      -> {output, error, png, svg, status, steps, diagnostics}
 //   rb.start(source, options)          a live run for the page (web/app.js): {done, stop()}
 //   rb.stop()                          stops the run in progress (within one slice)
 //
@@ -151,15 +151,17 @@
   // What rb.run's options may carry into a worker.
   function runOptions(options) {
     return {stdin: options.stdin || [], seed: options.seed, maxSteps: options.maxSteps, timeout: options.timeout,
-            maxMemory: options.maxMemory, keys: options.keys || ''};
+            maxMemory: options.maxMemory, keys: options.keys || '', svg: !!options.svg};
   }
 
-  // A headless run on rbcore_fast (in the worker, or under node): {result, output, frame}.
+  // A headless run on rbcore_fast (in the worker, or under node): {result, output, frame, svg}.
   function runHeadless(M, source, options) {
     let output = '';
     let frame = null;
+    let svg = null;
     M.rbHooks = Object.assign({}, noInput, {
       output: (text) => { output += text; },
+      svg: (text, rgba, width, height) => { svg = {text, rgba, width, height}; },
       stopped: () => false,
       stepMs: () => 0,
       stepping: () => false,
@@ -172,18 +174,27 @@
     const args = [cString(M, source), cString(M, stdin), cString(M, options.keys || '')];
     try {
       const p = M.ccall('rb_run', 'number',
-        ['number', 'number', 'number', 'number', 'number', 'number', 'number', 'number'],
+        ['number', 'number', 'number', 'number', 'number', 'number', 'number', 'number', 'number'],
         [...args, seed, options.maxSteps || 0, options.timeout || 0,
-         options.maxMemory !== undefined ? options.maxMemory : 1024, 0]);
-      return {result: JSON.parse(takeString(M, p)), output, frame};
+         options.maxMemory !== undefined ? options.maxMemory : 1024, 0, options.svg ? 1 : 0]);
+      return {result: JSON.parse(takeString(M, p)), output, frame, svg};
     } finally {
       args.forEach((a) => M._free(a));
     }
   }
 
+  // The final screen as SVG (options.svg): the host's SVG, with the PNG of the screen's pixels
+  // where it embeds them (WebHost::presentSvg).
+  async function svgText(svg) {
+    if (!svg) return null;
+    if (!svg.rgba) return svg.text;
+    const href = await pngDataUrl(svg.rgba, svg.width, svg.height);
+    return svg.text.replace('xlink:href="rb:screen.png"', () => `xlink:href="${href}"`);
+  }
+
   // The result as rb.run and rb.start give it: the output, the error's text and line, the
-  // final frame and its PNG.
-  async function finish(result, output, frame, options) {
+  // final frame and its PNG, and the SVG when asked for.
+  async function finish(result, output, frame, options, svg) {
     const errors = (result.diagnostics || []).filter((d) => d.severity === 'error');
     let error = null;
     if (result.error) error = result.error.text || result.error.message;
@@ -194,6 +205,7 @@
       errorLine: result.error ? result.error.line : errors.length ? errors[0].line : null,
       frame,
       png: frame && options.png !== false ? await pngDataUrl(frame.rgba, frame.width, frame.height) : null,
+      svg: options.svg ? await svgText(svg) : null,
     });
   }
 
@@ -233,8 +245,10 @@
       current = {stop: () => { state.stopped = true; [...state.wake].forEach((w) => w()); }};
       let output = '';
       let frame = null;
+      let svg = null;
       const io = Object.assign({}, noInput, options.io || {});
       M.rbHooks = Object.assign({}, io, {
+        svg: (text, rgba, width, height) => { svg = {text, rgba, width, height}; },
         output: (text) => { output += text; if (options.onOutput) options.onOutput(text); },
         stopped: () => state.stopped,
         stepMs: () => (options.stepMs ? options.stepMs() : 0),
@@ -260,15 +274,16 @@
       let result;
       try {
         const p = await M.ccall('rb_run', 'number',
-          ['number', 'number', 'number', 'number', 'number', 'number', 'number', 'number'],
+          ['number', 'number', 'number', 'number', 'number', 'number', 'number', 'number', 'number'],
           [...args, seed, options.maxSteps || 0, options.timeout || 0,
-           options.maxMemory !== undefined ? options.maxMemory : 1024, live ? 1 : 0], {async: true});
+           options.maxMemory !== undefined ? options.maxMemory : 1024, live ? 1 : 0, options.svg ? 1 : 0],
+          {async: true});
         result = JSON.parse(takeString(M, p));
       } finally {
         args.forEach((a) => M._free(a));
         current = null;
       }
-      return finish(result, output, frame, options);
+      return finish(result, output, frame, options, svg);
     });
     queue = job.catch(() => {});
     const stop = () => { state.stopped = true; [...state.wake].forEach((w) => w()); };
@@ -291,7 +306,7 @@
     run(source, options = {}) {
       const job = queue.then(async () => {
         const raw = isNode ? runHeadless(await fastCore(), source, options) : await workerRun(source, options);
-        return finish(raw.result, raw.output, raw.frame, options);
+        return finish(raw.result, raw.output, raw.frame, options, raw.svg);
       });
       queue = job.catch(() => {});
       return job;

@@ -5,5 +5,5 @@ let core = null;
 onmessage = async (e) => {
   if (!core) core = self.rb.warmUp(await createRbCoreFast({}));
   const r = self.rb.runHeadless(core, e.data.source, e.data.options);
-  postMessage(r, r.frame ? [r.frame.rgba.buffer] : []);
+  postMessage(r, [r.frame && r.frame.rgba.buffer, r.svg && r.svg.rgba && r.svg.rgba.buffer].filter(Boolean));
 };

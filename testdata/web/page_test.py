@@ -16,6 +16,7 @@ import hashlib
 import http.server
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -278,8 +279,49 @@ def case_error_line(env):
     env.expect_quiet()
 
 
+def case_svg(env):
+    """After a run the SVG button downloads the screen as `rb render -o OUT.svg` writes it: the same
+    bytes for shapes, text and the robot; where the SVG embeds the screen's pixels (a flood fill),
+    the same document around a PNG of the same pixels. rb.run gives it too (options.svg)."""
+    b = env.open()
+    expect(b.js("document.getElementById('svg').disabled"), "the SVG button works before any run")
+    # What the page downloads: the Blob given to URL.createObjectURL, read back as text.
+    b.js("window.__blobs = []; const make = URL.createObjectURL; "
+         "URL.createObjectURL = (blob) => { window.__blobs.push(blob); return make(blob); }; true")
+    cases = {
+        "shapes": 'rectangle 10,10,200,100\ncircle 300,300,400,400,red\nline 0,599,799,500,3,blue\n'
+                  'xyText 50,500,"Hello, SVG","Arial",14,fs_Bold\nrLocate 400,300\nrForward 50\nrTurn 30\n',
+        "fill": 'rectangle 10,10,200,100\nfloodfill 100,50,red\nrLocate 400,300\n',
+    }
+    for name, text in cases.items():
+        path = os.path.join(env.args.work, name + ".bas")
+        with open(path, "w") as f:
+            f.write(text)
+        out = os.path.join(env.args.work, name + ".svg")
+        r = subprocess.run([env.args.rb, "render", path, "-o", out], capture_output=True, text=True, timeout=60)
+        expect(r.returncode == 0, f"rb render {name}: {r.stderr}")
+        want = open(out, encoding="utf-8").read()
+        r = env.run_page(text)
+        expect(r["status"] == "finished", f"{name} ended {r}")
+        expect(not b.js("document.getElementById('svg').disabled"), f"{name}: the SVG button is off after the run")
+        b.js("window.__blobs = []; document.getElementById('svg').click(); true")
+        got = b.js("window.__blobs.length === 1 && window.__blobs[0].type === 'image/svg+xml' "
+                   "? window.__blobs[0].text() : null")
+        expect(got is not None, f"{name}: the SVG button gave no SVG file")
+        headless = b.js(f"rb.run({json.dumps(text)}, {{seed: 1, svg: true, png: false}}).then((r) => r.svg)")
+        for who, svg in (("the page's SVG", got), ("rb.run's svg", headless)):
+            if "data:image/png" not in want:
+                expect(svg == want, f"{name}: {who} is not rb render's:\n{svg[:600]}\n--- rb render:\n{want[:600]}")
+                continue
+            strip = lambda t: re.sub(r'data:image/png;base64,[^"]*', "PNG", t)  # noqa: E731
+            expect(strip(svg) == strip(want), f"{name}: {who} is not rb render's around its PNG:\n{svg[:600]}")
+            png = lambda t: read_png(base64.b64decode(re.search(r'data:image/png;base64,([^"]*)', t).group(1)))  # noqa: E731
+            expect(png(svg) == png(want), f"{name}: {who}'s embedded pixels are not rb render's")
+    env.expect_quiet()
+
+
 CASES = {"loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
-         "stop": case_stop, "step": case_step, "error_line": case_error_line}
+         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg}
 
 
 def main():

@@ -119,11 +119,12 @@ EMSCRIPTEN_KEEPALIVE char* rb_check(const char* source) {
 }
 
 /// Runs a program to its end. `stdinLines`: the lines `input` reads, each ended by "\n";
-/// `keys`: a --keys text ("" none); limits as rb run's options (0: none). Returns JSON:
+/// `keys`: a --keys text ("" none); limits as rb run's options (0: none); `svg`: the final screen
+/// as SVG too (WebHost::presentSvg). Returns JSON:
 /// {status, diagnostics (load), error (runtime), steps}.
 EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, const char* keys,
                                   double seed, double maxSteps, double timeoutSeconds,
-                                  double maxMemoryMiB, int live) {
+                                  double maxMemoryMiB, int live, int svg) {
   auto l = load(source, false, true, live != 0);
   std::string out = "{\"diagnostics\":" + diagnosticsJson(*l);
   if (!l->compiled) return give(out + ",\"status\":\"rejected\"}");
@@ -150,11 +151,13 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
   WebHost host(live != 0, std::move(lines), std::move(script));
   Machine machine(host, static_cast<uint64_t>(seed));
   host.attachMachine(machine);
+  machine.canvas().keepDisplayList(svg != 0);  // the SVG's shapes (as rb render -o OUT.svg)
   Interpreter interpreter(*l->compiled, machine);
   RunResult result = interpreter.run(RunLimits::of(static_cast<uint64_t>(maxSteps), timeoutSeconds,
                                                    static_cast<uint64_t>(maxMemoryMiB)));
   host.flushOutput();
   host.present();
+  if (svg) host.presentSvg();
   const char* status = "finished";
   switch (result.status) {
     case RunStatus::Finished: status = "finished"; break;

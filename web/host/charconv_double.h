@@ -1,10 +1,13 @@
 #pragma once
 // Included before every source of the wasm build (web/CMakeLists.txt): the libc++ of Debian's
-// emscripten (LLVM 14) has std::from_chars for integers only. This gives the double overload
-// the core uses, with from_chars' rules (C locale, no leading space or '+', no hex in the
-// general format), on strtod. The native build never sees it.
+// emscripten (LLVM 14) has std::from_chars and std::to_chars for integers only. This gives the
+// double overloads the core and the SVG writer use: from_chars with its rules (C locale, no
+// leading space or '+', no hex in the general format), on strtod, and to_chars with a format
+// and a precision, on snprintf (musl's is correctly rounded, as to_chars is; the page never
+// changes the C locale). The native build never sees it.
 #include <cerrno>
 #include <charconv>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <system_error>
@@ -26,5 +29,12 @@ inline from_chars_result from_chars(const char* first, const char* last, double&
   if (errno == ERANGE) return {stop, errc::result_out_of_range};
   value = v;
   return {stop, errc{}};
+}
+
+inline to_chars_result to_chars(char* first, char* last, double value, chars_format format, int precision) {
+  const char* spec = format == chars_format::fixed ? "%.*f" : format == chars_format::scientific ? "%.*e" : "%.*g";
+  int n = std::snprintf(first, static_cast<size_t>(last - first), spec, precision, value);
+  if (n < 0 || n >= last - first) return {last, errc::value_too_large};
+  return {first + n, errc{}};
 }
 }  // namespace std

@@ -8,6 +8,7 @@
 
 #include "robot_image.h"
 #include "robot_view.h"
+#include "svg_writer.h"
 
 // The page's side of each call: Module.rbHooks, set by web/rb.js for each run. The async ones
 // suspend the run (Asyncify) until the page answers; the page answers at once after a Stop.
@@ -20,6 +21,10 @@ EM_JS(int, rb_js_stepping, (), { return Module.rbHooks.stepping() ? 1 : 0; });
 EM_ASYNC_JS(void, rb_js_at_line, (int line), { await Module.rbHooks.atLine(line); });
 #endif
 EM_JS(void, rb_js_frame, (const uint8_t* rgba, int width, int height), { Module.rbHooks.frame(rgba, width, height); });
+EM_JS(void, rb_js_svg, (const char* svg, int size, const uint8_t* rgba, int width, int height), {
+  Module.rbHooks.svg(UTF8ToString(svg, size), rgba ? new Uint8ClampedArray(HEAPU8.subarray(rgba, rgba + width * height * 4)) : null,
+                     width, height);
+});
 #ifndef RB_NO_ASYNC
 EM_ASYNC_JS(void, rb_js_yield, (double ms), { await Module.rbHooks.yield(ms); });
 #endif
@@ -288,18 +293,23 @@ void WebHost::messageBox(std::string_view text, std::string_view title) {
   if (rb_js_stopped()) requestStop();
 }
 
-void WebHost::present() {
-  if (!machine_) return;
-  const Pixels& pixels = machine_->shownScreen();
-  constexpr int w = Canvas::kWidth, h = Canvas::kHeight;
-  if (pixels.size() < static_cast<size_t>(w) * h) return;
-  rgba_.resize(static_cast<size_t>(w) * h * 4);
+bool WebHost::toRgba(const Pixels& pixels) {
+  constexpr size_t n = static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight;
+  if (pixels.size() < n) return false;
+  rgba_.resize(n * 4);
   uint8_t* o = rgba_.data();
-  for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i, o += 4) {
+  for (size_t i = 0; i < n; ++i, o += 4) {
     uint32_t rgb = colourToRgb(pixels[i]);
     o[0] = static_cast<uint8_t>(rgb >> 16), o[1] = static_cast<uint8_t>(rgb >> 8),
     o[2] = static_cast<uint8_t>(rgb), o[3] = 255;
   }
+  return true;
+}
+
+void WebHost::present() {
+  if (!machine_) return;
+  constexpr int w = Canvas::kWidth, h = Canvas::kHeight;
+  if (!toRgba(machine_->shownScreen())) return;
   // The robot on top, as rb render's picture and the live terminal view draw it.
   const render::RobotView view = render::robotView(*machine_);
   const render::RobotImage shape(view);
@@ -311,6 +321,20 @@ void WebHost::present() {
       p[2] = static_cast<uint8_t>(robotRgb);
     });
   rb_js_frame(rgba_.data(), w, h);
+}
+
+void WebHost::presentSvg() {
+  if (!machine_) return;
+  const Canvas& canvas = machine_->canvas();
+  const Pixels* shown = machine_->showsFlip() ? &machine_->shownScreen() : nullptr;
+  // The embedded pixels' PNG is made on the page (rb.js), with the browser's deflate: here the
+  // SVG names them kScreenHref.
+  const std::string svg = render::renderSvg(canvas, render::robotView(*machine_), 1, shown,
+                                            [](const Pixels&) { return std::string(kScreenHref); });
+  const bool raster = shown || render::needsRaster(canvas.displayList());
+  const bool havePixels = raster && toRgba(shown ? *shown : canvas.pixels());
+  rb_js_svg(svg.data(), static_cast<int>(svg.size()), havePixels ? rgba_.data() : nullptr, Canvas::kWidth,
+            Canvas::kHeight);
 }
 
 }  // namespace rb::web

@@ -60,6 +60,11 @@ class WebHost : public Host {
   /// Converts the screen, with the robot drawn on top as rb render draws it, to RGBA for the
   /// page's canvas and hands it over.
   void present();
+  /// The screen as `rb render -o OUT.svg` draws it, handed to the page. When the SVG must embed
+  /// the screen's pixels (flip is on, a flood fill, ...), its <image> links to kScreenHref and the
+  /// pixels (RGBA, without the robot) go with it: the page puts their PNG in that link's place.
+  void presentSvg();
+  static constexpr const char* kScreenHref = "rb:screen.png";
   /// Milliseconds each pixel or degree of robot motion takes (the page's speed).
   double stepMs_ = 0;
 
@@ -70,6 +75,8 @@ class WebHost : public Host {
   void checkLimits();
   /// After each visit to the page: a Stop, the speed and whether the page steps.
   void afterPage();
+  /// The screen's pixels as RGBA in rgba_; false when there is no whole screen.
+  bool toRgba(const Pixels& pixels);
 
   bool live_;
   std::vector<std::string> stdin_;
