@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "json_text.h"
 #include "robot_image.h"
 
 namespace rb::render {
@@ -648,54 +649,6 @@ std::vector<uint8_t> deflateBytes(const std::string& in) {
   return out;
 }
 
-/// A JSON string, safe inside <script>: '<' is escaped (no "</script>" can appear), and bytes
-/// that are not UTF-8 become U+FFFD.
-void jsonString(std::string& out, std::string_view s) {
-  out += '"';
-  for (size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c < 0x80) {
-      switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        case '<': out += "\\u003c"; break;
-        default:
-          if (c < 0x20 || c == 0x7f) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-          } else {
-            out += static_cast<char>(c);
-          }
-      }
-      ++i;
-      continue;
-    }
-    // A well-formed sequence is copied; anything else is one U+FFFD per byte.
-    const size_t len = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c < 0xE0 ? 2 : 0;
-    bool ok = len > 0 && i + len <= s.size();
-    for (size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) & 0xC0) == 0x80;
-    if (ok && len == 3) {
-      const auto c1 = static_cast<unsigned char>(s[i + 1]);
-      ok = !(c == 0xE0 && c1 < 0xA0) && !(c == 0xED && c1 >= 0xA0);  // overlong, surrogates
-    }
-    if (ok && len == 4) {
-      const auto c1 = static_cast<unsigned char>(s[i + 1]);
-      ok = !(c == 0xF0 && c1 < 0x90) && !(c == 0xF4 && c1 >= 0x90);
-    }
-    if (ok) {
-      out.append(s.substr(i, len));
-      i += len;
-    } else {
-      out += "\\ufffd";
-      ++i;
-    }
-  }
-  out += '"';
-}
 
 std::string jsonNumber(double v) {
   if (!std::isfinite(v)) return "null";
@@ -933,7 +886,7 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
       if (ev.kind == RecordedEvent::Input) {
         if (inputs.size() > 1) inputs += ',';
         inputs += "[" + std::to_string(ev.step) + ",";
-        jsonString(inputs, ev.what);
+        appendJsonString(inputs, ev.what);
         inputs += "]";
         continue;
       }
@@ -973,9 +926,9 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   p.raw(recording.output());
 
   std::string meta = "{\"name\":";
-  jsonString(meta, source.name);
+  appendJsonString(meta, source.name);
   meta += ",\"source\":";
-  jsonString(meta, source.text);
+  appendJsonString(meta, source.text);
   meta += ",\"file\":" + std::to_string(source.file);
   meta += ",\"width\":" + std::to_string(kW) + ",\"height\":" + std::to_string(kH);
   meta += ",\"scale\":" + std::to_string(std::clamp(options.scale, 1, kMaxScale));
@@ -992,7 +945,7 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   meta += "],\"sensorNames\":[";
   for (size_t i = 0; i < sensorNames.size(); ++i) {
     if (i) meta += ',';
-    jsonString(meta, sensorNames[i]);
+    appendJsonString(meta, sensorNames[i]);
   }
   meta += "],\"inputs\":" + inputs;
   meta += ",\"totalSteps\":" + std::to_string(recording.totalSteps());
@@ -1004,7 +957,7 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
     const Diagnostic& d = *recording.error();
     meta += "{\"file\":" + std::to_string(d.loc.file) + ",\"line\":" + std::to_string(d.loc.line) +
             ",\"col\":" + std::to_string(d.loc.col) + ",\"message\":";
-    jsonString(meta, d.message);
+    appendJsonString(meta, d.message);
     meta += "}";
   } else {
     meta += "null";

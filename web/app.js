@@ -196,7 +196,36 @@
     }
     return 0;
   }
-  const input = {held: 0, keyWaiters: [], mouse: [0, 0, 0], clicks: [], clickWaiters: []};
+  const input = {held: 0, keyWaiters: [], mouse: [0, 0, 0], clicks: [], clickWaiters: [], typed: []};
+  // The program's buttons and edit boxes as the run last showed them (WebHost::presentControls):
+  // drawn over the screen; while one of its edit boxes has the keyboard, keys go into it.
+  let controls = {buttons: [], edits: [], focus: ''};
+  function placeControls() {
+    const layer = $('controls');
+    const box = $('screenBox').getBoundingClientRect();
+    const r = canvas.getBoundingClientRect();
+    const scale = Math.min(r.width / 800, r.height / 600);
+    const x = r.left - box.left + (r.width - 800 * scale) / 2, y = r.top - box.top + (r.height - 600 * scale) / 2;
+    layer.style.transform = `translate(${x}px, ${y}px) scale(${scale})`;
+  }
+  function showControls(c) {
+    controls = c;
+    const layer = $('controls');
+    layer.textContent = '';
+    const add = (cls, item, text) => {
+      const d = document.createElement('div');
+      d.className = cls;
+      d.dataset.name = item.name;
+      Object.assign(d.style, {left: `${item.x}px`, top: `${item.y}px`, width: `${item.w}px`, height: `${item.h}px`});
+      d.textContent = text;
+      layer.appendChild(d);
+    };
+    // In the order added: the last added is on top, as a press finds it (core/input).
+    c.buttons.forEach((b) => add('rb-button', b, b.name));
+    c.edits.forEach((e) => add('rb-edit' + (e.name === c.focus ? ' focus' : ''), e, e.text));
+    placeControls();
+  }
+  new ResizeObserver(placeControls).observe(canvas);
   function keyDown(code) {
     if (!code) return;
     input.held = code;
@@ -207,7 +236,8 @@
     const code = keyCode(e);
     if (!code || e.ctrlKey || e.metaKey) return;
     e.preventDefault();
-    keyDown(code);
+    if (run && controls.focus) input.typed.push(code);  // into the program's edit box
+    else keyDown(code);
   });
   canvas.addEventListener('keyup', () => { input.held = 0; });
   canvas.addEventListener('blur', () => { input.held = 0; });
@@ -274,6 +304,8 @@
   }
   const io = {
     heldKey: () => input.held,
+    takeTyped: () => input.typed.shift() || 0,
+    controls: showControls,
     waitKey: () => (input.held ? Promise.resolve(input.held) : new Promise((r) => input.keyWaiters.push(r))),
     mouse: () => input.mouse,
     takeClick: () => input.clicks.shift() || null,
@@ -329,7 +361,9 @@
     editor.setErrorLine(0);
     clearScreen();
     input.clicks = [];
+    input.typed = [];
     input.held = 0;
+    showControls({buttons: [], edits: [], focus: ''});
     paused = false;
     stepMode = false;
     status.textContent = 'running';

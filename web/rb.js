@@ -146,6 +146,8 @@
     takeClick: () => null,
     waitClick: async () => [0, 0, 0],
     messageBox: async () => {},
+    takeTyped: () => 0,
+    controls: () => {},
   };
 
   // What rb.run's options may carry into a worker.

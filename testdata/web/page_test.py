@@ -279,6 +279,67 @@ def case_error_line(env):
     env.expect_quiet()
 
 
+def client_point(b, x, y):
+    """The page coordinates of screen pixel (x, y)'s centre on the scaled canvas."""
+    return b.js(f"(() => {{ const r = document.getElementById('screen').getBoundingClientRect(); "
+                f"const s = Math.min(r.width / 800, r.height / 600); "
+                f"return [r.left + (r.width - 800 * s) / 2 + {x + 0.5} * s, r.top + (r.height - 600 * s) / 2 + {y + 0.5} * s]; }})()")
+
+
+def click(b, x, y):
+    cx, cy = client_point(b, x, y)
+    for kind in ("mousePressed", "mouseReleased"):
+        b.call("Input.dispatchMouseEvent", {"type": kind, "x": cx, "y": cy, "button": "left", "clickCount": 1},
+               session=True)
+
+
+def wait_for(b, expression, what, timeout=20):
+    deadline = time.monotonic() + timeout
+    while True:
+        value = b.js(expression)
+        if value:
+            return value
+        expect(time.monotonic() < deadline, what)
+        time.sleep(0.05)
+
+
+def case_controls(env):
+    """The program's buttons and edit boxes show over the screen where the program put them; a
+    click on an edit box gives it the keys typed next (Backspace deletes, Enter gives the keyboard
+    back), a click on a button presses it: core/input's rules, as in the live terminal view."""
+    b = env.open()
+    prog = ('AddButton "Go", 100, 100\nAddEdit "Name", 100, 200, 120, "Bob"\n'
+            'repeat\n  GetButton b\nuntil b = "Go"\nprint "name=" + GetEdit("Name")\n')
+    b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
+    shown = ("[...document.querySelectorAll('#controls > div')].map((d) => [d.className, d.textContent, "
+             "(() => { const r = d.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()])")
+    wait_for(b, f"{shown}.length === 2", "the button and the edit box did not appear")
+    controls = b.js(shown)
+    expect([c[:2] for c in controls] == [["rb-button", "Go"], ["rb-edit", "Bob"]], f"the controls shown: {controls}")
+    # Where the program put them: the edit box from (100, 200), 120 wide, 24 high.
+    left, top = client_point(b, 100 - 0.5, 200 - 0.5)
+    right, bottom = client_point(b, 220 - 0.5, 224 - 0.5)
+    got = controls[1][2]
+    expect(all(abs(a - w) < 1.01 for a, w in zip(got, (left, top, right, bottom))),
+           f"the edit box is at {got}, not at {(left, top, right, bottom)}")
+    click(b, 150, 210)
+    wait_for(b, "document.querySelector('#controls .rb-edit.focus') !== null", "the edit box did not take the keyboard")
+    for key, code, text in (("Backspace", 8, ""), ("x", 88, "x"), ("y", 89, "y"), ("Enter", 13, "\r")):
+        down = {"type": "keyDown", "key": key, "windowsVirtualKeyCode": code}
+        if text:
+            down["text"] = text
+        b.call("Input.dispatchKeyEvent", down, session=True)
+        b.call("Input.dispatchKeyEvent", {"type": "keyUp", "key": key, "windowsVirtualKeyCode": code}, session=True)
+    wait_for(b, "(() => { const e = document.querySelector('#controls .rb-edit'); "
+                "return e.textContent === 'Boxy' && !e.classList.contains('focus'); })()",
+             f"the edit box shows {b.js(shown)}")
+    click(b, 110, 110)
+    b.js("window.__done.then(() => true)", timeout=20)
+    out = b.js("document.getElementById('output').textContent")
+    expect(out == "name=Boxy\n", f"the output was {out!r}")
+    env.expect_quiet()
+
+
 def case_svg(env):
     """After a run the SVG button downloads the screen as `rb render -o OUT.svg` writes it: the same
     bytes for shapes, text and the robot; where the SVG embeds the screen's pixels (a flood fill),
@@ -321,7 +382,7 @@ def case_svg(env):
 
 
 CASES = {"loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
-         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg}
+         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls}
 
 
 def main():

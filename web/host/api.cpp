@@ -18,10 +18,13 @@
 #include "machine/builtins.h"
 #include "machine/interpreter.h"
 #include "machine/machine.h"
+#include "json_text.h"
 #include "web_host.h"
 
 namespace rb::web {
 namespace {
+
+using render::appendJsonString;
 
 /// A program on the page is one file: an #include finds nothing.
 class NoFiles : public SourceReader {
@@ -32,39 +35,17 @@ class NoFiles : public SourceReader {
 
 const char* kProgramName = "program.bas";
 
-void jsonString(std::string& out, std::string_view s) {
-  out += '"';
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += static_cast<char>(c);
-        }
-    }
-  }
-  out += '"';
-}
-
 void jsonDiagnostic(std::string& out, const SourceSet& sources, const Diagnostic& d) {
   out += "{\"severity\":";
-  jsonString(out, d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "note");
+  appendJsonString(out, d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "note");
   out += ",\"line\":" + std::to_string(d.loc.line) + ",\"col\":" + std::to_string(d.loc.col);
   if (d.end.valid()) out += ",\"endLine\":" + std::to_string(d.end.line) + ",\"endCol\":" + std::to_string(d.end.col);
   out += ",\"message\":";
-  jsonString(out, d.message);
+  appendJsonString(out, d.message);
   out += ",\"code\":";
-  jsonString(out, d.code);
+  appendJsonString(out, d.code);
   out += ",\"text\":";
-  jsonString(out, formatDiagnostic(sources, d, DiagnosticStyle{}));
+  appendJsonString(out, formatDiagnostic(sources, d, DiagnosticStyle{}));
   out += '}';
 }
 
@@ -144,7 +125,7 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
       script.origin = "the --keys text";
     } catch (const ScriptError& e) {
       out += ",\"status\":\"usage\",\"error\":{\"message\":";
-      jsonString(out, std::string("--keys: ") + e.what());
+      appendJsonString(out, std::string("--keys: ") + e.what());
       return give(out + "}}");
     }
   }
@@ -167,7 +148,7 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
     case RunStatus::Stopped: status = "stopped"; break;
   }
   out += ",\"status\":";
-  jsonString(out, status);
+  appendJsonString(out, status);
   out += ",\"steps\":" + std::to_string(result.steps);
   out += ",\"rngUsed\":" + std::string(machine.rngUsed() ? "true" : "false");
   if (result.error && result.status != RunStatus::Stopped) {

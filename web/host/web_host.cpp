@@ -8,6 +8,7 @@
 
 #include "robot_image.h"
 #include "robot_view.h"
+#include "json_text.h"
 #include "svg_writer.h"
 
 // The page's side of each call: Module.rbHooks, set by web/rb.js for each run. The async ones
@@ -39,6 +40,8 @@ EM_ASYNC_JS(char*, rb_js_input_line, (const char* prompt), {
 });
 #endif
 EM_JS(int, rb_js_held_key, (), { return Module.rbHooks.heldKey(); });
+EM_JS(int, rb_js_take_typed, (), { return Module.rbHooks.takeTyped(); });
+EM_JS(void, rb_js_controls, (const char* json, int size), { Module.rbHooks.controls(JSON.parse(UTF8ToString(json, size))); });
 #ifndef RB_NO_ASYNC
 EM_ASYNC_JS(int, rb_js_wait_key, (), { return await Module.rbHooks.waitKey(); });
 #endif
@@ -156,6 +159,12 @@ void WebHost::afterPage() {
   if (!live_) return;
   stepMs_ = rb_js_step_ms();  // the page's speed may have changed
   stepping_ = rb_js_stepping() != 0;
+  // Keys typed while an edit box has the keyboard (the page sends them here, not to the
+  // program, while the controls it was last shown say so): into the box, by core/input's rules.
+  if (!machine_) return;
+  bool typed = false;
+  while (int key = rb_js_take_typed()) typed = rules_.typeInto(machine_->controls, key) || typed;
+  if (typed) presentControls();
 }
 
 void WebHost::onLine(SourceLoc loc) {
@@ -279,6 +288,40 @@ void WebHost::updateControls(Controls& controls, std::string_view who) {
   yieldToPage(false);
   int c[3];
   while (rb_js_take_click(c)) rules_.press(controls, c[0], c[1]);
+  presentControls();
+}
+
+void WebHost::presentControls() {
+  if (!machine_ || !live_) return;
+  const Controls& controls = machine_->controls;
+  std::string json = "{\"buttons\":[";
+  auto box = [&json](std::string_view name, int x, int y, int w, int h) {
+    json += "{\"name\":";
+    render::appendJsonString(json, name);
+    json += ",\"x\":" + std::to_string(x) + ",\"y\":" + std::to_string(y) + ",\"w\":" + std::to_string(w) +
+            ",\"h\":" + std::to_string(h);
+  };
+  for (size_t i = 0; i < controls.buttons.size(); ++i) {
+    const Button& b = controls.buttons[i];
+    if (i) json += ',';
+    box(b.name, b.x, b.y, b.width, b.height);
+    json += '}';
+  }
+  json += "],\"edits\":[";
+  for (size_t i = 0; i < controls.edits.size(); ++i) {
+    const EditBox& e = controls.edits[i];
+    if (i) json += ',';
+    box(e.name, e.x, e.y, e.width, e.height);
+    json += ",\"text\":";
+    render::appendJsonString(json, e.text);
+    json += '}';
+  }
+  json += "],\"focus\":";
+  render::appendJsonString(json, rules_.focusedEdit());
+  json += '}';
+  if (json == controlsJson_) return;
+  controlsJson_ = std::move(json);
+  rb_js_controls(controlsJson_.data(), static_cast<int>(controlsJson_.size()));
 }
 
 void WebHost::messageBox(std::string_view text, std::string_view title) {
@@ -308,6 +351,7 @@ bool WebHost::toRgba(const Pixels& pixels) {
 
 void WebHost::present() {
   if (!machine_) return;
+  presentControls();
   constexpr int w = Canvas::kWidth, h = Canvas::kHeight;
   if (!toRgba(machine_->shownScreen())) return;
   // The robot on top, as rb render's picture and the live terminal view draw it.

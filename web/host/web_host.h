@@ -65,6 +65,10 @@ class WebHost : public Host {
   /// pixels (RGBA, without the robot) go with it: the page puts their PNG in that link's place.
   void presentSvg();
   static constexpr const char* kScreenHref = "rb:screen.png";
+  /// Live runs: the program's buttons and edit boxes, and the edit box that has the keyboard,
+  /// as JSON for the page, which shows them over the screen (they are not in its pixels);
+  /// sent when they have changed.
+  void presentControls();
   /// Milliseconds each pixel or degree of robot motion takes (the page's speed).
   double stepMs_ = 0;
 
@@ -94,6 +98,7 @@ class WebHost : public Host {
   double sleepDebtMs_ = 0;  ///< live: waiting the run owes, slept once it is worth a timer
   WatchdogLimits limits_;
   RunAlarms* alarms_ = nullptr;
+  std::string controlsJson_;  ///< what the page was last shown of the controls
 };
 
 }  // namespace rb::web
