@@ -36,7 +36,4 @@ class SerialLink : public RobotLink {
   double timeoutSeconds_;
 };
 
-/// "2", "0.5": seconds as users wrote them, for messages.
-std::string secondsText(double seconds);
-
 }  // namespace rb::drivers
