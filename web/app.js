@@ -329,7 +329,91 @@
       cancelDialog = finish;
       d.showModal();
     }),
+    serialOpen: (n) => serial.open(n),
+    serialSend: (code, param) => serial.send(code, param),
+    serialTake: (want, ms, room) => serial.take(want, ms, room),
+    serialClose: () => serial.close(),
   };
+  // ---------------------------------------------------------------- a real robot: Web Serial
+  // `rCommPort n` (n > 0) asks the user for the robot's port in a dialog (a browser lets a page
+  // ask for a port only in answer to a click) and opens it at the baud rate of the limits menu;
+  // the core then sends each command's two bytes and reads the reply (WebSerialLink).
+  const serial = {
+    port: null, reader: null, bytes: [], gone: false, wake: null,
+    woken() { if (this.wake) { const w = this.wake; this.wake = null; w(); } },
+    choose(n) {
+      return new Promise((resolve) => {
+        const d = $('serialDialog');
+        $('serialPort').textContent = String(n);
+        const finish = (port) => { d.onclose = null; cancelDialog = null; if (d.open) d.close(); canvas.focus(); resolve(port); };
+        $('serialChoose').onclick = (e) => {
+          e.preventDefault();
+          navigator.serial.requestPort().then(finish, () => finish(null));
+        };
+        d.onclose = () => finish(null);
+        cancelDialog = () => finish(null);
+        d.showModal();
+      });
+    },
+    async open(n) {
+      if (!navigator.serial)
+        return {error: 'this browser has no Web Serial (Chrome and Edge have it); use the simulator (rCommPort 0)'};
+      this.close();
+      const port = await this.choose(n);
+      if (!port) return {error: 'no serial port was chosen'};
+      const baud = Number($('baud').value) || 9600;
+      try {
+        await port.open({baudRate: baud});
+      } catch (e) {
+        return {error: `cannot open the serial port: ${e.message}`};
+      }
+      Object.assign(this, {port, bytes: [], gone: false});
+      const reader = port.readable.getReader();
+      this.reader = reader;
+      (async () => {
+        try {
+          for (;;) {
+            const {value, done} = await reader.read();
+            if (done) break;
+            if (this.reader === reader) { for (const b of value) this.bytes.push(b); this.woken(); }
+          }
+        } catch (e) { /* the device went away */ }
+        if (this.reader === reader) { this.gone = true; this.woken(); }
+      })();
+      const info = port.getInfo ? port.getInfo() : {};
+      const hex = (v) => v.toString(16).padStart(4, '0');
+      const what = info.usbVendorId !== undefined ? ` (USB ${hex(info.usbVendorId)}:${hex(info.usbProductId || 0)})` : '';
+      return {name: `Web Serial port ${n}${what} at ${baud} baud`};
+    },
+    async send(code, param) {
+      if (!this.port || this.gone) return false;
+      this.bytes = [];  // stale bytes belong to no command
+      try {
+        const w = this.port.writable.getWriter();
+        try { await w.write(new Uint8Array([code, param])); } finally { w.releaseLock(); }
+        return true;
+      } catch (e) {
+        return false;
+      }
+    },
+    async take(want, ms, room) {
+      if (this.bytes.length < want && !this.gone && ms > 0 && run) {
+        await new Promise((r) => {
+          const t = setTimeout(() => { this.wake = null; r(); }, ms);
+          this.wake = () => { clearTimeout(t); r(); };
+        });
+      }
+      if (this.gone && !this.bytes.length) return null;
+      return new Uint8Array(this.bytes.splice(0, room));
+    },
+    close() {
+      const {port, reader} = this;
+      Object.assign(this, {port: null, reader: null, bytes: [], gone: false});
+      this.woken();
+      if (reader) reader.cancel().catch(() => {}).then(() => { reader.releaseLock(); return port.close(); }).catch(() => {});
+    },
+  };
+
   // The run's yields wait here while paused.
   function pauseGate(inner) {
     return async (ms) => {
@@ -420,6 +504,7 @@
     input.clickWaiters.splice(0).forEach((w) => w([0, 0, 0]));
     if (cancelInput) cancelInput();
     if (cancelDialog) cancelDialog();
+    serial.woken();
   }
   $('run').onclick = runProgram;
   $('stop').onclick = stopProgram;

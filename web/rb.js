@@ -148,6 +148,10 @@
     messageBox: async () => {},
     takeTyped: () => 0,
     controls: () => {},
+    serialOpen: async () => ({error: 'no serial port here'}),
+    serialSend: async () => false,
+    serialTake: async () => null,
+    serialClose: () => {},
   };
 
   // What rb.run's options may carry into a worker.

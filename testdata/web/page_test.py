@@ -17,11 +17,13 @@ import http.server
 import json
 import os
 import re
+import select
 import shutil
 import subprocess
 import sys
 import threading
 import time
+import tty
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "render"))
 from replay_browser import CANVAS_JS as REPLAY_CANVAS_JS  # noqa: E402
@@ -340,6 +342,120 @@ def case_controls(env):
     env.expect_quiet()
 
 
+FAKE_SERIAL_JS = """
+(() => {
+  let feed;
+  window.__robotOut = [];
+  window.__robotFeed = (a) => feed.enqueue(new Uint8Array(a));
+  const port = {
+    readable: new ReadableStream({start(c) { feed = c; }}),
+    writable: new WritableStream({write(chunk) { window.__robotOut.push(...chunk); }}),
+    open: async (o) => { window.__robotBaud = o.baudRate; },
+    close: async () => {},
+    getInfo: () => ({usbVendorId: 0x2341, usbProductId: 0x43}),
+  };
+  Object.defineProperty(navigator, 'serial', {configurable: true, value: {requestPort: async () => port}});
+  return true;
+})()
+"""
+
+
+class RobotEmulator:
+    """`rb robot --pty`, with this end of its pseudo-terminal open raw: a robot on a serial line."""
+
+    def __init__(self, rb, *options):
+        self.proc = subprocess.Popen([rb, "robot", "--pty", *options], stdout=subprocess.PIPE,
+                                     stderr=subprocess.DEVNULL)
+        ready, _, _ = select.select([self.proc.stdout], [], [], 10)
+        expect(ready, "rb robot printed no device")
+        self.device = self.proc.stdout.readline().decode().strip()
+        self.fd = None
+
+    def open(self):
+        self.fd = os.open(self.device, os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(self.fd)
+
+    def close(self):
+        if self.fd is not None:
+            os.close(self.fd)
+        self.proc.terminate()
+        self.proc.wait(5)
+
+
+def serial_run(env, text, *options, cancel=False, stop_after=None):
+    """Runs `text` on the page with a Web Serial port whose bytes go to and from `rb robot`: what
+    the page writes goes down the emulator's line, what it answers comes back, as on a cable."""
+    b = env.browser
+    robot = RobotEmulator(env.args.rb, *options)
+    try:
+        robot.open()
+        b.js(FAKE_SERIAL_JS)
+        b.js(f"rbPage.setSource({json.dumps(text)}); window.__done = rbPage.runProgram(); true")
+        wait_for(b, "document.getElementById('serialDialog').open", "the page did not ask for a serial port")
+        b.js(f"document.getElementById('{'serialDialog' if cancel else 'serialChoose'}')"
+             f".{'close' if cancel else 'click'}(); true")
+        start = time.monotonic()
+        deadline, stopped = start + 30, None
+        while not b.js("window.rbLastRun !== undefined && !rbPage.running"):
+            expect(time.monotonic() < deadline, "the run with a robot did not end")
+            if stop_after is not None and stopped is None and time.monotonic() - start > stop_after:
+                b.js("rbPage.stopProgram(); true")
+                stopped = time.monotonic()
+            out = b.js("window.__robotOut.splice(0)")
+            if out:
+                os.write(robot.fd, bytes(out))
+            ready, _, _ = select.select([robot.fd], [], [], 0.02)
+            if ready:
+                b.js(f"window.__robotFeed({list(os.read(robot.fd, 4096))}); true")
+        ended = time.monotonic()
+        r = b.js("({status: rbLastRun.status, error: rbLastRun.error, baud: window.__robotBaud, "
+                 "output: document.getElementById('output').textContent})")
+        r["stop_seconds"] = ended - stopped if stopped else None
+        return r
+    finally:
+        robot.close()
+
+
+def case_serial(env):
+    """rCommPort drives a real robot over Web Serial with rb run --real's protocol: the page asks
+    for the port, and a program driving `rb robot` prints what it prints under rb run --port;
+    a robot that stops answering is rb run's fault at the program's line; no port, a clear error."""
+    b = env.open()
+    b.js("window.rbLastRun = undefined; true")
+    prog = ('rCommPort 5\nrForward 20\nrTurn 90\nprint "compass "; rCompass()\n'
+            'print "feel "; rFeel(); " bumper "; rBumper()\nrCommPort 0\nprint "done"\n')
+    path = os.path.join(env.args.work, "serial.bas")
+    with open(path, "w") as f:
+        f.write(prog)
+    native = RobotEmulator(env.args.rb)
+    try:
+        r = subprocess.run([env.args.rb, "run", "--port", native.device, path], capture_output=True, text=True,
+                           timeout=60)
+    finally:
+        native.close()
+    expect(r.returncode == 0 and "\t90\n" in r.stdout, f"rb run --port: {r.returncode} {r.stdout} {r.stderr}")
+    got = serial_run(env, prog)
+    expect(got["status"] == "finished" and got["output"] == r.stdout,
+           f"on the page: {got}, under rb run --port: {r.stdout!r}")
+    expect(got["baud"] == 9600, f"the port was opened at {got['baud']} baud")
+    # A robot that answers every other command: the second is rb run's fault, at its line.
+    b.js("window.rbLastRun = undefined; true")
+    got = serial_run(env, "rCommPort 5\nrForward 5\nrForward 5\n", "--drop-every", "2")
+    err = got["error"] or ""
+    expect(got["status"] == "error" and "program.bas:3:" in err and
+           "robot on Web Serial port 5 (USB 2341:0043) at 9600 baud did not answer within 2 s" in err,
+           f"a dropped command gave {got}")
+    # Stop while the page waits for a robot that never answers: the run ends at once.
+    b.js("window.rbLastRun = undefined; true")
+    got = serial_run(env, "rCommPort 5\nrForward 5\n", "--drop-every", "1", stop_after=0.5)
+    expect(got["status"] == "stopped" and got["stop_seconds"] < 0.3, f"Stop while waiting for the robot: {got}")
+    b.js("window.rbLastRun = undefined; true")
+    got = serial_run(env, "rCommPort 5\nrForward 5\n", cancel=True)
+    expect(got["status"] == "error" and "program.bas:1:" in (got["error"] or "") and
+           "rCommPort 5: no serial port was chosen" in got["error"], f"no port chosen gave {got}")
+    env.expect_quiet()
+
+
 def case_svg(env):
     """After a run the SVG button downloads the screen as `rb render -o OUT.svg` writes it: the same
     bytes for shapes, text and the robot; where the SVG embeds the screen's pixels (a flood fill),
@@ -382,7 +498,7 @@ def case_svg(env):
 
 
 CASES = {"loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
-         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls}
+         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial}
 
 
 def main():

@@ -10,6 +10,9 @@
 #include "robot_view.h"
 #include "json_text.h"
 #include "svg_writer.h"
+#include "base/runtime_error.h"
+#include "robot/protocol.h"
+#include "robot/reply_check.h"
 
 // The page's side of each call: Module.rbHooks, set by web/rb.js for each run. The async ones
 // suspend the run (Asyncify) until the page answers; the page answers at once after a Stop.
@@ -38,6 +41,28 @@ EM_ASYNC_JS(char*, rb_js_input_line, (const char* prompt), {
   stringToUTF8(line, p, size);
   return p;
 });
+#endif
+#ifndef RB_NO_ASYNC
+// Web Serial (web/app.js). Open: the page asks the user for a port and opens it; the answer is
+// the port's name, or "!" and why not. Send: drops what waits unread, writes the command; 0 when
+// the port has gone. Take: waits up to `ms` for `want` bytes in all, then gives what came (at
+// most `room`); -1 when the port has gone.
+EM_ASYNC_JS(char*, rb_js_serial_open, (int port), {
+  const r = await Module.rbHooks.serialOpen(port);
+  const text = r.error ? '!' + r.error : r.name;
+  const size = lengthBytesUTF8(text) + 1;
+  const p = _malloc(size);
+  stringToUTF8(text, p, size);
+  return p;
+});
+EM_ASYNC_JS(int, rb_js_serial_send, (int code, int param), { return (await Module.rbHooks.serialSend(code, param)) ? 1 : 0; });
+EM_ASYNC_JS(int, rb_js_serial_take, (int want, double ms, uint8_t* out, int room), {
+  const bytes = await Module.rbHooks.serialTake(want, ms, room);
+  if (!bytes) return -1;
+  HEAPU8.set(bytes, out);
+  return bytes.length;
+});
+EM_JS(void, rb_js_serial_close, (), { Module.rbHooks.serialClose(); });
 #endif
 EM_JS(int, rb_js_held_key, (), { return Module.rbHooks.heldKey(); });
 EM_JS(int, rb_js_take_typed, (), { return Module.rbHooks.takeTyped(); });
@@ -379,6 +404,79 @@ void WebHost::presentSvg() {
   const bool havePixels = raster && toRgba(shown ? *shown : canvas.pixels());
   rb_js_svg(svg.data(), static_cast<int>(svg.size()), havePixels ? rgba_.data() : nullptr, Canvas::kWidth,
             Canvas::kHeight);
+}
+
+#ifndef RB_NO_ASYNC
+/// A robot on a Web Serial port: one command at a time, two bytes out and five back within the
+/// timeout, judged as the serial link judges them. It waits in pieces of at most 50 ms, so the
+/// page's Stop and the run's limits end a wait for a robot that does not answer.
+class WebSerialLink : public RobotLink {
+ public:
+  WebSerialLink(WebHost& host, std::string name, double timeoutSeconds)
+      : host_(host), name_(std::move(name)), timeoutSeconds_(timeoutSeconds) {}
+  ~WebSerialLink() override { rb_js_serial_close(); }
+
+  RobotReply transact(uint8_t code, uint8_t param) override {
+    if (broken_) throw RuntimeError("robot on " + name_ + " is disconnected after an earlier fault");
+    if (host_.stopRequested()) return {};
+    protocol::Exchange exchange;
+    const double deadline = host_.wallSeconds() * 1000 + timeoutSeconds_ * 1000;
+    if (!rb_js_serial_send(code, param)) exchange.end = protocol::Exchange::End::HungUp;
+    uint8_t room[protocol::kMaxReadReply];
+    while (exchange.end == protocol::Exchange::End::Complete) {
+      const bool full = exchange.bytes.size() >= static_cast<size_t>(protocol::kReplySize);
+      const double left = deadline - host_.wallSeconds() * 1000;
+      // Once a reply's worth is in, what came with it at once (a longer reply is a fault).
+      const int want = full ? 0 : protocol::kReplySize - static_cast<int>(exchange.bytes.size());
+      const int got = rb_js_serial_take(want, full ? 0 : std::clamp(left, 0.0, 50.0), room,
+                                        static_cast<int>(protocol::kMaxReadReply - exchange.bytes.size()));
+      if (got < 0) {
+        exchange.end = protocol::Exchange::End::HungUp;
+        break;
+      }
+      exchange.bytes.insert(exchange.bytes.end(), room, room + got);
+      if (full || exchange.bytes.size() >= protocol::kMaxReadReply) break;
+      if (exchange.bytes.size() >= static_cast<size_t>(protocol::kReplySize)) continue;
+      host_.afterPage();
+      host_.checkLimits();
+      if (whileWaiting_) whileWaiting_();  // the run's limits end the wait
+      if (host_.stopRequested()) return {};
+      if (host_.wallSeconds() * 1000 >= deadline) exchange.end = protocol::Exchange::End::TimedOut;
+    }
+    if (auto message = protocol::replyFault(exchange, name_, timeoutSeconds_)) {
+      broken_ = true;  // after a fault the byte stream can no longer be trusted
+      throw RuntimeError(*message);
+    }
+    return protocol::decodeExchange(exchange);
+  }
+  std::string name() const override { return name_; }
+  void setWhileWaiting(std::function<void()> hook) override { whileWaiting_ = std::move(hook); }
+
+ private:
+  WebHost& host_;
+  std::string name_;
+  double timeoutSeconds_;
+  bool broken_ = false;
+  std::function<void()> whileWaiting_;
+};
+#endif
+
+std::unique_ptr<RobotLink> WebHost::openRobot(int64_t port) {
+#ifdef RB_NO_ASYNC
+  (void)port;
+  throw RuntimeError("rCommPort " + std::to_string(port) +
+                     ": rb.run drives no real robot; run the program on the page to use a robot over Web Serial");
+#else
+  if (!live_) return Host::openRobot(port);
+  flushOutput();
+  present();
+  char* answer = rb_js_serial_open(static_cast<int>(port));
+  std::string text = answer ? answer : "!the page did not answer";
+  std::free(answer);
+  if (stopRequested()) throw RuntimeError("rCommPort " + std::to_string(port) + ": the run was stopped");
+  if (!text.empty() && text[0] == '!') throw RuntimeError("rCommPort " + std::to_string(port) + ": " + text.substr(1));
+  return std::make_unique<WebSerialLink>(*this, text, kRobotTimeoutSeconds);
+#endif
 }
 
 }  // namespace rb::web

@@ -52,6 +52,9 @@ class WebHost : public Host {
   MouseState waitClick(std::string_view who) override;
   void updateControls(Controls& controls, std::string_view who) override;
   void messageBox(std::string_view text, std::string_view title) override;
+  /// `rCommPort n` on the page: a real robot over Web Serial (the page asks the user for the
+  /// port), with the protocol and the messages of `rb run --real` (core/robot/reply_check.h).
+  std::unique_ptr<RobotLink> openRobot(int64_t port) override;
 
   /// The page's Stop: blocking calls return at once and the run ends at its next check.
   void stop() { requestStop(); }
@@ -65,6 +68,8 @@ class WebHost : public Host {
   /// pixels (RGBA, without the robot) go with it: the page puts their PNG in that link's place.
   void presentSvg();
   static constexpr const char* kScreenHref = "rb:screen.png";
+  /// How long a robot on Web Serial has for each reply: rb run's --robot-timeout default.
+  static constexpr double kRobotTimeoutSeconds = 2;
   /// Live runs: the program's buttons and edit boxes, and the edit box that has the keyboard,
   /// as JSON for the page, which shows them over the screen (they are not in its pixels);
   /// sent when they have changed.
@@ -79,6 +84,7 @@ class WebHost : public Host {
   void checkLimits();
   /// After each visit to the page: a Stop, the speed and whether the page steps.
   void afterPage();
+  friend class WebSerialLink;
   /// The screen's pixels as RGBA in rgba_; false when there is no whole screen.
   bool toRgba(const Pixels& pixels);
 
