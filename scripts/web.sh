@@ -106,4 +106,5 @@ NODE_PATH="$npmdir/node_modules" "$npmdir/node_modules/.bin/esbuild" web/editor.
 cp web/index.html web/style.css web/app.js web/rb.js web/rbworker.js "$site/"
 cp "$out/core/rbcore.js" "$out/core/rbcore.wasm" "$out/core/rbcore_fast.js" "$out/core/rbcore_fast.wasm" "$site/"
 node web/make_examples.js "$root" > "$site/examples.js"
+node web/make_sw.js "$site"  # last: it lists and hashes the site's files
 echo "web: site in build-web/site ($(du -sh "$site" | cut -f1); built in $(( $(date +%s) - start )) s)"

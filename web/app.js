@@ -534,6 +534,9 @@
   window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash,
     get source() { return editor.value; },
     get running() { return run !== null; }, ready: null};
+  // Offline once loaded: the service worker keeps the site's files (web/sw.js). Browsers run
+  // service workers on https:// and on localhost only.
+  if ('serviceWorker' in navigator && window.isSecureContext) navigator.serviceWorker.register('sw.js').catch(() => {});
   window.rbPage.ready = (async () => {
     clearScreen();
     const fromLink = await programFromHash().catch(() => null);

@@ -456,6 +456,25 @@ def case_serial(env):
     env.expect_quiet()
 
 
+def case_offline(env):
+    """Once loaded, the page works offline: with its server gone, the page loads again from the
+    browser's cache (its service worker) and runs programs, on the page and in rb.run's worker."""
+    b = env.open()
+    ready = b.js("Promise.race([navigator.serviceWorker.ready.then(() => true), "
+                 "new Promise((r) => setTimeout(() => r(false), 10000))])")
+    expect(ready, "no service worker took the page within 10 s")
+    wait_for(b, "caches.keys().then((k) => k.some((n) => n.startsWith('rb-site-')))", "the site was not cached")
+    env.server.shutdown()
+    env.server.server_close()
+    env.open()
+    expect(b.js("navigator.serviceWorker.controller !== null"), "the reloaded page is not the service worker's")
+    r = env.run_page('print "offline "; 6 * 7\n')
+    expect(r["status"] == "finished" and r["output"] == "offline \t42\n", f"offline, the run gave {r}")
+    got = b.js("rb.run('print 1 + 1\\n').then((r) => r.output)")
+    expect(got == "2\n", f"offline, rb.run gave {got!r}")
+    env.expect_quiet()
+
+
 def case_svg(env):
     """After a run the SVG button downloads the screen as `rb render -o OUT.svg` writes it: the same
     bytes for shapes, text and the robot; where the SVG embeds the screen's pixels (a flood fill),
@@ -498,7 +517,7 @@ def case_svg(env):
 
 
 CASES = {"loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
-         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial}
+         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial, "offline": case_offline}
 
 
 def main():
