@@ -3,7 +3,9 @@
 Chromium beside native rb, side by side in one run: bench/web.sh's table, with the page's
 `rb.run` (which runs in a Web Worker, on the rbcore_fast build) instead of node's. The wasm time
 is measured in the page (performance.now() around `await rb.run(...)`: compile, run, and the
-messages to and from the worker); native rb's is the wall time of `rb run --seed 1 FILE`.
+messages to and from the worker); native rb's is the wall time of `rb run --seed 1 FILE`. The
+"live" column is the page's own Run (`rb.start`: the Asyncify build on the page's thread, with
+the hook for Step, yielding to the browser every few milliseconds).
 Median of N runs each (default 5); the outputs must be equal.
 
 Usage: bench/web_browser.py [-n N] [--site DIR] [path/to/rb]   (scripts/web.sh builds the site)
@@ -28,7 +30,16 @@ RUN_JS = """
 (async () => {
   const t = performance.now();
   const r = await rb.run(%s, {seed: 1, png: false});
-  return {seconds: (performance.now() - t) / 1000, output: r.output, error: r.error && r.error.message};
+  return {seconds: (performance.now() - t) / 1000, output: r.output, error: r.error};
+})()
+"""
+# The page's own run (Run on the page): rb.start, live, on the page's thread with the Asyncify
+# build, yielding to the browser every few milliseconds.
+LIVE_JS = """
+(async () => {
+  const t = performance.now();
+  const r = await rb.start(%s, {seed: 1, png: false}).done;
+  return {seconds: (performance.now() - t) / 1000, output: r.output, error: r.error};
 })()
 """
 
@@ -48,12 +59,12 @@ def main():
     try:
         b = env.open()
         print(f"Chromium: {b.js('navigator.userAgent')}")
-        print("program         native s   wasm s   wasm/native")
+        print("program         native s   wasm s   wasm/native   live s   live/native")
         folder = os.path.join(HERE, "programs")
         for name in sorted(f for f in os.listdir(folder) if f.endswith(".bas")):
             path = os.path.join(folder, name)
             source = open(path, encoding="utf-8").read()
-            native, wasm = [], []
+            native, wasm, live = [], [], []
             native_out = wasm_out = ""
             for _ in range(a.n):
                 t = time.monotonic()
@@ -65,10 +76,14 @@ def main():
                     raise SystemExit(f"{name}: {r['error']}")
                 wasm.append(r["seconds"])
                 wasm_out = r["output"]
+                r = b.js(LIVE_JS % json.dumps(source), timeout=600)
+                if r["error"] or r["output"] != wasm_out:
+                    raise SystemExit(f"{name}: the live run gave {r['error'] or r['output'][:200]}")
+                live.append(r["seconds"])
             if native_out != wasm_out:
                 raise SystemExit(f"{name}: the page's output differs from rb run's")
-            n, w = statistics.median(native), statistics.median(wasm)
-            print(f"{name:15} {n:8.3f} {w:8.3f}   {w / n:6.2f}")
+            n, w, v = statistics.median(native), statistics.median(wasm), statistics.median(live)
+            print(f"{name:15} {n:8.3f} {w:8.3f}   {w / n:6.2f}     {v:8.3f}   {v / n:6.2f}")
     finally:
         env.close()
         shutil.rmtree(work, ignore_errors=True)

@@ -89,8 +89,12 @@ class Host {
   /// dropped. This is how a host ends a run from inside a blocking call (waitKey, input, a
   /// delay): it requests the stop and returns at once, with any answer.
   bool stopRequested() const { return stopRequested_; }
-  /// Called before each statement when the program was compiled for line tracing.
+  /// Called before each statement when the program was compiled for line tracing, while
+  /// wantsLines() is true.
   virtual void onLine(SourceLoc /*loc*/) {}
+  /// Whether onLine is called now. A host that needs the statements only at times (the web page:
+  /// while the user steps) turns it off meanwhile, and each statement costs a test, not a call.
+  bool wantsLines() const { return wantsLines_; }
   /// Called after each pixel or degree the robot moves, so a live view can animate it.
   virtual void animate() {}
   /// Milliseconds each pixel or degree of robot motion takes besides rSpeed's: 0 for a run that
@@ -140,9 +144,12 @@ class Host {
  protected:
   /// Ends the run (see stopRequested); from now on blocking calls should return at once.
   void requestStop() { stopRequested_ = true; }
+  /// See wantsLines().
+  void setWantsLines(bool on) { wantsLines_ = on; }
 
   SystemAccess* system_ = nullptr;
   bool stopRequested_ = false;
+  bool wantsLines_ = true;
 
   static RuntimeError noInput(std::string_view who, std::string_view what) {
     return RuntimeError(std::string(who) + ": cannot wait for " + std::string(what) +

@@ -1311,8 +1311,10 @@ void Interpreter::execute(uint32_t& pcOut) {
       NEXT;
     }
     CASE(Line) {
-      m_.host().onLine(prog_.locs[PC()]);
-      STOP_IF_ASKED();
+      if (m_.host().wantsLines()) {
+        m_.host().onLine(prog_.locs[PC()]);
+        STOP_IF_ASKED();
+      }
       ++ip;
       NEXT;
     }

@@ -128,6 +128,8 @@ WebHost::WebHost(bool live, std::vector<std::string> stdinLines, InputScript scr
 void WebHost::attachMachine(Machine& machine) {
   machine_ = &machine;
   if (live_) stepMs_ = rb_js_step_ms();
+  if (live_) stepping_ = rb_js_stepping() != 0;
+  setWantsLines(stepping_);
   script_.useControls(&machine.controls);
 }
 
@@ -184,6 +186,7 @@ void WebHost::afterPage() {
   if (!live_) return;
   stepMs_ = rb_js_step_ms();  // the page's speed may have changed
   stepping_ = rb_js_stepping() != 0;
+  setWantsLines(stepping_);  // a statement costs a call into the host only while stepping
   // Keys typed while an edit box has the keyboard (the page sends them here, not to the
   // program, while the controls it was last shown say so): into the box, by core/input's rules.
   if (!machine_) return;
@@ -378,9 +381,15 @@ void WebHost::present() {
   if (!machine_) return;
   presentControls();
   constexpr int w = Canvas::kWidth, h = Canvas::kHeight;
+  // The same screen and robot as the frame before: nothing to send (a long computation draws
+  // nothing, and converting the screen costs 2 ms).
+  const render::RobotView view = render::robotView(*machine_);
+  const Shown now{machine_->canvas().version(), machine_->flips, machine_->showsFlip(), view.visible,
+                  view.x, view.y, view.heading, view.radius, view.colour};
+  if (now == lastShown_) return;
+  lastShown_ = now;
   if (!toRgba(machine_->shownScreen())) return;
   // The robot on top, as rb render's picture and the live terminal view draw it.
-  const render::RobotView view = render::robotView(*machine_);
   const render::RobotImage shape(view);
   const uint32_t robotRgb = colourToRgb(view.colour);
   if (!shape.empty())

@@ -105,6 +105,15 @@ class WebHost : public Host {
   WatchdogLimits limits_;
   RunAlarms* alarms_ = nullptr;
   std::string controlsJson_;  ///< what the page was last shown of the controls
+  /// What the last frame showed: the screen's version and flips, the robot.
+  struct Shown {
+    uint64_t canvasVersion = 0, flips = 0;
+    bool flip = false, robotVisible = false;
+    double x = 0, y = 0, heading = 0, radius = 0;
+    Colour colour = 0;
+    bool operator==(const Shown&) const = default;
+  };
+  std::optional<Shown> lastShown_;
 };
 
 }  // namespace rb::web
