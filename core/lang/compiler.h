@@ -23,6 +23,10 @@ struct CompileOptions {
   /// Finish kept code (compiler_finish.cpp: by-reference outputs are not copied in, jumps to a
   /// return become the return). Off only in tests that compare the finished code with the plain.
   bool finish = true;
+  /// Finish line-traced code too. A stepper that shows no variables (the web page's Step) may:
+  /// the run is about twice as fast. Off for the live view and rb trace, which show every
+  /// variable as the program wrote it (an output parameter's copy-in among them).
+  bool finishTraced = false;
   /// Called with every statement of the program, in order, as the compiler reads it (with its
   /// index), so that other checks can walk the program in the same pass (see Linter).
   std::function<void(const ast::Stmt&, size_t)> onStatement;

@@ -111,7 +111,7 @@ bool fallsThrough(Op op) { return op != Op::Jump && op != Op::Return && op != Op
 }  // namespace
 
 void Compiler::finishCode() {
-  if (options_.lineTracing) return;
+  if (options_.lineTracing && !options_.finishTraced) return;
   p_.finished = true;
   for (SubInfo& s : p_.subs) s.outputsFrom = outputsFrom(s);
   std::vector<bool> dead(p_.code.size(), false);

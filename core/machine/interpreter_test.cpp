@@ -256,6 +256,14 @@ TEST_CASE("finished code runs as the plain code does: output, errors and every s
     CHECK(finished.diagnostics == plain.diagnostics);
     CHECK(finished.result.status == plain.result.status);
     CHECK(finished.result.steps == plain.result.steps);
+    // Finished with a Line instruction before each statement (the web page's runs): the same.
+    CompileOptions tracedFinished;
+    tracedFinished.lineTracing = tracedFinished.finishTraced = true;
+    auto traced = runProgram(text, {}, {}, {}, tracedFinished);
+    CHECK(traced.out == plain.out);
+    CHECK(traced.diagnostics == plain.diagnostics);
+    CHECK(traced.result.status == plain.result.status);
+    CHECK(traced.result.steps == plain.result.steps);
     // Stopped after every number of steps, both stop at the same statement with the same output.
     for (uint64_t limit = 1; limit < plain.result.steps; ++limit) {
       RunLimits limits;
@@ -265,8 +273,30 @@ TEST_CASE("finished code runs as the plain code does: output, errors and every s
       CHECK(a.out == b.out);
       CHECK(a.diagnostics == b.diagnostics);
       CHECK(a.result.steps == b.result.steps);
+      auto c = runProgram(text, {}, {}, limits, tracedFinished);
+      CHECK(c.out == b.out);
+      CHECK(c.diagnostics == b.diagnostics);
+      CHECK(c.result.steps == b.result.steps);
     }
   }
+}
+
+TEST_CASE("line-traced code is finished only when asked (the web page's Step)", "[interpreter]") {
+  const std::string text = "call Two(x, y)\nend\nsub Two(&a, &b)\n  a = 1\n  b = 2\nreturn\n";
+  auto compileWith = [&](bool finishTraced) {
+    DiagnosticList diags;
+    rb::test::MemoryReader reader;
+    auto loaded = loadProgram("test.bas", text, reader, standardBuiltins(), {}, diags);
+    CompileOptions options;
+    options.lineTracing = true;
+    options.finishTraced = finishTraced;
+    return compileProgram(*loaded, options, diags);
+  };
+  auto plain = compileWith(false), finished = compileWith(true);
+  REQUIRE((plain && finished));
+  CHECK_FALSE(plain->finished);  // the live view shows the copies in
+  CHECK(finished->finished);
+  CHECK(finished->code.size() == plain->code.size() - 2);
 }
 
 TEST_CASE("by-reference parameters set before every read and return are not copied in", "[interpreter]") {

@@ -69,6 +69,7 @@ std::unique_ptr<Loaded> load(const char* source, bool lint, bool keepCode, bool 
   CompileOptions compile;
   compile.keepCode = keepCode;
   compile.lineTracing = lineTracing;  // the page's runs: the host hears each statement (Step)
+  compile.finishTraced = true;        // Step shows the line, not the variables
   out->compiled = compileChecked(*out->program, compile, lint, out->diags);
   return out;
 }
