@@ -13,18 +13,12 @@ Usage: bench/web_browser.py [-n N] [--site DIR] [path/to/rb]   (scripts/web.sh b
 import argparse
 import json
 import os
-import shutil
 import statistics
 import subprocess
 import sys
-import tempfile
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "testdata", "web"))
-sys.path.insert(0, os.path.join(HERE, "..", "testdata", "render"))
-from page_test import Env  # noqa: E402
-from replay_browser import find_chromium  # noqa: E402
+from web_page import HERE, RB, SITE, open_page
 
 RUN_JS = """
 (async () => {
@@ -47,17 +41,10 @@ LIVE_JS = """
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("-n", type=int, default=5, help="runs of each program on each side")
-    ap.add_argument("--site", default=os.environ.get("RB_WEB_SITE", os.path.join(HERE, "..", "build-web", "site")))
-    ap.add_argument("rb", nargs="?", default=os.path.join(HERE, "..", "build", "cmd", "rb"))
+    ap.add_argument("--site", default=os.environ.get("RB_WEB_SITE", SITE))
+    ap.add_argument("rb", nargs="?", default=RB)
     a = ap.parse_args()
-    chromium = find_chromium()
-    if not os.path.exists(os.path.join(a.site, "index.html")) or not chromium:
-        print("needs the site (scripts/web.sh) and Chromium", file=sys.stderr)
-        return 66
-    work = tempfile.mkdtemp()
-    env = Env(argparse.Namespace(site=a.site, work=work, rb=a.rb, source=os.path.join(HERE, "..")), chromium)
-    try:
-        b = env.open()
+    with open_page(a.site, a.rb) as b:
         print(f"Chromium: {b.js('navigator.userAgent')}")
         print("program         native s   wasm s   wasm/native   live s   live/native")
         folder = os.path.join(HERE, "programs")
@@ -84,9 +71,6 @@ def main():
                 raise SystemExit(f"{name}: the page's output differs from rb run's")
             n, w, v = statistics.median(native), statistics.median(wasm), statistics.median(live)
             print(f"{name:15} {n:8.3f} {w:8.3f}   {w / n:6.2f}     {v:8.3f}   {v / n:6.2f}")
-    finally:
-        env.close()
-        shutil.rmtree(work, ignore_errors=True)
     return 0
 
 

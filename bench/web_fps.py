@@ -8,17 +8,10 @@ stays responsive) and the screen's updates (putImageData on the canvas: what the
 Usage: bench/web_fps.py [--seconds N] [--speed S]   (scripts/web.sh builds the site first)
 """
 import argparse
-import os
-import shutil
 import sys
-import tempfile
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "testdata", "web"))
-sys.path.insert(0, os.path.join(HERE, "..", "testdata", "render"))
-from page_test import Env  # noqa: E402
-from replay_browser import find_chromium  # noqa: E402
+from web_page import open_page
 
 ROAM = """rectangle 100, 100, 200, 500
 rectangle 600, 100, 700, 500
@@ -50,16 +43,7 @@ def main():
     ap.add_argument("--seconds", type=float, default=5)
     ap.add_argument("--speed", help="the page's speed field (default: as the page starts)")
     a = ap.parse_args()
-    site = os.path.join(HERE, "..", "build-web", "site")
-    chromium = find_chromium()
-    if not os.path.exists(os.path.join(site, "index.html")) or not chromium:
-        print("needs build-web/site (scripts/web.sh) and Chromium", file=sys.stderr)
-        return 66
-    work = tempfile.mkdtemp()
-    args = argparse.Namespace(site=site, work=work, rb=None, source=os.path.join(HERE, ".."))
-    env = Env(args, chromium)
-    try:
-        b = env.open()
+    with open_page() as b:
         b.js(COUNT_JS)
         if a.speed is not None:
             b.js(f"document.getElementById('speed').value = {a.speed!r}; "
@@ -76,9 +60,6 @@ def main():
                    "error: rbLastRun.error}))", timeout=10)
         print(f"{t:.1f} s of roaming: {(f1 - f0) / t:.1f} animation frames/s, {(d1 - d0) / t:.1f} screen updates/s; "
               f"the run: {end}")
-    finally:
-        env.close()
-        shutil.rmtree(work, ignore_errors=True)
     return 0
 
 
