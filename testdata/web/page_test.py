@@ -445,10 +445,11 @@ def case_serial(env):
     expect(got["status"] == "error" and "program.bas:3:" in err and
            "robot on Web Serial port 5 (USB 2341:0043) at 9600 baud did not answer within 2 s" in err,
            f"a dropped command gave {got}")
-    # Stop while the page waits for a robot that never answers: the run ends at once.
+    # Stop while the page waits for a robot that never answers: the run ends as stopped, long
+    # before the 2 s a reply may take (the stop test times Stop itself; this one's loop polls).
     b.js("window.rbLastRun = undefined; true")
     got = serial_run(env, "rCommPort 5\nrForward 5\n", "--drop-every", "1", stop_after=0.5)
-    expect(got["status"] == "stopped" and got["stop_seconds"] < 0.3, f"Stop while waiting for the robot: {got}")
+    expect(got["status"] == "stopped" and got["stop_seconds"] < 1.0, f"Stop while waiting for the robot: {got}")
     b.js("window.rbLastRun = undefined; true")
     got = serial_run(env, "rCommPort 5\nrForward 5\n", cancel=True)
     expect(got["status"] == "error" and "program.bas:1:" in (got["error"] or "") and
