@@ -313,7 +313,7 @@ std::string base64Encode(const std::vector<uint8_t>& bytes) {
 }
 
 std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
-                      const Pixels* shown, RasterHref href) {
+                      const Pixels* shown, const RasterHref& href) {
   scale = std::clamp(scale, 1, kMaxScale);
   std::string out;
   put(out, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n",

@@ -5,6 +5,7 @@
 // pixels as an embedded PNG instead. The robot goes on top either way.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,8 @@ namespace rb::render {
 bool needsRaster(const std::vector<DrawOp>& ops);
 
 /// The link an embedded raster's <image> gets for the 800 x 600 screen `pixels` (without the
-/// robot).
-using RasterHref = std::string (*)(const Pixels& pixels);
+/// robot). Called only when the SVG embeds them.
+using RasterHref = std::function<std::string(const Pixels& pixels)>;
 
 /// The pixels as a PNG (encodePng, with libpng) in a data: URL: what rb render embeds.
 std::string pngDataHref(const Pixels& pixels);
@@ -31,7 +32,7 @@ std::string pngDataHref(const Pixels& pixels);
 /// flip), embedded as pixels. `href` makes the link of embedded pixels (the browser's host
 /// encodes its PNG in the page, after the run).
 std::string renderSvg(const Canvas& canvas, const RobotView& robot, int scale,
-                      const Pixels* shown = nullptr, RasterHref href = pngDataHref);
+                      const Pixels* shown = nullptr, const RasterHref& href = pngDataHref);
 
 /// Standard base64 with padding (RFC 4648), for data: URLs.
 std::string base64Encode(const std::vector<uint8_t>& bytes);

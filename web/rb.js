@@ -160,32 +160,44 @@
             maxMemory: options.maxMemory, keys: options.keys || '', svg: !!options.svg};
   }
 
-  // A headless run on rbcore_fast (in the worker, or under node): {result, output, frame, svg}.
-  function runHeadless(M, source, options) {
-    let output = '';
-    let frame = null;
-    let svg = null;
-    M.rbHooks = Object.assign({}, noInput, {
-      output: (text) => { output += text; },
-      svg: (text, rgba, width, height) => { svg = {text, rgba, width, height}; },
-      stopped: () => false,
-      stepMs: () => 0,
-      stepping: () => false,
+  // What a run hands the page through its hooks: the output, the last frame, the final SVG.
+  function collector(M, onOutput, onFrame) {
+    const got = {output: '', frame: null, svg: null};
+    got.hooks = {
+      output: (text) => { got.output += text; if (onOutput) onOutput(text); },
       frame: (p, w, h) => {
-        frame = {rgba: new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4)), width: w, height: h};
+        got.frame = {rgba: new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4)), width: w, height: h};
+        if (onFrame) onFrame(got.frame);
       },
-    });
+      svg: (text, rgba, width, height) => { got.svg = {text, rgba, width, height}; },
+    };
+    return got;
+  }
+
+  // rb_run's arguments for a run of `source` (api.cpp): the strings are copied into the core
+  // and free() releases them.
+  const RUN_TYPES = Array(9).fill('number');
+  function runArgs(M, source, options, live) {
     const stdin = (options.stdin || []).map((l) => String(l) + '\n').join('');
     const seed = options.seed !== undefined ? Number(options.seed) : Math.floor(Math.random() * 2 ** 32);
-    const args = [cString(M, source), cString(M, stdin), cString(M, options.keys || '')];
+    const strings = [cString(M, source), cString(M, stdin), cString(M, options.keys || '')];
+    return {
+      values: [...strings, seed, options.maxSteps || 0, options.timeout || 0,
+               options.maxMemory !== undefined ? options.maxMemory : 1024, live ? 1 : 0, options.svg ? 1 : 0],
+      free: () => strings.forEach((p) => M._free(p)),
+    };
+  }
+
+  // A headless run on rbcore_fast (in the worker, or under node): {result, output, frame, svg}.
+  function runHeadless(M, source, options) {
+    const got = collector(M);
+    M.rbHooks = Object.assign({}, noInput, got.hooks, {stopped: () => false, stepMs: () => 0, stepping: () => false});
+    const args = runArgs(M, source, options, false);
     try {
-      const p = M.ccall('rb_run', 'number',
-        ['number', 'number', 'number', 'number', 'number', 'number', 'number', 'number', 'number'],
-        [...args, seed, options.maxSteps || 0, options.timeout || 0,
-         options.maxMemory !== undefined ? options.maxMemory : 1024, 0, options.svg ? 1 : 0]);
-      return {result: JSON.parse(takeString(M, p)), output, frame, svg};
+      const result = JSON.parse(takeString(M, M.ccall('rb_run', 'number', RUN_TYPES, args.values)));
+      return {result, output: got.output, frame: got.frame, svg: got.svg};
     } finally {
-      args.forEach((a) => M._free(a));
+      args.free();
     }
   }
 
@@ -199,8 +211,9 @@
   }
 
   // The result as rb.run and rb.start give it: the output, the error's text and line, the
-  // final frame and its PNG, and the SVG when asked for.
-  async function finish(result, output, frame, options, svg) {
+  // final frame and its PNG, and the SVG when asked for (`got`: what the run's hooks collected).
+  async function finish(result, got, options) {
+    const {output, frame, svg} = got;
     const errors = (result.diagnostics || []).filter((d) => d.severity === 'error');
     let error = null;
     if (result.error) error = result.error.text || result.error.message;
@@ -249,13 +262,9 @@
     const job = queue.then(async () => {
       const M = await core();
       current = {stop: () => { state.stopped = true; [...state.wake].forEach((w) => w()); }};
-      let output = '';
-      let frame = null;
-      let svg = null;
+      const got = collector(M, options.onOutput, options.onFrame);
       const io = Object.assign({}, noInput, options.io || {});
-      M.rbHooks = Object.assign({}, io, {
-        svg: (text, rgba, width, height) => { svg = {text, rgba, width, height}; },
-        output: (text) => { output += text; if (options.onOutput) options.onOutput(text); },
+      M.rbHooks = Object.assign({}, io, got.hooks, {
         stopped: () => state.stopped,
         stepMs: () => (options.stepMs ? options.stepMs() : 0),
         // Stepping (live runs, compiled with a hook before each statement): the host asks
@@ -263,10 +272,6 @@
         // atLine(line) before each statement of the program's file.
         stepping: () => (options.stepping ? options.stepping() : false),
         atLine: (line) => (options.atLine ? options.atLine(line) : Promise.resolve()),
-        frame: (p, w, h) => {
-          frame = {rgba: new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4)), width: w, height: h};
-          if (options.onFrame) options.onFrame(frame);
-        },
         // A sleep ends early when the run is stopped.
         yield: (options.wrapYield || ((f) => f))((ms) => (ms > 0 ? new Promise((r) => {
           const done = () => { clearTimeout(timer); state.wake.delete(done); r(); };
@@ -274,22 +279,15 @@
           state.wake.add(done);
         }) : fastYield())),
       });
-      const stdin = (options.stdin || []).map((l) => String(l) + '\n').join('');
-      const seed = options.seed !== undefined ? Number(options.seed) : Math.floor(Math.random() * 2 ** 32);
-      const args = [cString(M, source), cString(M, stdin), cString(M, options.keys || '')];
+      const args = runArgs(M, source, options, live);
       let result;
       try {
-        const p = await M.ccall('rb_run', 'number',
-          ['number', 'number', 'number', 'number', 'number', 'number', 'number', 'number', 'number'],
-          [...args, seed, options.maxSteps || 0, options.timeout || 0,
-           options.maxMemory !== undefined ? options.maxMemory : 1024, live ? 1 : 0, options.svg ? 1 : 0],
-          {async: true});
-        result = JSON.parse(takeString(M, p));
+        result = JSON.parse(takeString(M, await M.ccall('rb_run', 'number', RUN_TYPES, args.values, {async: true})));
       } finally {
-        args.forEach((a) => M._free(a));
+        args.free();
         current = null;
       }
-      return finish(result, output, frame, options, svg);
+      return finish(result, got, options);
     });
     queue = job.catch(() => {});
     const stop = () => { state.stopped = true; [...state.wake].forEach((w) => w()); };
@@ -312,7 +310,7 @@
     run(source, options = {}) {
       const job = queue.then(async () => {
         const raw = isNode ? runHeadless(await fastCore(), source, options) : await workerRun(source, options);
-        return finish(raw.result, raw.output, raw.frame, options, raw.svg);
+        return finish(raw.result, raw, options);
       });
       queue = job.catch(() => {});
       return job;

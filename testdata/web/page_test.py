@@ -140,10 +140,7 @@ def case_input_keys(env):
     b = env.open()
     b.js("rbPage.setSource('input \"name?\", n\\nprint \"hello \" + n\\nwaitKey k\\nprint \"key \" + k\\n'); "
          "window.__done = rbPage.runProgram(); true")
-    deadline = time.monotonic() + 20
-    while b.js("document.getElementById('inputForm').hidden"):
-        expect(time.monotonic() < deadline, "no input line appeared")
-        time.sleep(0.05)
+    wait_for(b, "!document.getElementById('inputForm').hidden", "no input line appeared")
     b.js("document.getElementById('inputLine').value = 'Ada'; "
          "document.getElementById('inputForm').requestSubmit(); true")
     time.sleep(0.3)
@@ -158,19 +155,11 @@ def case_input_keys(env):
     # A message box is a page dialog; a click on the screen reaches waitClick at its pixel.
     prog = 'MsgBox "hello", "Title"\nprint "after"\nwaitClick x, y, b\nprint x; ","; y; ","; b\n'
     b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
-    deadline = time.monotonic() + 20
-    while not b.js("document.getElementById('msgbox').open"):
-        expect(time.monotonic() < deadline, "no message box appeared")
-        time.sleep(0.05)
+    wait_for(b, "document.getElementById('msgbox').open", "no message box appeared")
     expect(b.js("document.getElementById('msgText').textContent") == "hello", "the message box's text")
     b.js("document.getElementById('msgOk').click(); true")
     time.sleep(0.3)
-    x, y = b.js("(() => { const r = document.getElementById('screen').getBoundingClientRect(); "
-                "const s = Math.min(r.width / 800, r.height / 600); "
-                "return [r.left + (r.width - 800 * s) / 2 + 200.5 * s, r.top + (r.height - 600 * s) / 2 + 100.5 * s]; })()")
-    for kind in ("mousePressed", "mouseReleased"):
-        b.call("Input.dispatchMouseEvent", {"type": kind, "x": x, "y": y, "button": "left", "clickCount": 1},
-               session=True)
+    click(b, 200, 100)
     b.js("window.__done.then(() => true)", timeout=20)
     out = b.js("document.getElementById('output').textContent")
     expect(out == "after\n200\t,\t100\t,\t1\n", f"after the message box and the click the output was {out!r}")

@@ -403,14 +403,15 @@ void WebHost::present() {
 
 void WebHost::presentSvg() {
   if (!machine_) return;
-  const Canvas& canvas = machine_->canvas();
-  const Pixels* shown = machine_->showsFlip() ? &machine_->shownScreen() : nullptr;
-  // The embedded pixels' PNG is made on the page (rb.js), with the browser's deflate: here the
-  // SVG names them kScreenHref.
-  const std::string svg = render::renderSvg(canvas, render::robotView(*machine_), 1, shown,
-                                            [](const Pixels&) { return std::string(kScreenHref); });
-  const bool raster = shown || render::needsRaster(canvas.displayList());
-  const bool havePixels = raster && toRgba(shown ? *shown : canvas.pixels());
+  // The embedded pixels' PNG, when the SVG embeds them, is made on the page (rb.js) with the
+  // browser's deflate: here the SVG names them kScreenHref.
+  bool havePixels = false;
+  const std::string svg = render::renderSvg(
+      machine_->canvas(), render::robotView(*machine_), 1, machine_->showsFlip() ? &machine_->shownScreen() : nullptr,
+      [&](const Pixels& pixels) {
+        havePixels = toRgba(pixels);
+        return std::string(kScreenHref);
+      });
   rb_js_svg(svg.data(), static_cast<int>(svg.size()), havePixels ? rgba_.data() : nullptr, Canvas::kWidth,
             Canvas::kHeight);
 }
