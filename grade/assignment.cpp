@@ -645,9 +645,15 @@ std::string unreadableText(const std::string& text, toml::source_region& where) 
       ++i;
       continue;
     }
+    // A quote opens a string only where TOML lets one begin: first on a line, or after a blank,
+    // '=', '[', '{', ',' or '.'. Right after a bare word (0%1\"\"\") it is part of that word,
+    // which toml++ reads character by character.
+    const unsigned char before = i > 0 ? static_cast<unsigned char>(text[i - 1]) : '\n';
+    const bool stringMayBegin = std::strchr(" \t\r\n=[{,.", before) != nullptr;
     switch (state) {
       case Plain:
         if (c == '#') state = Comment;
+        else if (!stringMayBegin) break;
         else if (starts("\"\"\"")) state = MultiBasic, len = 3;
         else if (starts("'''")) state = MultiLiteral, len = 3;
         else if (c == '"') state = Basic;

@@ -153,6 +153,12 @@ TEST_CASE("text toml++ cannot read safely is refused with its place", "[grade][a
   // Not ASCII outside a string or comment (toml++ 3.3 classifies it with undefined code).
   CHECK_FALSE(load("x = 0%11\xCF\x91\n", error));
   CHECK(error.find(":1:9: a character that is not ASCII outside a string or comment") != std::string::npos);
+  // Quotes inside a bare word open no string: toml++ reads on through the word (found by
+  // rb_fuzz_grade).
+  CHECK_FALSE(load("x = 0%1\"\"\"1\xCF\x91" "c\n", error));
+  CHECK(error.find(":1:12: a character that is not ASCII outside a string or comment") != std::string::npos);
+  CHECK_FALSE(load("x = a'b\xC3\xA9'\n", error));
+  CHECK(error.find(":1:8: a character that is not ASCII") != std::string::npos);
   // First after a multi-line string's line-ending backslash, even after blanks.
   CHECK_FALSE(load("title = \"\"\"\\\n   \xC2\xA7\"\"\"\n", error));
   CHECK(error.find(":2:4: a character that is not ASCII first after a line-ending backslash") != std::string::npos);
