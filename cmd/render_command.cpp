@@ -176,6 +176,7 @@ int executeRender(const RenderOptions& opts) {
   }
 
   HeadlessRun run;
+  run.outputs = {opts.output, opts.animate};
   // For a picture, stopping after N steps is a way to choose the moment, not a failure.
   run.stepLimitIsError = false;
   run.keepDisplayList = picture && format == Format::Svg;

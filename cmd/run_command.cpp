@@ -112,6 +112,9 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
       ->type_name("DIR");
   app.add_flag("--allow-spawn", opts.allowSpawn,
                "Let the program run other programs with Spawn (refused by default)");
+  app.add_flag("--require-sandbox", opts.requireSandbox,
+               "Refuse to run when the kernel cannot confine the program (no Landlock or seccomp: "
+               "rb's own checks would be the only line)");
 }
 
 namespace {

@@ -10,6 +10,8 @@
 #include <string>
 
 #include "exit_codes.h"
+#include "files.h"
+#include "kernel_confine.h"
 #include "program_loader.h"
 #include "grader.h"
 #include "html_report.h"
@@ -39,6 +41,7 @@ struct TestOptions {
   bool similarity = false;
   std::vector<std::string> similarityIgnore;
   bool quiet = false;
+  bool requireSandbox = false;
 };
 
 /// A teacher's program (world, post) as rb check sees it: its first error, or "".
@@ -55,6 +58,22 @@ std::string firstError(const std::string& file) {
   return file + ": does not compile";
 }
 
+/// The files a program #includes from its own folder tree, as rb run would load them: rb test
+/// copies them beside the program into its scratch folder.
+std::vector<std::string> includedFiles(const std::string& file) {
+  std::optional<std::string> text = readFile(file);
+  if (!text) return {};
+  // Most programs include nothing: no need to load them here.
+  std::string lowered = *text;
+  for (char& c : lowered) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lowered.find("#include") == std::string::npos) return {};
+  LoadedFile loaded = loadFile(file, CompileOptions{}, false, true);
+  std::vector<std::string> out;
+  if (!loaded.program) return out;
+  for (uint32_t i = 1; i < loaded.program->sources.size(); ++i) out.push_back(loaded.program->sources.file(i).name());
+  return out;
+}
+
 /// One feedback file per program for its student: DIR/NAME.txt.
 bool writeFeedback(const std::string& dir, const grade::ClassResult& result, const std::vector<std::string>& paths) {
   std::string why;
@@ -65,7 +84,8 @@ bool writeFeedback(const std::string& dir, const grade::ClassResult& result, con
   bool ok = true;
   for (const grade::ProgramResult& p : result.programs) {
     std::string text = grade::studentFeedback(p, result), error;
-    std::string path = (std::filesystem::path(dir) / (grade::reportName(p.program, paths) + ".txt")).string();
+    std::string name = p.name.empty() ? grade::reportName(p.program, paths) : p.name;
+    std::string path = (std::filesystem::path(dir) / (name + ".txt")).string();
     if (!render::writeFileBytes(path, text.data(), text.size(), error)) {
       std::fprintf(stderr, "rb test: %s\n", error.c_str());
       ok = false;
@@ -125,6 +145,14 @@ int executeTest(const TestOptions& opts) {
   g.roster = opts.roster;
   g.trustComments = opts.trustComments;
   g.compileProgram = firstError;
+  g.includedFiles = includedFiles;
+  g.requireSandbox = opts.requireSandbox;
+  if (opts.requireSandbox) {
+    if (std::string gap = kernelConfinementGap(); !gap.empty()) {
+      std::fprintf(stderr, "rb test: --require-sandbox: %s\n", gap.c_str());
+      return exitcode::kUnavailable;
+    }
+  }
   g.similarity = opts.similarity || !opts.similarityIgnore.empty();
   g.similarityIgnore = opts.similarityIgnore;
   if ((!opts.include.empty() || !opts.roster.empty()) && opts.assignment.empty()) {
@@ -264,6 +292,9 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
       ->type_name("FILE")
       ->check(CLI::ExistingFile);
   test->add_flag("-q,--quiet", opts->quiet, "Only the table: no details of failed checks, no progress");
+  test->add_flag("--require-sandbox", opts->requireSandbox,
+                 "Refuse to grade when the kernel cannot confine the programs (no Landlock or seccomp), "
+                 "instead of saying so in every report");
   test->footer(
       "Each program runs in a child process of its own (rb itself), with a time and memory "
       "limit, so a crash or a hang fails that program alone. Exit status: 0 every program "

@@ -1,13 +1,19 @@
 #include "test_job.h"
 
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <string>
 
 #include "animation.h"
 #include "run_command.h"
 #include "exit_codes.h"
+#include "files.h"
 #include "headless_run.h"
 #include "lang/checker.h"
 #include "png_writer.h"
@@ -29,7 +35,78 @@ struct JobOptions {
   std::vector<std::string> watch;      ///< colours (RRGGBB hex) the robot must avoid or touch
   std::string replay;                  ///< where to write the run's replay (.gif, .svg, .html), or ""
   bool ports = false;                  ///< the grader lets the program open serial ports
+  /// rb test's scratch folder for this run, holding the program's copy: the only folder the
+  /// program may change, by the kernel's rules. "": the program runs where it is (rb test
+  /// --trust-comments), confined as rb run confines it.
+  std::string box;
 };
+
+/// A file rb test handed the job to write its results in: opened before the job is confined,
+/// so that neither the program nor anything it starts can reach it (it is not inherited), and
+/// written whole each time.
+class HandedFile {
+ public:
+  HandedFile() = default;
+  HandedFile(const HandedFile&) = delete;
+  HandedFile& operator=(const HandedFile&) = delete;
+  ~HandedFile() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  /// "" when `path` is empty (not wanted) or was opened, else why not.
+  std::string open(const std::string& path) {
+    path_ = path;
+    if (path.empty()) return "";
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0600);
+    return fd_ < 0 ? "cannot write '" + path + "': " + std::strerror(errno) : "";
+  }
+  bool wanted() const { return fd_ >= 0; }
+  bool write(std::string_view bytes, std::string& error) {
+    if (fd_ < 0) return false;
+    if (::ftruncate(fd_, 0) != 0) {
+      error = "cannot write '" + path_ + "': " + std::strerror(errno);
+      return false;
+    }
+    size_t done = 0;
+    while (done < bytes.size()) {
+      ssize_t n = ::pwrite(fd_, bytes.data() + done, bytes.size() - done, static_cast<off_t>(done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        error = "cannot write '" + path_ + "': " + std::strerror(n < 0 ? errno : EIO);
+        return false;
+      }
+      done += static_cast<size_t>(n);
+    }
+    return true;
+  }
+
+ private:
+  int fd_ = -1;
+  std::string path_;
+};
+
+/// The kernel's rules for the job (kernel_confine.h): in its scratch folder, that folder alone
+/// to change and the library folders to read; in place, what rb run allows. Never root's
+/// capabilities.
+KernelRules jobRules(const JobOptions& opts) {
+  namespace fs = std::filesystem;
+  KernelRules rules;
+  std::error_code ec;
+  if (opts.box.empty()) {
+    rules = runKernelRules(opts.run);
+  } else {
+    rules.writeDirs = {fs::absolute(opts.box, ec).string()};
+    rules.readPaths = libraryDirs();
+    if (!opts.run.eventsFile.empty()) rules.readPaths.push_back(fs::absolute(opts.run.eventsFile, ec).string());
+    if (!opts.run.noPorts) {
+      rules.devices = serialDevicePaths();
+      if (!opts.run.port.empty()) rules.devices.push_back(opts.run.port);
+    }
+    rules.allowSpawn = opts.run.allowSpawn;
+    rules.dataBytes = dataLimitBytes(opts.run.maxMemoryMiB);
+  }
+  rules.dropCapabilities = true;
+  return rules;
+}
 
 grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
   grade::DiagRecord r;
@@ -61,9 +138,9 @@ void recordCheck(const JobOptions& opts, grade::RunRecord& rec) {
   rec.checkExit = checked.diags.hasErrors() ? exitcode::kRejected : exitcode::kOk;
 }
 
-bool writeRecord(const JobOptions& opts, const grade::RunRecord& rec) {
+bool writeRecord(HandedFile& file, const grade::RunRecord& rec) {
   std::string json = grade::recordToJson(rec), error;
-  if (render::writeFileBytes(opts.record, json.data(), json.size(), error)) return true;
+  if (file.write(json, error)) return true;
   std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
   return false;
 }
@@ -218,11 +295,35 @@ RunResult runTeacherProgram(const TeacherProgram& p, HeadlessRun& run, const Run
 int executeJob(JobOptions opts) {
   opts.run.quiet = true;  // rb check's part of the record has the warnings
   opts.run.noPorts = !opts.ports;
+  // What the job writes for rb test, and what the teacher's programs are, is opened and read
+  // before the job is confined: afterwards only the program's own folder can be reached.
+  HandedFile recordFile, screenFile, replayFile;
+  for (auto [file, path] : {std::pair{&recordFile, &opts.record}, {&screenFile, &opts.screen}, {&replayFile, &opts.replay}})
+    if (std::string why = file->open(*path); !why.empty()) {
+      std::fprintf(stderr, "rb test-job: %s\n", why.c_str());
+      return exitcode::kIoError;
+    }
+  std::optional<TeacherProgram> world;
+  std::vector<TeacherProgram> posts;
+  if (!opts.world.empty()) world = loadTeacherProgram(opts.world);
+  for (const std::string& p : opts.posts) posts.push_back(loadTeacherProgram(p));
+  HeadlessRun run;
+  run.memory = std::make_shared<ResidentMemory>();
   grade::RunRecord rec;
+  KernelStatus kernel = confineProcess(jobRules(opts));
+  opts.run.confined = true;
+  rec.confinement = kernel.problem;
+  if (!kernel.complete() && opts.run.requireSandbox) {
+    std::fprintf(stderr, "rb run: --require-sandbox: the kernel cannot confine this run: %s\n", kernel.problem.c_str());
+    rec.complete = true;
+    rec.exitCode = exitcode::kRuntime;
+    writeRecord(recordFile, rec);
+    return exitcode::kRuntime;
+  }
   recordCheck(opts, rec);
   // Written now and again at the end: a run killed at its time limit keeps rb check's part.
   rec.complete = false;
-  if (!writeRecord(opts, rec)) return exitcode::kIoError;
+  if (!writeRecord(recordFile, rec)) return exitcode::kIoError;
   rec.complete = true;
   int code = exitcode::kOk;
   if (opts.run.tui) {
@@ -231,17 +332,12 @@ int executeJob(JobOptions opts) {
     std::vector<uint32_t> colours;
     for (const std::string& hex : opts.watch) colours.push_back(static_cast<uint32_t>(std::stoul(hex, nullptr, 16)));
     std::optional<JobObserver> observer;
-    HeadlessRun run;
     std::string output;  // the student's output as it goes to stdout, for the post programs
     run.onInput = [&rec](const HeadlessHost::InputSpan& s) {
       if (rec.inputs.size() < 100000) rec.inputs.push_back({s.start, s.promptEnd, s.end});
     };
-    std::optional<TeacherProgram> world;
-    std::vector<TeacherProgram> posts;
-    if (!opts.world.empty()) world = loadTeacherProgram(opts.world);
-    for (const std::string& p : opts.posts) posts.push_back(loadTeacherProgram(p));
     std::optional<Recording> recording;
-    if (!opts.replay.empty()) recording.emplace();
+    if (replayFile.wanted()) recording.emplace();
     if (!opts.posts.empty() || recording)
       run.onCopy = [&output, &recording, keep = !opts.posts.empty()](std::string_view text) {
         if (keep && output.size() < (1u << 20)) output.append(text.substr(0, (1u << 20) - output.size()));
@@ -355,20 +451,26 @@ int executeJob(JobOptions opts) {
         const SourceFile& main = run.loaded.program->sources.file(0);
         render::PlayerSource source{std::filesystem::path(main.name()).filename().string(), main.text(), 0};
         std::string error;
-        if (!render::writeAnimation(opts.replay, *recording, source, render::AnimationOptions{}, error))
-          std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
+        try {
+          std::string bytes = render::encodeAnimation(render::animationFormat(opts.replay), *recording, source,
+                                                      render::AnimationOptions{});
+          if (!replayFile.write(bytes, error)) std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "rb test-job: cannot make the replay: %s\n", e.what());
+        }
       }
-      if (!opts.screen.empty()) {
+      if (screenFile.wanted()) {
         const Machine& m = *run.machine;
         std::string error;
-        rec.screen = grade::writeScreenFile(opts.screen, render::composeRuns(m.canvas().pixels(), render::robotView(m)),
-                                            Canvas::kWidth, Canvas::kHeight, error);
+        std::string bytes = grade::screenFileBytes(render::composeRuns(m.canvas().pixels(), render::robotView(m)),
+                                                   Canvas::kWidth, Canvas::kHeight);
+        rec.screen = screenFile.write(bytes, error);
         if (!rec.screen) std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
       }
     }
   }
   rec.exitCode = code;
-  if (!writeRecord(opts, rec)) return exitcode::kIoError;
+  if (!writeRecord(recordFile, rec)) return exitcode::kIoError;
   return code;
 }
 
@@ -392,6 +494,7 @@ void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
   job->add_option("--watch-colour", opts->watch, "A colour (RRGGBB) to record touches of; repeatable");
   job->add_option("--replay", opts->replay, "Write the run's replay here (.gif, .svg or .html)");
   job->add_flag("--ports,!--no-ports", opts->ports, "Let the program open serial ports (default: not)");
+  job->add_option("--box", opts->box, "rb test's scratch folder for this run: the only folder the program may change");
   job->callback([opts, &exitCode] { exitCode = executeJob(*opts); });
 }
 

@@ -37,6 +37,7 @@ int traceOne(const TraceOptions& opts, const std::string& file, std::FILE* out, 
              bool csvHeader) {
   TraceOptions one = opts;
   one.run.file = file;
+  one.run.confined = true;  // executeTrace confined the process for every file
   HeadlessRun run;
   trace::TraceWriter writer(
       trace::TraceSettings{opts.format, opts.sensors, opts.lines}, out, program, csvHeader,
@@ -80,6 +81,22 @@ int executeTrace(const TraceOptions& opts) {
     if (!render::makeFolder(opts.outDir, error)) {
       std::fprintf(stderr, "rb trace: %s\n", error.c_str());
       return exitcode::kIoError;
+    }
+  }
+  // One process traces every file: the kernel's rules cover all their folders, once.
+  if (!opts.files.empty()) {
+    RunOptions first = opts.run;
+    first.file = opts.files[0];
+    std::vector<std::string> outputs;
+    if (!opts.outDir.empty()) outputs.push_back((fs::path(opts.outDir) / "trace").string());
+    KernelRules rules = runKernelRules(first, outputs);
+    std::error_code ec;
+    for (const std::string& f : opts.files)
+      rules.writeDirs.push_back(f == "-" ? fs::current_path(ec).string() : fs::absolute(f, ec).parent_path().string());
+    KernelStatus status = confineProcess(rules);
+    if (!status.complete() && opts.run.requireSandbox) {
+      std::fprintf(stderr, "rb trace: --require-sandbox: the kernel cannot confine this run: %s\n", status.problem.c_str());
+      return exitcode::kRuntime;
     }
   }
   int result = exitcode::kOk;

@@ -562,7 +562,7 @@ void contradictions(const std::vector<Check>& checks) {
 }
 
 void readRun(const toml::table& run, const fs::path& dir, Assignment& a) {
-  onlyKeys(run, {"seeds", "max-steps", "timeout", "memory", "events", "keys", "stdin"}, "in [run]");
+  onlyKeys(run, {"seeds", "max-steps", "timeout", "memory", "events", "keys", "stdin", "files", "spawn"}, "in [run]");
   if (const toml::node* n = run.get("seeds")) {
     const toml::array* arr = n->as_array();
     if (!arr || arr->empty()) throw Bad{"seeds must be a list of whole numbers, like [1, 2, 3]", n->source()};
@@ -591,6 +591,19 @@ void readRun(const toml::table& run, const fs::path& dir, Assignment& a) {
   }
   if (const toml::node* n = run.get("events")) a.events = requireFile(dir, *n, "events");
   if (const toml::node* n = run.get("keys")) a.keys = text(*n, "keys");
+  if (const toml::node* n = run.get("files")) {
+    const toml::array* arr = n->as_array();
+    if (!arr) throw Bad{"files must be a list of files or folders, like [\"maze.txt\", \"data\"]", n->source()};
+    for (const toml::node& f : *arr) {
+      std::string path = fileBeside(dir, text(f, "each of files"));
+      std::error_code ec;
+      fs::file_status st = fs::status(path, ec);
+      if (!fs::is_regular_file(st) && !fs::is_directory(st))
+        throw Bad{"files: no such file or folder '" + path + "'", f.source()};
+      a.files.push_back(path);
+    }
+  }
+  if (const toml::node* n = run.get("spawn")) a.spawn = boolean(*n, "spawn");
   if (const toml::node* n = run.get("stdin")) {
     const toml::array* arr = n->as_array();
     if (!arr) throw Bad{"stdin must be a list of lines, like [\"3\", \"4\"]", n->source()};

@@ -112,6 +112,12 @@ struct Assignment {
   std::string events;                   ///< absolute path of an events script, or ""
   std::string keys;
   std::vector<std::string> stdinLines;
+  /// Files and folders every program gets a copy of beside it (`files = [...]` in [run]),
+  /// absolute paths.
+  std::vector<std::string> files;
+  /// Programs may run other programs with Spawn (`spawn = true` in [run]); they stay in the
+  /// kernel's confinement, as everything they start does.
+  bool spawn = false;
   std::vector<Check> checks;
 
   bool needsSolution() const;

@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "base/text.h"
 #include "pictures.h"
 
 namespace rb::grade {
@@ -60,6 +61,31 @@ std::string readCapped(const std::string& path, size_t cap, bool* cut = nullptr)
   return data;
 }
 
+/// The largest program rb test grades (as rb run reads at most).
+constexpr size_t kMaxProgramBytes = 16u << 20;
+
+/// Reads a program's whole text for grading; false with `why` when it cannot.
+bool readSnapshot(const std::string& path, std::string& text, std::string& why) {
+  std::error_code ec;
+  fs::file_status st = fs::status(path, ec);
+  if (!fs::is_regular_file(st)) {
+    why = fs::exists(st) ? "not a regular file" : "no such file";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    why = "permission denied";
+    return false;
+  }
+  bool cut = false;
+  text = readCapped(path, kMaxProgramBytes, &cut);
+  if (cut) {
+    why = "larger than " + std::to_string(kMaxProgramBytes >> 20) + " MiB, not a program";
+    return false;
+  }
+  return true;
+}
+
 std::string isoNow() {
   std::time_t t = std::time(nullptr);
   std::tm tm{};
@@ -83,7 +109,81 @@ struct Task {
   bool screen;       ///< capture the final screen
   Job job;
   std::string record, screenFile, replayFile;
+  /// The run's own folder in rb test's temporary folder: the files rb test and the job exchange,
+  /// and `box`, the scratch folder the program runs in ("" : it runs where it is).
+  std::string dir, box;
+  std::string mainRel;        ///< the program's copy, relative to box
+  std::string studentFolder;  ///< the student's folder copied whole into box, or ""
+  /// More files copied into box: what the program #includes, the assignment's files (absolute
+  /// source, path in box).
+  std::vector<std::pair<std::string, std::string>> copies;
+  std::vector<std::string> stdinLines;
 };
+
+/// How much one scratch folder may hold: a student's folder bigger than this is not copied for
+/// every run, and the program is not graded (the reason says why).
+constexpr uintmax_t kScratchBytes = 64ull << 20;
+constexpr size_t kScratchEntries = 4096;
+
+struct CopyBudget {
+  uintmax_t bytes = 0;
+  size_t entries = 0;
+  bool over() const { return bytes > kScratchBytes || entries > kScratchEntries; }
+};
+
+/// Copies a regular file, made private to the run (0600).
+bool copyOne(const fs::path& from, const fs::path& to, CopyBudget& budget, std::string& error) {
+  std::error_code ec;
+  uintmax_t size = fs::file_size(from, ec);
+  if (ec) {
+    error = "cannot copy " + from.string() + ": " + ec.message();
+    return false;
+  }
+  budget.bytes += size;
+  ++budget.entries;
+  if (budget.over()) return true;  // the caller says why
+  fs::create_directories(to.parent_path(), ec);
+  if (!fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec)) {
+    error = "cannot copy " + from.string() + ": " + ec.message();
+    return false;
+  }
+  fs::permissions(to, fs::perms::owner_read | fs::perms::owner_write, ec);
+  return true;
+}
+
+/// Copies a folder's regular files and folders (not hidden ones, not links, FIFOs or devices).
+bool copyTree(const fs::path& from, const fs::path& to, const fs::path& skip, CopyBudget& budget, std::string& error) {
+  std::error_code ec;
+  fs::create_directories(to, ec);
+  for (fs::recursive_directory_iterator it(from, fs::directory_options::skip_permission_denied, ec), end;
+       !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    fs::file_status st = it->symlink_status(ec);
+    if (!name.empty() && name[0] == '.') {
+      if (fs::is_directory(st)) it.disable_recursion_pending();
+      continue;
+    }
+    fs::path dest = to / it->path().lexically_relative(from);
+    if (fs::is_directory(st)) {
+      fs::create_directories(dest, ec);
+      if (++budget.entries > kScratchEntries) return true;
+    } else if (fs::is_regular_file(st) && it->path() != skip) {
+      if (!copyOne(it->path(), dest, budget, error)) return false;
+      if (budget.over()) return true;
+    }
+  }
+  return true;
+}
+
+/// The environment of a job: nothing of the grader's own (tokens, keys) reaches a program or
+/// what it starts; only what rb and a started program need.
+std::vector<std::string> jobEnvironment(const std::string& home) {
+  std::vector<std::string> env = {"PATH=/usr/local/bin:/usr/bin:/bin", "HOME=" + home, "TMPDIR=" + home};
+  for (const char* name : {"LANG", "LC_ALL", "LC_CTYPE", "TZ", "RB_LIB_PATH", "ASAN_OPTIONS", "UBSAN_OPTIONS",
+                           "LSAN_OPTIONS"})
+    if (const char* v = std::getenv(name)) env.push_back(std::string(name) + "=" + v);
+  return env;
+}
 
 /// A comment's timeout above this is capped unless the person running rb test allows more.
 constexpr double kCommentTimeoutCap = 30;
@@ -174,6 +274,13 @@ class Grader {
   bool findClass();
   Task makeTask(size_t program, const std::string& file, size_t seedIndex, uint64_t seed,
                 bool screen, const CommentSpec* spec);
+  /// Makes the task's folder and scratch folder with what the program may see; "" or why not.
+  std::string materialize(const Task& task) const;
+  /// Where a program's copy goes in its scratch folder: the student's folder it is in (copied
+  /// whole), or "" when it is copied alone; and its path in the scratch folder.
+  std::pair<std::string, std::string> layoutOf(const std::string& program) const;
+  /// The text of program `index` as graded (SIZE_MAX: the solution).
+  const std::string& sourceOf(size_t index) const { return index == SIZE_MAX ? solutionSource_ : sources_[index]; }
   RunOutcome collect(const Task& task, const JobOutcome& outcome) const;
   void finishProgram(size_t index);
   void writePicture(ProgramResult& result, const std::vector<RunOutcome>& runs);
@@ -196,6 +303,21 @@ class Grader {
   std::string temp_;
   size_t taskCount_ = 0;
   std::vector<std::string> programs_;           ///< the programs to run (result_ index = same)
+  /// Each program's text, read once before any run: what runs, what similarity compares and
+  /// what reports show, whatever a run does afterwards.
+  std::vector<std::string> sources_;
+  std::vector<bool> sourceRead_;  ///< false: sources_ holds why it could not be read
+  std::string solutionSource_;
+  /// The program's unique report name.
+  std::string nameOf(const std::string& program) const {
+    std::error_code ec;
+    auto it = reportNames_.find(fs::weakly_canonical(program, ec).string());
+    return it != reportNames_.end() ? it->second : reportName(program, opts_.paths);
+  }
+  /// Folders the roster names (canonical): each is a student's folder.
+  std::vector<std::string> rosterFolders_;
+  /// Every class file's report name (canonical path -> unique name), over the whole class.
+  std::map<std::string, std::string> reportNames_;
   std::vector<ProgramResult> extra_;            ///< files not graded, students missing
   std::map<std::string, std::string> students_; ///< canonical program path -> student
   std::vector<std::optional<CommentSpec>> specs_;
@@ -235,21 +357,25 @@ LimitNames Grader::commentLimits(const CommentSpec& spec) const {
 
 FilteredArgs Grader::commentArgs(const CommentSpec& spec, const std::string& program) const {
   FilteredArgs out;
-  if (opts_.trustComments) {
-    out.args = spec.args;
-    return out;
-  }
   std::error_code ec;
   std::string home = fs::weakly_canonical(fs::absolute(program, ec).parent_path(), ec).string() + "/";
   const std::vector<std::string>& a = spec.args;
   auto ignored = [&](const std::string& option, const std::string& why) {
-    out.notes.push_back("ignored // args: " + option + ": " + why);
+    out.notes.push_back("ignored // args: " + visibleText(option) + ": " + why);
   };
   const std::string grant = "only the person running rb test may grant it (rb test --trust-comments)";
-  if (spec.timeoutSet && spec.timeout > kCommentTimeoutCap && !opts_.timeout)
+  if (!opts_.trustComments && spec.timeoutSet && spec.timeout > kCommentTimeoutCap && !opts_.timeout)
     out.notes.push_back("// timeout: " + number(spec.timeout) + " counts as " + number(kCommentTimeoutCap) +
                         " s: a comment may lower the time limit, not raise it (rb test --timeout or "
                         "--trust-comments may)");
+  // What `// args:` may say at all: rb run's documented options. An allowlist: anything else,
+  // rb's own options for its jobs above all (--record, --screen, --world, --box...), is left out.
+  static const std::set<std::string> takesValue = {"--seed", "--max-steps", "--timeout", "--max-memory", "--events",
+                                                   "--keys", "--port", "--baud", "--robot-timeout", "--allow-files",
+                                                   "--cells", "--color"};
+  static const std::set<std::string> flags = {"--quiet", "--tui", "--real", "--allow-spawn"};
+  static const std::set<std::string> granted = {"--allow-files", "--allow-spawn", "--port", "--real", "--baud",
+                                                "--robot-timeout"};
   for (size_t i = 0; i < a.size(); ++i) {
     std::string name = a[i], value;
     bool inlineValue = false;
@@ -258,46 +384,76 @@ FilteredArgs Grader::commentArgs(const CommentSpec& spec, const std::string& pro
       name = name.substr(0, eq);
       inlineValue = true;
     }
-    static const std::set<std::string> takesValue = {"--seed", "--max-steps", "--timeout", "--max-memory",
-                                                       "--events", "--keys", "--port", "--baud",
-                                                       "--robot-timeout", "--allow-files", "--cells", "--color"};
     bool hasValue = takesValue.count(name) != 0;
+    if (!hasValue && !flags.count(name)) {
+      ignored(a[i], "not an option of rb run a program's comments may give");
+      continue;
+    }
     if (hasValue && !inlineValue) {
       if (i + 1 >= a.size()) {
-        out.args.push_back(a[i]);  // the run reports the missing value
+        ignored(a[i], "it needs a value");
         continue;
       }
       value = a[++i];
+    } else if (!hasValue && inlineValue) {
+      ignored(a[i], "it takes no value");
+      continue;
     }
     std::string shown = name + (hasValue ? " " + value : "");
-    auto keep = [&] {
+    auto keep = [&](const std::string& v) {
       out.args.push_back(name);
-      if (hasValue) out.args.push_back(value);
+      if (hasValue) out.args.push_back(v);
     };
-    if (name == "--allow-files" || name == "--allow-spawn" || name == "--port" || name == "--real" ||
-        name == "--baud" || name == "--robot-timeout") {
-      ignored(shown, grant);
-    } else if (name == "--events") {
+    if (name == "--events" && !opts_.trustComments) {
+      // Copied beside the program into its scratch folder (makeTask), named as written.
       fs::path f = fs::weakly_canonical(fs::absolute(fs::path(program).parent_path() / value, ec), ec);
-      if (f.string().rfind(home, 0) == 0) keep();
+      if (f.string().rfind(home, 0) == 0 && fs::is_regular_file(f, ec)) keep(value);
       else ignored(shown, "the events file is outside the program's folder");
+    } else if (opts_.trustComments) {
+      keep(value);
+    } else if (granted.count(name)) {
+      ignored(shown, grant);
     } else if (name == "--timeout") {
       std::optional<double> t = numberArg(value);
-      if (t && *t > 0 && *t <= commentTimeout(spec)) keep();
+      if (t && *t > 0 && *t <= commentTimeout(spec)) keep(value);
       else ignored(shown, "a comment may lower the time limit, not raise it or switch it off");
     } else if (name == "--max-steps") {
       std::optional<double> n = numberArg(value);
-      if (n && *n >= 1 && (!opts_.maxSteps || *n <= static_cast<double>(*opts_.maxSteps))) keep();
+      if (n && *n >= 1 && (!opts_.maxSteps || *n <= static_cast<double>(*opts_.maxSteps))) keep(value);
       else ignored(shown, "a comment may lower the step limit, not raise it or switch it off");
     } else if (name == "--max-memory") {
       std::optional<double> m = numberArg(value);
-      if (m && *m >= 1 && *m <= kCommentMemoryCapMb) keep();
+      if (m && *m >= 1 && *m <= kCommentMemoryCapMb) keep(value);
       else ignored(shown, "a comment may lower the memory limit, not raise it or switch it off");
     } else {
-      keep();  // --seed, --keys, --tui, --cells, --color, --quiet: nothing more to reach
+      keep(value);  // --seed, --keys, --tui, --cells, --color, --quiet: nothing more to reach
     }
   }
   return out;
+}
+
+std::pair<std::string, std::string> Grader::layoutOf(const std::string& program) const {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(program, ec), ec);
+  auto under = [&](const fs::path& folder) -> std::optional<std::string> {
+    fs::path rel = p.lexically_relative(folder);
+    if (rel.empty() || rel.native().rfind("..", 0) == 0) return std::nullopt;
+    return rel.string();
+  };
+  // A folder the roster names is that student's.
+  for (const std::string& folder : rosterFolders_)
+    if (std::optional<std::string> rel = under(folder))
+      return {folder, (fs::path(folder).filename() / *rel).string()};
+  // A class folder with one folder per student: the folder below the class folder.
+  for (const std::string& root : opts_.paths) {
+    if (!fs::is_directory(root, ec)) continue;
+    fs::path r = fs::weakly_canonical(fs::absolute(root, ec), ec);
+    std::optional<std::string> rel = under(r);
+    if (!rel) continue;
+    fs::path relPath(*rel);
+    if (std::distance(relPath.begin(), relPath.end()) >= 2) return {(r / *relPath.begin()).string(), *rel};
+  }
+  return {"", p.filename().string()};
 }
 
 Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex, uint64_t seed,
@@ -307,9 +463,10 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
   t.seedIndex = seedIndex;
   t.seed = seed;
   t.screen = screen;
-  std::string base = temp_ + "/" + std::to_string(taskCount_++);
-  t.record = base + ".json";
-  t.screenFile = screen ? base + ".runs" : "";
+  t.dir = temp_ + "/" + std::to_string(taskCount_++);
+  std::string base = t.dir + "/";
+  t.record = base + "record.json";
+  t.screenFile = screen ? base + "screen.runs" : "";
   Job& job = t.job;
   job.argv = opts_.childCommand;
   job.argv.insert(job.argv.end(), {"--record", t.record});
@@ -317,14 +474,48 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
   if (spec ? opts_.trustComments : assignment_->ports) job.argv.push_back("--ports");
   if (screen) job.argv.insert(job.argv.end(), {"--screen", t.screenFile});
   if (!opts_.replayFormat.empty() && seedIndex == 0 && program != SIZE_MAX) {
-    t.replayFile = base + "." + opts_.replayFormat;
+    t.replayFile = base + "replay." + opts_.replayFormat;
     job.argv.insert(job.argv.end(), {"--replay", t.replayFile});
   }
-  job.stdoutPath = base + ".out";
-  job.stderrPath = base + ".err";
+  if (opts_.requireSandbox) job.argv.push_back("--require-sandbox");
+  job.stdoutPath = base + "out";
+  job.stderrPath = base + "err";
   job.fileBytes = kFileLimit;
   fs::path path = fs::absolute(file);
-  job.cwd = path.parent_path().string();
+  // Programs graded by their trusted comments run where they are (the person running rb test
+  // vouches for them, as rb run would run them); every other program runs in a scratch folder
+  // of its own with copies of what it may see.
+  bool inPlace = spec && opts_.trustComments;
+  std::string runName = path.filename().string();
+  if (inPlace) {
+    job.cwd = path.parent_path().string();
+    job.env = jobEnvironment(std::getenv("HOME") ? std::getenv("HOME") : job.cwd);
+  } else {
+    t.box = base + "box";
+    // The solution runs alone (with its includes), whatever folder it is in.
+    auto [student, rel] = program == SIZE_MAX ? std::pair<std::string, std::string>{"", path.filename().string()}
+                                              : layoutOf(file);
+    t.studentFolder = student;
+    t.mainRel = rel;
+    fs::path relDir = fs::path(rel).parent_path();
+    job.cwd = (fs::path(t.box) / relDir).string();
+    job.argv.insert(job.argv.end(), {"--box", t.box});
+    job.env = jobEnvironment(t.box);
+    if (student.empty()) {
+      // A program copied alone takes the files it #includes from its folder along.
+      if (opts_.includedFiles) {
+        std::error_code ec;
+        fs::path home = fs::weakly_canonical(path.parent_path(), ec);
+        for (const std::string& inc : opts_.includedFiles(file)) {
+          fs::path r = fs::path(inc).lexically_relative(home);
+          if (!r.empty() && r.native().rfind("..", 0) != 0) t.copies.push_back({inc, (relDir / r).string()});
+        }
+      }
+    }
+    if (assignment_)
+      for (const std::string& f : assignment_->files)
+        t.copies.push_back({f, (relDir / fs::path(f).filename()).string()});
+  }
   std::vector<std::string> stdinLines;
   if (spec) {
     for (size_t i = 0; i < spec->checkArgs.size(); ++i)
@@ -332,6 +523,15 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
           (spec->checkArgs[i] == "--target" && i + 1 < spec->checkArgs.size() && spec->checkArgs[i + 1] == "rb9"))
         job.argv.insert(job.argv.end(), {"--check-target", "rb9"});
     std::vector<std::string> args = commentArgs(*spec, file).args;
+    // The events file a comment names lies in the program's folder: it goes along.
+    if (!inPlace)
+      for (size_t i = 0; i + 1 < args.size(); ++i)
+        if (args[i] == "--events") {
+          std::error_code ec;
+          fs::path from = fs::weakly_canonical(path.parent_path() / args[i + 1], ec);
+          fs::path rel = from.lexically_relative(fs::weakly_canonical(path.parent_path(), ec));
+          t.copies.push_back({from.string(), (fs::path(t.mainRel).parent_path() / rel).string()});
+        }
     job.argv.insert(job.argv.end(), args.begin(), args.end());
     if (!hasOption(args, "--seed")) job.argv.insert(job.argv.end(), {"--seed", std::to_string(seed)});
     if (opts_.maxSteps && !hasOption(args, "--max-steps"))
@@ -356,6 +556,8 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
     job.argv.insert(job.argv.end(), {"--seed", std::to_string(seed)});
     job.argv.insert(job.argv.end(), {"--max-steps", std::to_string(opts_.maxSteps.value_or(a.maxSteps))});
     job.argv.insert(job.argv.end(), {"--timeout", number(timeout)});
+    job.argv.insert(job.argv.end(), {"--max-memory", std::to_string(a.memoryMb)});
+    if (a.spawn) job.argv.push_back("--allow-spawn");
     if (!a.events.empty()) job.argv.insert(job.argv.end(), {"--events", a.events});
     if (!a.keys.empty()) job.argv.insert(job.argv.end(), {"--keys", a.keys});
     if (!a.world.empty()) job.argv.insert(job.argv.end(), {"--world", a.world});
@@ -372,12 +574,50 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
     stdinLines = a.stdinLines;
   }
   if (!stdinLines.empty()) {
-    job.stdinPath = base + ".in";
-    std::ofstream in(job.stdinPath, std::ios::binary);
-    for (const std::string& line : stdinLines) in << line << '\n';
+    job.stdinPath = base + "in";
+    t.stdinLines = std::move(stdinLines);
   }
-  job.argv.insert(job.argv.end(), {"--", path.filename().string()});
+  job.argv.insert(job.argv.end(), {"--", inPlace ? runName : fs::path(t.mainRel).filename().string()});
   return t;
+}
+
+std::string Grader::materialize(const Task& t) const {
+  std::error_code ec;
+  if (!fs::create_directory(t.dir, ec) || ec) return "cannot make " + t.dir + ": " + ec.message();
+  fs::permissions(t.dir, fs::perms::owner_all, ec);
+  if (!t.stdinLines.empty()) {
+    std::ofstream in(t.job.stdinPath, std::ios::binary);
+    for (const std::string& line : t.stdinLines) in << line << '\n';
+    if (!in) return "cannot write " + t.job.stdinPath;
+  }
+  if (t.box.empty()) return "";
+  fs::create_directory(t.box, ec);
+  fs::permissions(t.box, fs::perms::owner_all, ec);
+  CopyBudget budget;
+  std::string error;
+  const fs::path box(t.box);
+  fs::path main = box / t.mainRel;
+  if (!t.studentFolder.empty()) {
+    fs::path skip = fs::weakly_canonical(t.program == SIZE_MAX ? *assignment_->solution : programs_[t.program], ec);
+    if (!copyTree(t.studentFolder, box / fs::path(t.mainRel).begin()->string(), skip, budget, error)) return error;
+    if (budget.over())
+      return "the student's folder " + t.studentFolder + " holds more than " + std::to_string(kScratchBytes >> 20) +
+             " MB or " + std::to_string(kScratchEntries) + " files, which rb test copies for every run";
+  }
+  for (const auto& [from, to] : t.copies) {
+    bool ok = fs::is_directory(from, ec) ? copyTree(from, box / to, {}, budget, error)
+                                         : copyOne(from, box / to, budget, error);
+    if (!ok) return error;
+  }
+  if (budget.over())
+    return "the files copied beside the program hold more than " + std::to_string(kScratchBytes >> 20) + " MB";
+  // The program itself, as read before any run.
+  fs::create_directories(main.parent_path(), ec);
+  std::ofstream out(main, std::ios::binary | std::ios::trunc);
+  const std::string& text = sourceOf(t.program);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!out) return "cannot write " + main.string();
+  return "";
 }
 
 RunOutcome Grader::collect(const Task& t, const JobOutcome& outcome) const {
@@ -411,9 +651,13 @@ RunOutcome Grader::collect(const Task& t, const JobOutcome& outcome) const {
     std::string error;
     run.screen = readScreenFile(t.screenFile, error);
   }
-  if (!t.replayFile.empty() && fs::exists(t.replayFile, ec)) run.replayFile = t.replayFile;
-  for (const std::string& f : {t.record, t.screenFile, t.job.stdoutPath, t.job.stderrPath, t.job.stdinPath})
-    if (!f.empty()) fs::remove(f, ec);
+  if (!t.replayFile.empty() && fs::exists(t.replayFile, ec)) {
+    // Kept until the program's reports are written; the run's folder goes now.
+    std::string kept = t.dir + ".replay";
+    fs::rename(t.replayFile, kept, ec);
+    if (!ec) run.replayFile = kept;
+  }
+  fs::remove_all(t.dir, ec);
   return run;
 }
 
@@ -452,7 +696,7 @@ bool Grader::findClass() {
       found = std::move(files.programs);
       others = std::move(files.others);
     } else {
-      found = findPrograms(opts_.paths);
+      found = findPrograms(opts_.paths, &others);
     }
   } catch (const std::runtime_error& e) {
     return fatal(opts_.include.empty() ? 66 : 64, e.what());
@@ -463,6 +707,7 @@ bool Grader::findClass() {
   std::vector<std::string> all = found;
   for (const auto& o : others) all.push_back(o.first);
   std::sort(all.begin(), all.end());
+  reportNames_ = uniqueReportNames(all, opts_.paths);
   std::vector<std::string> mine = shardOf(all, opts_.shard, opts_.shards);
   std::set<std::string> inShard(mine.begin(), mine.end());
   for (const std::string& p : found)
@@ -471,8 +716,19 @@ bool Grader::findClass() {
     if (!inShard.count(path)) continue;
     ProgramResult r;
     r.program = path;
+    r.name = nameOf(path);
     r.verdict = "fail";
     r.reason = why;
+    // A file that is not a program but is one of the class's (square.bas.txt): its text for the
+    // teacher's report. Never through a link, a FIFO or a device.
+    std::error_code ec;
+    if (fs::is_regular_file(fs::symlink_status(path, ec))) {
+      std::string text, unread;
+      if (readSnapshot(path, text, unread)) {
+        r.source = std::move(text);
+        r.sourceRead = true;
+      }
+    }
     extra_.push_back(r);
   }
 
@@ -489,6 +745,7 @@ bool Grader::findClass() {
   size_t present = 0;
   for (const RosterEntry& e : roster) {
     fs::path full = fs::weakly_canonical(e.full, ec);
+    if (fs::is_directory(full, ec)) rosterFolders_.push_back(full.string());
     bool any = false;
     for (const std::string& p : all) {
       fs::path cp = fs::weakly_canonical(p, ec);
@@ -574,6 +831,18 @@ bool Grader::prepare() {
     programs_.erase(std::remove_if(programs_.begin(), programs_.end(),
                                    [&](const std::string& p) { return fs::weakly_canonical(p, ec) == sol; }),
                     programs_.end());
+    std::string why;
+    if (!readSnapshot(*assignment_->solution, solutionSource_, why))
+      return fatal(66, "cannot read the solution " + *assignment_->solution + ": " + why);
+  }
+  // Every program's text, once, before anything runs (a program that renames a decoy over its
+  // own file changes nothing that is graded or shown).
+  sources_.resize(programs_.size());
+  sourceRead_.assign(programs_.size(), false);
+  for (size_t p = 0; p < programs_.size(); ++p) {
+    std::string why;
+    sourceRead_[p] = readSnapshot(programs_[p], sources_[p], why);
+    if (!sourceRead_[p]) sources_[p] = why;
   }
 
   std::string pattern = (fs::temp_directory_path() / "rb-test-XXXXXX").string();
@@ -604,8 +873,9 @@ ClassResult Grader::run() {
       jobs.push_back(tasks.back().job);
     }
     refs_.solution.resize(tasks.size());
-    result_.interruptedBy =
-        runJobs(jobs, parallel, [&](size_t i, const JobOutcome& o) { refs_.solution[i] = collect(tasks[i], o); });
+    result_.interruptedBy = runJobs(
+        jobs, parallel, [&](size_t i, const JobOutcome& o) { refs_.solution[i] = collect(tasks[i], o); },
+        [&](size_t i) { return materialize(tasks[i]); });
     if (result_.interruptedBy) return result_;
     for (const RunOutcome& s : refs_.solution) {
       std::string why = unrunnable(s);
@@ -659,8 +929,17 @@ ClassResult Grader::run() {
   for (size_t p = 0; p < programs_.size(); ++p) {
     ProgramResult& r = result_.programs[p];
     r.program = programs_[p];
+    r.name = nameOf(programs_[p]);
     auto student = students_.find(fs::weakly_canonical(programs_[p], ec).string());
     if (student != students_.end()) r.student = student->second;
+    if (!sourceRead_[p]) {
+      r.verdict = "error";
+      r.reason = "cannot read " + visibleText(programs_[p]) + ": " + sources_[p];
+      sources_[p].clear();
+      continue;
+    }
+    r.source = sources_[p];
+    r.sourceRead = true;
     if (!assignment_) {
       specs_[p] = readCommentSpec(programs_[p]);
       if (!specs_[p]) {
@@ -699,11 +978,14 @@ ClassResult Grader::run() {
   }
   std::vector<Job> jobs;
   for (const Task& t : tasks) jobs.push_back(t.job);
-  result_.interruptedBy = runJobs(jobs, parallel, [&](size_t i, const JobOutcome& o) {
-    const Task& t = tasks[i];
-    runs_[t.program][t.seedIndex] = collect(t, o);
-    if (--pending_[t.program] == 0) finishProgram(t.program);
-  });
+  result_.interruptedBy = runJobs(
+      jobs, parallel,
+      [&](size_t i, const JobOutcome& o) {
+        const Task& t = tasks[i];
+        runs_[t.program][t.seedIndex] = collect(t, o);
+        if (--pending_[t.program] == 0) finishProgram(t.program);
+      },
+      [&](size_t i) { return materialize(tasks[i]); });
   if (result_.interruptedBy) return result_;
   fs::remove_all(temp_, ec);
 
@@ -727,6 +1009,14 @@ ClassResult Grader::run() {
     // The programs graded (the solution and teacher files excluded, as from grading).
     SimilarityOptions so;
     so.ignore = opts_.similarityIgnore;
+    // The texts as graded, not as the files may be now.
+    std::map<std::string, size_t> index;
+    for (size_t p = 0; p < programs_.size(); ++p) index[programs_[p]] = p;
+    so.source = [&](const std::string& path) -> std::optional<std::string> {
+      auto it = index.find(path);
+      if (it == index.end() || !sourceRead_[it->second]) return std::nullopt;
+      return sources_[it->second];
+    };
     result_.similarity = findSimilar(programs_, so);
   }
   result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -761,6 +1051,9 @@ void Grader::finishProgram(size_t index) {
          run.process.signal != SIGXFSZ && run.process.signal != SIGKILL))
       r.verdict = "error";
   }
+  for (const RunOutcome& run : runs)
+    if (run.record && !run.record->confinement.empty() && result_.confinement.empty())
+      result_.confinement = run.record->confinement;
   const RunOutcome& first = runs[0];
   if (first.record) {
     r.steps = first.record->steps;
@@ -772,16 +1065,18 @@ void Grader::finishProgram(size_t index) {
   if (first.record) r.marks = lineMarks(*first.record, r.program);
   if (!opts_.picturesDir.empty()) writePicture(r, runs);
   if (opts_.screens && !opts_.picturesDir.empty() && first.screen) {
-    fs::path to = fs::path(opts_.picturesDir) / fs::path(reportName(r.program, opts_.paths)).replace_extension(".screen.png");
+    fs::path to = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".screen.png");
     std::string error;
     if (render::writePngFile(to.string(), halfSize(imageOf(*first.screen)), error)) r.screen = to.string();
   }
   if (!first.replayFile.empty()) {
-    fs::path to = fs::path(opts_.picturesDir) / fs::path(reportName(r.program, opts_.paths)).replace_extension("." + opts_.replayFormat);
+    // Written as every other report file is (a FIFO there is written to, never replaced).
+    fs::path to = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension("." + opts_.replayFormat);
+    bool cut = false;
+    std::string bytes = readCapped(first.replayFile, kFileLimit, &cut), error;
+    if (!cut && render::writeFileBytes(to.string(), bytes.data(), bytes.size(), error)) r.replay = to.string();
     std::error_code ec;
-    fs::rename(first.replayFile, to, ec);
-    if (ec) fs::copy_file(first.replayFile, to, fs::copy_options::overwrite_existing, ec);
-    if (!ec) r.replay = to.string();
+    fs::remove(first.replayFile, ec);
   }
   for (RunOutcome& run : runs) run.screen.reset();  // a class's screens would not fit in memory
   ++finished_;
@@ -821,15 +1116,19 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
         for (const Region& g : c->regions)
           in.regions.push_back({c->kind == Check::Avoid ? PictureRegion::Avoid : PictureRegion::Goal, g, c->name});
     }
-  std::string name = reportName(r.program, opts_.paths);
-  fs::path out = fs::path(opts_.picturesDir) / fs::path(name).replace_extension(".png");
+  fs::path out = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".png");
   std::string error;
   if (render::writePngFile(out.string(), feedbackPicture(in), error)) r.picture = out.string();
 }
 
 }  // namespace
 
-std::vector<std::string> findPrograms(const std::vector<std::string>& paths) {
+namespace {
+std::string entryProblem(const fs::directory_entry& entry, const fs::path& root);
+}  // namespace
+
+std::vector<std::string> findPrograms(const std::vector<std::string>& paths,
+                                      std::vector<std::pair<std::string, std::string>>* others) {
   std::vector<std::string> out;
   std::set<std::string> seen;
   auto add = [&](const fs::path& p) {
@@ -841,10 +1140,16 @@ std::vector<std::string> findPrograms(const std::vector<std::string>& paths) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) {
       std::vector<fs::path> files;
+      fs::path root = fs::weakly_canonical(fs::absolute(path, ec), ec);
       for (fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
            !ec && it != end; it.increment(ec)) {
-        if (it->is_regular_file(ec) && lower(it->path().extension().string()) == ".bas" && !isNontest(it->path()))
-          files.push_back(it->path());
+        if (lower(it->path().extension().string()) != ".bas") continue;
+        std::string why = entryProblem(*it, root);
+        if (!why.empty()) {
+          if (others) others->push_back({it->path().lexically_normal().string(), why});
+          continue;
+        }
+        if (it->is_regular_file(ec) && !isNontest(it->path())) files.push_back(it->path());
       }
       std::sort(files.begin(), files.end());
       for (const fs::path& f : files) add(f);
@@ -870,6 +1175,27 @@ namespace {
 bool hidden(const fs::path& p) {
   std::string name = p.filename().string();
   return !name.empty() && name[0] == '.';
+}
+
+/// Why an entry of a class folder cannot be graded whatever its name, or "": a symbolic link
+/// that leads out of the class folder (its text must not reach a report), one that cannot be
+/// followed, a FIFO, a socket or a device (reading one could block or never end).
+std::string entryProblem(const fs::directory_entry& entry, const fs::path& root) {
+  std::error_code ec;
+  fs::file_status own = entry.symlink_status(ec);
+  if (fs::is_symlink(own)) {
+    fs::path target = fs::canonical(entry.path(), ec);
+    if (ec) return "not graded: a symbolic link that cannot be followed (" + ec.message() + ")";
+    fs::path rel = target.lexically_relative(root);
+    if (rel.empty() || rel.native().rfind("..", 0) == 0) return "not graded: a symbolic link that leads out of the class folder";
+    fs::file_status st = fs::status(target, ec);
+    if (fs::is_regular_file(st) || fs::is_directory(st)) return "";
+    own = st;
+  }
+  if (fs::is_fifo(own)) return "not graded: a FIFO (named pipe), not a program file";
+  if (fs::is_socket(own)) return "not graded: a socket, not a program file";
+  if (fs::is_character_file(own) || fs::is_block_file(own)) return "not graded: a device, not a program file";
+  return "";
 }
 
 /// Why a file is not graded: it is not a program (and what it may be instead).
@@ -919,10 +1245,18 @@ ClassFiles findClassFiles(const std::vector<std::string>& paths, const std::vect
   for (const std::string& path : paths) {
     if (fs::is_directory(path, ec)) {
       std::vector<fs::path> files;
+      fs::path root = fs::weakly_canonical(fs::absolute(path, ec), ec);
       fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
       for (; !ec && it != end; it.increment(ec)) {
         if (hidden(it->path())) {
           if (it->is_directory(ec)) it.disable_recursion_pending();
+          continue;
+        }
+        std::string why = entryProblem(*it, root);
+        if (!why.empty()) {
+          std::string key = fs::absolute(it->path(), ec).lexically_normal().string();
+          if (!skipped.count(key) && seen.insert(key).second)
+            out.others.push_back({it->path().lexically_normal().string(), why});
           continue;
         }
         if (it->is_regular_file(ec)) files.push_back(it->path());
@@ -1013,6 +1347,34 @@ std::string reportName(const std::string& program, const std::vector<std::string
   if (name.empty()) name = p.filename().string();
   std::replace(name.begin(), name.end(), '/', '_');
   return name;
+}
+
+std::map<std::string, std::string> uniqueReportNames(const std::vector<std::string>& files,
+                                                      const std::vector<std::string>& paths) {
+  std::map<std::string, std::string> out;
+  std::map<std::string, std::vector<std::string>> byName;  // lower-case name -> canonical paths
+  std::error_code ec;
+  for (const std::string& f : files) {
+    std::string key = fs::weakly_canonical(f, ec).string();
+    std::string name = reportName(f, paths);
+    out[key] = name;
+    std::vector<std::string>& same = byName[lower(name)];
+    if (std::find(same.begin(), same.end(), key) == same.end()) same.push_back(key);
+  }
+  for (const auto& [name, keys] : byName) {
+    if (keys.size() < 2) continue;
+    // Names alike (class/x/y.bas and class/x_y.bas, or Ana.bas and ana.bas on a file system
+    // that ignores case): each gets a mark of its own path, the same in every run and shard.
+    for (const std::string& key : keys) {
+      uint64_t h = 14695981039346656037ull;  // FNV-1a
+      for (unsigned char c : key) h = (h ^ c) * 1099511628211ull;
+      char mark[16];
+      std::snprintf(mark, sizeof mark, "~%06llx", static_cast<unsigned long long>(h & 0xFFFFFF));
+      fs::path n(out[key]);
+      out[key] = n.stem().string() + mark + n.extension().string();
+    }
+  }
+  return out;
 }
 
 ClassResult gradeClass(const GradeOptions& options) { return Grader(options).run(); }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,11 @@ struct GradeOptions {
   /// Loads and compiles a teacher's program (world, post): its first error as
   /// "FILE:LINE:COL: message", or "" when it compiles. Unset: not checked before grading.
   std::function<std::string(const std::string& file)> compileProgram;
+  /// The files a program #includes from its own folder tree (absolute, canonical), copied
+  /// beside it into its scratch folder. Unset: none are.
+  std::function<std::vector<std::string>(const std::string& program)> includedFiles;
+  /// Refuse to grade when the kernel cannot confine the programs (docs/confinement.md).
+  bool requireSandbox = false;
   /// How to start a child that runs one program: rb itself and the hidden subcommand.
   std::vector<std::string> childCommand;
   /// Called as each program is graded (in the order they finish).
@@ -51,6 +57,13 @@ struct GradeOptions {
 
 struct ProgramResult {
   std::string program;             ///< the path as found
+  /// The name rb test gives what it writes about the program (its picture, feedback, page):
+  /// reportName()'s, made unique over the class.
+  std::string name;
+  /// The program's text as graded (read before any run): what similarity compares and what
+  /// the reports show. Empty for a file that was not graded.
+  std::string source;
+  bool sourceRead = false;
   std::string student;             ///< the roster's name for it, or ""
   /// "pass", "fail", "skip", "error" (rb could not grade it) or "missing" (a student on the
   /// roster with no submission). A file that is not a program fails ("not graded: ...").
@@ -93,6 +106,9 @@ struct ClassResult {
   std::string timestamp;           ///< ISO 8601, UTC, when grading started
   /// Things the teacher should know that do not stop grading ("the solution fails its own check").
   std::vector<std::string> warnings;
+  /// What the kernel could not put in force around the runs (no Landlock...), said once in every
+  /// report; "" when every run was confined by the kernel (docs/confinement.md).
+  std::string confinement;
   /// Pairs of programs with much code alike (GradeOptions::similarity).
   std::optional<SimilarityReport> similarity;
   // When grading could not happen at all: the message and rb's exit code (64 usage, 66 no
@@ -108,8 +124,11 @@ ClassResult gradeClass(const GradeOptions& options);
 
 /// The programs `paths` name, as rb test finds them: files as given, folders searched
 /// recursively for *.bas (any case), sorted, without files whose first line is `// nontest`.
-/// Throws std::runtime_error naming a path that does not exist.
-std::vector<std::string> findPrograms(const std::vector<std::string>& paths);
+/// In folders, a *.bas that is a link leading out of the folder, a FIFO or a device is not a
+/// program: it goes to `others` (path and why) when given. Throws std::runtime_error naming a
+/// path that does not exist.
+std::vector<std::string> findPrograms(const std::vector<std::string>& paths,
+                                      std::vector<std::pair<std::string, std::string>>* others = nullptr);
 
 /// A class folder as an assignment grades it: every file is accounted for.
 struct ClassFiles {
@@ -138,6 +157,11 @@ std::vector<RosterEntry> readRoster(const std::string& path);
 /// program's path below the folder given that holds it, '/' turned into '_' ("ana_square.bas"
 /// for class/ana/square.bas when class/ was given), without the extension's replacement.
 std::string reportName(const std::string& program, const std::vector<std::string>& paths);
+
+/// reportName() for each of `files` (keyed by canonical path), made unique: files whose names
+/// would be alike, also but for case, each get a mark made from their path ("x_y~1a2b3c.bas").
+std::map<std::string, std::string> uniqueReportNames(const std::vector<std::string>& files,
+                                                      const std::vector<std::string>& paths);
 
 /// The programs of shard K of N (1-based): every N-th program starting with the K-th.
 std::vector<std::string> shardOf(const std::vector<std::string>& programs, int shard, int shards);

@@ -182,16 +182,6 @@ std::string nonceText() {
   return out;
 }
 
-std::string readSource(const std::string& path, bool& ok) {
-  std::ifstream in(path, std::ios::binary);
-  ok = static_cast<bool>(in);
-  if (!ok) return "";
-  std::string text(kSourceCap + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<size_t>(in.gcount()));
-  return text;
-}
-
 /// The picture or replay `file` as an element of a page in `pageDir`: an image, or for an HTML
 /// replay a frame with the player and a link to open it on its own.
 std::string imageTag(const std::string& file, const std::string& pageDir, const std::string& alt,
@@ -433,13 +423,13 @@ bool writeHtmlReport(const ClassResult& r, const std::vector<std::string>& paths
   std::set<std::string> used;
   for (size_t i = 0; i < r.programs.size(); ++i) {
     const ProgramResult& p = r.programs[i];
-    std::string base = fs::path(reportName(p.program, paths)).replace_extension("").string();
+    std::string base = fs::path(p.name.empty() ? reportName(p.program, paths) : p.name).replace_extension("").string();
     if (base.empty()) base = "program";
     std::string file = base + ".html";
     for (int k = 2; !used.insert(file).second; ++k) file = base + "-" + std::to_string(k) + ".html";
-    bool ok = false;
-    std::string source = p.verdict == "missing" ? "" : readSource(p.program, ok);
-    std::string page = programPage(r, i, ok ? &source : nullptr, dir, nonce);
+    // The text as graded, read before any run; a file rb did not read (a link leading out of
+    // the class folder, a FIFO) shows none.
+    std::string page = programPage(r, i, p.sourceRead ? &p.source : nullptr, dir, nonce);
     if (!render::writeFileBytes((fs::path(pagesDir) / file).string(), page.data(), page.size(), error)) return false;
     pages.push_back(relativeUrl((fs::path(pagesDir) / file).string(), dir));
   }

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,8 +28,8 @@ struct Running {
 
 /// What the child needs, prepared before fork: after fork only async-signal-safe calls happen.
 struct Prepared {
-  std::vector<std::string> strings;
-  std::vector<char*> argv;
+  std::vector<std::string> strings, envStrings;
+  std::vector<char*> argv, env;
 };
 
 int openOr(const std::string& path, int flags, const char* fallback) {
@@ -41,10 +42,15 @@ void limit(int resource, rlim_t soft, rlim_t hard) {
 }
 
 /// In the child: redirects, limits, executes. Reports errno on `report` when exec fails.
-[[noreturn]] void child(const Job& job, char* const* argv, const sigset_t& mask, int report) {
+[[noreturn]] void child(const Job& job, char* const* argv, char* const* env, const sigset_t& mask, int report,
+                        pid_t parent) {
   // A process group of its own: what the program starts (Spawn, with --allow-spawn) is in it,
   // and ends with it.
   setpgid(0, 0);
+  // Killed when rb test ends, however it ends (even by SIGKILL, which no handler sees); if it
+  // ended before this line, at once.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(127);
   sigprocmask(SIG_SETMASK, &mask, nullptr);
   int in = openOr(job.stdinPath, O_RDONLY, "/dev/null");
   int out = openOr(job.stdoutPath, O_WRONLY | O_CREAT | O_TRUNC, "/dev/null");
@@ -60,7 +66,8 @@ void limit(int resource, rlim_t soft, rlim_t hard) {
       limit(RLIMIT_CPU, cpu, cpu + 1);
     }
     limit(RLIMIT_CORE, 0, 0);
-    execv(argv[0], argv);
+    if (env) execve(argv[0], argv, env);
+    else execv(argv[0], argv);
     e = errno;
   }
   ssize_t ignored = write(report, &e, sizeof e);
@@ -110,7 +117,8 @@ std::string describe(const JobOutcome& o, const Job& job) {
 }
 
 int runJobs(const std::vector<Job>& jobs, int parallel,
-             const std::function<void(size_t, const JobOutcome&)>& done) {
+             const std::function<void(size_t, const JobOutcome&)>& done,
+             const std::function<std::string(size_t)>& start) {
   if (parallel < 1) parallel = 1;
   // SIGCHLD wakes the loop. The signals that end rb (Ctrl-C, a closed terminal, kill) are taken
   // here too while jobs run: the children, each in a process group of its own, are ended with
@@ -133,19 +141,30 @@ int runJobs(const std::vector<Job>& jobs, int parallel,
         done(index, outcome);
         continue;
       }
+      if (start) {
+        if (std::string why = start(index); !why.empty()) {
+          outcome.error = why;
+          done(index, outcome);
+          continue;
+        }
+      }
       Prepared p;
       p.strings = job.argv;
       for (std::string& s : p.strings) p.argv.push_back(s.data());
       p.argv.push_back(nullptr);
+      p.envStrings = job.env;
+      for (std::string& s : p.envStrings) p.env.push_back(s.data());
+      p.env.push_back(nullptr);
       int report[2];
       if (pipe2(report, O_CLOEXEC) != 0) {
         outcome.error = std::strerror(errno);
         done(index, outcome);
         continue;
       }
-      Clock::time_point start = Clock::now();
+      Clock::time_point started = Clock::now();
+      pid_t parent = getpid();
       pid_t pid = fork();
-      if (pid == 0) child(job, p.argv.data(), old, report[1]);
+      if (pid == 0) child(job, p.argv.data(), job.env.empty() ? nullptr : p.env.data(), old, report[1], parent);
       if (pid > 0) setpgid(pid, pid);  // also here, so that a kill never comes before it
       close(report[1]);
       if (pid < 0) {
@@ -168,7 +187,7 @@ int runJobs(const std::vector<Job>& jobs, int parallel,
       }
       auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
           job.timeoutSeconds > 0 ? job.timeoutSeconds : 1e9));
-      running.emplace(pid, Running{index, start, start + limit});
+      running.emplace(pid, Running{index, started, started + limit});
     }
     if (running.empty()) continue;
 

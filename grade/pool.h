@@ -20,6 +20,8 @@ struct Job {
   double timeoutSeconds = 30;     ///< wall clock; the child is killed (SIGKILL) after it
   uint64_t memoryBytes = 0;       ///< RLIMIT_AS (0: none)
   uint64_t fileBytes = 0;         ///< RLIMIT_FSIZE: the largest file it may write (0: none)
+  /// The child's whole environment ("NAME=value"); empty: the parent's.
+  std::vector<std::string> env;
 };
 
 struct JobOutcome {
@@ -39,12 +41,17 @@ struct JobOutcome {
 /// A short description: "exit 0", "killed by signal 11 (SIGSEGV)", "killed after 10 s".
 std::string describe(const JobOutcome& outcome, const Job& job);
 
-/// Runs every job, at most `parallel` at once (at least 1), in order of the list. `done` is
-/// called in the calling process as each job ends, with its index. Returns when all ended: 0,
-/// or the signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) that came meanwhile, after ending every
-/// running job with its process group (the caller cleans up, then ends by that signal).
+/// Runs every job, at most `parallel` at once (at least 1), in order of the list. `start`, when
+/// given, is called in the calling process just before a job starts, with its index: it makes
+/// what the job needs and returns "" or why the job cannot start (it then ends NotStarted with
+/// that error). `done` is called in the calling process as each job ends, with its index.
+/// Returns when all ended: 0, or the signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) that came
+/// meanwhile, after ending every running job with its process group (the caller cleans up, then
+/// ends by that signal). Each child dies with the calling process (PR_SET_PDEATHSIG), so even
+/// a SIGKILL of rb test leaves no program running on.
 int runJobs(const std::vector<Job>& jobs, int parallel,
-             const std::function<void(size_t, const JobOutcome&)>& done);
+             const std::function<void(size_t, const JobOutcome&)>& done,
+             const std::function<std::string(size_t)>& start = nullptr);
 
 /// True when this build runs under AddressSanitizer, whose shadow memory does not fit under a
 /// memory limit: memoryBytes is then ignored.

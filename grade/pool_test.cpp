@@ -56,7 +56,7 @@ TEST_CASE("jobs run in children with their own files and folder", "[grade][pool]
 
 TEST_CASE("a crash, a hang and a missing program fail only their own job", "[grade][pool]") {
   std::vector<Job> jobs = {shell("exit 0"), shell("kill -SEGV $$"), shell("sleep 30", 0.3),
-                           Job{{"/no/such/program"}, "", "", "", "", 5, 0, 0}, shell("exit 7")};
+                           Job{{"/no/such/program"}, "", "", "", "", 5, 0, 0, {}}, shell("exit 7")};
   std::vector<JobOutcome> got(jobs.size());
   std::vector<size_t> order;
   auto start = std::chrono::steady_clock::now();

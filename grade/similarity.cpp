@@ -172,11 +172,18 @@ void normaliseLine(const std::vector<Token>& line, const BuiltinTable& builtins,
 }
 
 /// Reads, decodes and lexes one file into normalised tokens; keeps its text when `keepText`.
-Lexed lexProgram(const std::string& path, bool keepText) {
+Lexed lexProgram(const std::string& path, bool keepText, const SimilarityOptions& options) {
   Lexed r;
   std::string raw;
   bool cut = false;
-  if (!readCapped(path, raw, cut, r.skip)) return r;
+  std::optional<std::string> given = options.source ? options.source(path) : std::nullopt;
+  if (given) {
+    raw = std::move(*given);
+    cut = raw.size() > kMaxFileBytes;
+    if (cut) raw.resize(kMaxFileBytes);
+  } else if (!readCapped(path, raw, cut, r.skip)) {
+    return r;
+  }
   if (cut) r.cuts.push_back("only its first 4 MiB are compared");
   DecodedText decoded = decodeSourceText(std::move(raw));
   if (decoded.kind == DecodedText::Binary) {
@@ -523,6 +530,7 @@ class LexedCache {
   /// The program read again, or as read for the last pairs. A reference stays valid until the
   /// cache has been asked for 8 other programs (the one asked for moves to the back; the front
   /// is forgotten first).
+  explicit LexedCache(const SimilarityOptions& options) : options_(options) {}
   const Lexed& get(uint32_t program, const std::string& path) {
     for (size_t i = 0; i < items_.size(); ++i) {
       if (items_[i].first != program) continue;
@@ -531,11 +539,12 @@ class LexedCache {
       return *items_.back().second;
     }
     if (items_.size() >= 8) items_.erase(items_.begin());
-    items_.emplace_back(program, std::make_unique<Lexed>(lexProgram(path, true)));
+    items_.emplace_back(program, std::make_unique<Lexed>(lexProgram(path, true, options_)));
     return *items_.back().second;
   }
 
  private:
+  const SimilarityOptions& options_;
   std::vector<std::pair<uint32_t, std::unique_ptr<Lexed>>> items_;
 };
 
@@ -551,7 +560,7 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
   std::vector<uint64_t> ignored;
   std::vector<fs::path> ignoredFiles;
   for (const std::string& path : options.ignore) {
-    Lexed lexed = lexProgram(path, false);
+    Lexed lexed = lexProgram(path, false, options);
     if (!lexed.skip.empty()) {
       report.notes.push_back(path + ": not used as a template: " + lexed.skip);
       continue;
@@ -577,7 +586,7 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
       ++report.skipped;
       continue;
     }
-    Lexed lexed = lexProgram(path, false);
+    Lexed lexed = lexProgram(path, false, options);
     if (lexed.skip.empty() && lexed.tokens.size() < k)
       lexed.skip = "too short to compare (" + std::to_string(lexed.tokens.size()) + " tokens; it takes " +
                    std::to_string(k) + ")";
@@ -681,7 +690,7 @@ SimilarityReport findSimilar(const std::vector<std::string>& paths, const Simila
   if (limit > 0 && kept.size() > limit) kept.resize(limit);
 
   // The kept pairs, with their blocks.
-  LexedCache cache;
+  LexedCache cache(options);
   for (const Candidate& c : kept) {
     const Program& pa = programs[c.a];
     const Program& pb = programs[c.b];

@@ -75,12 +75,17 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace rb::grade {
 
 struct SimilarityOptions {
+  /// The text of a program as graded (rb test's copy, read before any run), or nullopt to read
+  /// the file. Unset: every file is read.
+  std::function<std::optional<std::string>(const std::string& path)> source;
   /// Tokens in a k-gram: the shortest run of code two programs must share to count at all
   /// (12 tokens are about two short statements). Values below 1 count as 1.
   size_t k = 12;

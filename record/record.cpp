@@ -135,8 +135,7 @@ Polylines linesFrom(const json& j) {
 
 }  // namespace
 
-bool writeScreenFile(const std::string& path, const std::vector<render::ColourRun>& runs, int width, int height,
-                     std::string& error) {
+std::string screenFileBytes(const std::vector<render::ColourRun>& runs, int width, int height) {
   std::string bytes = "RBRUNS1 " + std::to_string(width) + " " + std::to_string(height) + " " +
                       std::to_string(runs.size()) + "\n";
   size_t head = bytes.size();
@@ -146,6 +145,12 @@ bool writeScreenFile(const std::string& path, const std::vector<render::ColourRu
       bytes[head + i * 8 + static_cast<size_t>(k)] = static_cast<char>(runs[i].count >> (8 * k));
       bytes[head + i * 8 + 4 + static_cast<size_t>(k)] = static_cast<char>(runs[i].rgb >> (8 * k));
     }
+  return bytes;
+}
+
+bool writeScreenFile(const std::string& path, const std::vector<render::ColourRun>& runs, int width, int height,
+                     std::string& error) {
+  std::string bytes = screenFileBytes(runs, width, height);
   return render::writeFileBytes(path, bytes.data(), bytes.size(), error);
 }
 
@@ -240,6 +245,7 @@ std::string recordToJson(const RunRecord& r) {
   for (const RunRecord::Touch& t : r.touches)
     j["touches"].push_back({{"rgb", t.rgb}, {"touched", t.touched}, {"x", t.at.x}, {"y", t.at.y}, {"line", t.line}});
   if (!r.worldError.empty()) j["world_error"] = toUtf8(r.worldError);
+  if (!r.confinement.empty()) j["confinement"] = toUtf8(r.confinement);
   j["posts"] = json::array();
   for (const RunRecord::Post& p : r.posts) {
     json pj = {{"file", toUtf8(p.file)}, {"output", toUtf8(p.output)}, {"ran", p.ran}};
@@ -289,6 +295,7 @@ std::optional<RunRecord> recordFromJson(std::string_view text, std::string& erro
         r.touches.push_back({t.at("rgb").get<uint32_t>(), t.at("touched").get<bool>(),
                              {t.at("x").get<double>(), t.at("y").get<double>()}, t.at("line").get<uint32_t>()});
     r.worldError = j.value("world_error", std::string());
+    r.confinement = j.value("confinement", std::string());
     if (j.contains("posts"))
       for (const json& pj : j["posts"]) {
         RunRecord::Post p;

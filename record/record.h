@@ -88,6 +88,8 @@ struct RunRecord {
   std::vector<Touch> touches;
   /// A world program run before the student's: why it failed, or "".
   std::string worldError;
+  /// What the kernel could not put in force around the run (docs/confinement.md), or "".
+  std::string confinement;
   /// Programs run after the student's, on the final state (post checks), in order.
   struct Post {
     std::string file;
@@ -141,6 +143,7 @@ render::RgbImage imageOf(const Screen& screen);
 /// The final screen travels beside the record as runs of one colour (render::composeRuns): a
 /// few kilobytes where the picture is 1.4 MB. The file: "RBRUNS1 W H N\n", then N runs of two
 /// little-endian 32-bit words (count, 0xRRGGBB).
+std::string screenFileBytes(const std::vector<render::ColourRun>& runs, int width, int height);
 bool writeScreenFile(const std::string& path, const std::vector<render::ColourRun>& runs, int width, int height,
                      std::string& error);
 std::optional<Screen> readScreenFile(const std::string& path, std::string& error);

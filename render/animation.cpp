@@ -1394,6 +1394,15 @@ std::string animationFormat(const std::string& path) {
   return "";
 }
 
+std::string encodeAnimation(const std::string& format, const Recording& recording, const PlayerSource& source,
+                            const AnimationOptions& options) {
+  if (format == "gif") {
+    const std::vector<uint8_t> gif = encodeGif(recording, options);
+    return std::string(gif.begin(), gif.end());
+  }
+  return format == "svg" ? animatedSvg(recording, options) : htmlPlayer(recording, source, options);
+}
+
 bool writeAnimation(const std::string& path, const Recording& recording, const PlayerSource& source,
                     const AnimationOptions& options, std::string& error) {
   const std::string format = animationFormat(path);
@@ -1402,12 +1411,8 @@ bool writeAnimation(const std::string& path, const Recording& recording, const P
     return false;
   }
   try {
-    if (format == "gif") {
-      const std::vector<uint8_t> gif = encodeGif(recording, options);
-      return writeFileBytes(path, gif.data(), gif.size(), error);
-    }
-    const std::string text = format == "svg" ? animatedSvg(recording, options) : htmlPlayer(recording, source, options);
-    return writeFileBytes(path, text.data(), text.size(), error);
+    const std::string bytes = encodeAnimation(format, recording, source, options);
+    return writeFileBytes(path, bytes.data(), bytes.size(), error);
   } catch (const std::exception& e) {
     error = "cannot write '" + path + "': " + e.what();
     return false;

@@ -65,6 +65,11 @@ FrameTimes animationTimes(const Recording& recording, const AnimationOptions& op
 /// when it names none of them.
 std::string animationFormat(const std::string& path);
 
+/// The animation in `format` ("gif", "svg" or "html") as bytes; throws std::exception when it
+/// cannot be made.
+std::string encodeAnimation(const std::string& format, const Recording& recording, const PlayerSource& source,
+                            const AnimationOptions& options);
+
 /// Writes the animation OUT's extension names (.gif, .svg, .html or .htm). On failure returns
 /// false with a message naming the file (or the unknown extension) in `error`.
 bool writeAnimation(const std::string& path, const Recording& recording, const PlayerSource& source,

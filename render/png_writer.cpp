@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,8 @@
 #include <stdexcept>
 
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -165,34 +168,87 @@ std::string pngDataHref(const Pixels& pixels) {
 }
 
 namespace {
-/// Writes to something that is there and is not a regular file (a FIFO, a device, /dev/stdout,
-/// a symbolic link) as it is: it is never replaced by a file.
-bool writeInPlace(const std::string& path, const void* bytes, size_t size, std::string& error) {
-  struct stat target;
-  bool regular = ::stat(path.c_str(), &target) == 0 && S_ISREG(target.st_mode);
-  int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | (regular ? O_TRUNC : 0));
-  if (fd < 0) {
-    error = "cannot write '" + path + "': " + std::strerror(errno);
-    return false;
-  }
-  const char* p = static_cast<const char*>(bytes);
-  size_t left = size;
+
+/// How long a write to a FIFO or a device may make no progress before rb gives up on it: a
+/// reader that stopped reading must not hang rb (rb test writes its reports with the signals
+/// that end it held back).
+constexpr int kStallMs = 10000;
+
+/// True when a signal that ends rb is waiting (held back while rb test grades): a write gives up
+/// so that rb can end by it.
+bool endingSignalPending() {
+  sigset_t pending;
+  if (::sigpending(&pending) != 0) return false;
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT})
+    if (::sigismember(&pending, s) == 1) return true;
+  return false;
+}
+
+/// Writes all of `bytes` to `fd`, waiting (poll) while a non-blocking descriptor is full.
+bool writeAll(int fd, const char* p, size_t left, const std::string& path, std::string& error) {
+  int waited = 0;
   while (left > 0) {
     ssize_t n = ::write(fd, p, left);
     if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      if (waited >= kStallMs || endingSignalPending()) {
+        error = "cannot write '" + path + "': " +
+                (waited >= kStallMs ? "nothing read from it for " + std::to_string(kStallMs / 1000) + " s"
+                                    : std::string("interrupted"));
+        return false;
+      }
+      struct pollfd pfd{fd, POLLOUT, 0};
+      ::poll(&pfd, 1, 100);
+      waited += 100;
+      continue;
+    }
     if (n <= 0) {
       error = "cannot write '" + path + "': " + std::strerror(n < 0 ? errno : EIO);
-      ::close(fd);
       return false;
     }
+    waited = 0;
     p += n;
     left -= static_cast<size_t>(n);
   }
-  if (::close(fd) != 0) {
+  return true;
+}
+
+/// Writes to something that is there and is not a regular file (a FIFO, a device, /dev/stdout,
+/// a symbolic link to one) as it is: it is never replaced by a file. Opened without waiting: a
+/// FIFO nobody reads is an error at once, not a hang.
+bool writeInPlace(const std::string& path, const void* bytes, size_t size, std::string& error) {
+  struct stat target;
+  bool regular = ::stat(path.c_str(), &target) == 0 && S_ISREG(target.st_mode);
+  int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NONBLOCK | (regular ? O_TRUNC : 0));
+  if (fd < 0) {
+    error = "cannot write '" + path + "': " +
+            (errno == ENXIO ? std::string("it is a FIFO nothing reads from") : std::strerror(errno));
+    return false;
+  }
+  bool ok = writeAll(fd, static_cast<const char*>(bytes), size, path, error);
+  if (::close(fd) != 0 && ok) {
     error = "cannot write '" + path + "': " + std::strerror(errno);
     return false;
   }
-  return true;
+  return ok;
+}
+
+/// A new file beside `path` under a name no other file has, opened for writing only.
+int createTemporary(const std::string& path, std::string& tmp) {
+  static const char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+  uint64_t seed = static_cast<uint64_t>(::getpid()) * 0x9E3779B97F4A7C15ull ^
+                  static_cast<uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    tmp = path + ".tmp-";
+    for (int i = 0; i < 6; ++i) {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      tmp += digits[(seed >> 33) % 36];
+    }
+    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  errno = EEXIST;
+  return -1;
 }
 }  // namespace
 
@@ -223,40 +279,25 @@ bool writeFileBytes(const std::string& path, const void* bytes, size_t size, std
     if (!S_ISLNK(st.st_mode) || !targetIsFile) return writeInPlace(path, bytes, size, error);
   }
   // A regular file (or none yet) is written beside itself under a temporary name, then renamed
-  // over: an interrupted write never leaves a truncated picture.
-  std::string tmp = path + ".tmp-XXXXXX";
-  int fd = ::mkstemp(tmp.data());
+  // over: an interrupted write never leaves a truncated picture. The file gets the usual
+  // 0666 & ~umask.
+  std::string tmp;
+  int fd = createTemporary(path, tmp);
   if (fd < 0) {
     error = "cannot write '" + path + "': " + std::strerror(errno);
     return false;
   }
-  mode_t mask = ::umask(0);  // mkstemp makes 0600; give the picture the usual 0666 & ~umask
-  ::umask(mask);
-  if (::fchmod(fd, 0666 & ~mask) != 0) {
-    // Keeping 0600 is harmless.
-  }
-  std::FILE* f = ::fdopen(fd, "wb");
-  if (!f) {
-    error = "cannot write '" + path + "': " + std::strerror(errno);
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    return false;
-  }
-  bool ok = std::fwrite(bytes, 1, size, f) == size;
-  int writeErrno = errno;
+  bool ok = writeAll(fd, static_cast<const char*>(bytes), size, path, error);
   // Close even after a failed write; a failing close (full disk, NFS) is a failed write too.
-  if (std::fclose(f) != 0 && ok) {
+  if (::close(fd) != 0 && ok) {
     ok = false;
-    writeErrno = errno;
+    error = "cannot write '" + path + "': " + std::strerror(errno);
   }
   if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
     ok = false;
-    writeErrno = errno;
+    error = "cannot write '" + path + "': " + std::strerror(errno);
   }
-  if (!ok) {
-    ::unlink(tmp.c_str());
-    error = "cannot write '" + path + "': " + std::strerror(writeErrno);
-  }
+  if (!ok) ::unlink(tmp.c_str());
   return ok;
 }
 

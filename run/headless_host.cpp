@@ -1,5 +1,6 @@
 #include "headless_host.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <unistd.h>
 
@@ -11,18 +12,24 @@
 
 namespace rb::cli {
 
-namespace {
-/// The process's resident memory in bytes (Linux: /proc/self/statm), 0 when unknown.
-uint64_t residentBytes() {
-  std::FILE* f = std::fopen("/proc/self/statm", "r");
-  if (!f) return 0;
+ResidentMemory::ResidentMemory() : fd_(::open("/proc/self/statm", O_RDONLY | O_CLOEXEC)) {}
+
+ResidentMemory::~ResidentMemory() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+uint64_t ResidentMemory::bytes() const {
+  if (fd_ < 0) return 0;
+  char buf[128];
+  ssize_t n = ::pread(fd_, buf, sizeof buf - 1, 0);
+  if (n <= 0) return 0;
+  buf[n] = '\0';
   unsigned long long pages = 0, resident = 0;
-  int got = std::fscanf(f, "%llu %llu", &pages, &resident);
-  std::fclose(f);
-  if (got != 2) return 0;
+  if (std::sscanf(buf, "%llu %llu", &pages, &resident) != 2) return 0;
   return static_cast<uint64_t>(resident) * static_cast<uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
+namespace {
 /// How far the virtual clock moves each time the program reads it, so that a loop waiting
 /// for timer() to pass a value ends.
 constexpr double kClockReadMs = 1.0;
@@ -42,10 +49,12 @@ HeadlessHost::~HeadlessHost() {
 
 void HeadlessHost::armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) {
   alarms_ = &alarms;
-  watchdog_.arm(start_, limits, alarms, residentBytes);
+  std::shared_ptr<const ResidentMemory> probe = memory;
+  watchdog_.arm(start_, limits, alarms,
+                probe ? Watchdog::MemorySampler([probe] { return probe->bytes(); }) : Watchdog::MemorySampler());
 }
 
-uint64_t HeadlessHost::memoryInUse() { return residentBytes(); }
+uint64_t HeadlessHost::memoryInUse() { return memory ? memory->bytes() : 0; }
 
 void HeadlessHost::disarmWatchdog() {
   watchdog_.disarm();

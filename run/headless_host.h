@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 #include <istream>
+#include <memory>
 
 #include "machine/host.h"
 #include "machine/machine.h"
@@ -16,6 +17,21 @@
 #include "input/input_script.h"
 
 namespace rb::cli {
+
+/// The process's resident memory, read from /proc/self/statm through a descriptor opened when
+/// this is made: so it still reads once the kernel's rules (kernel_confine.h) hide /proc.
+class ResidentMemory {
+ public:
+  ResidentMemory();
+  ~ResidentMemory();
+  ResidentMemory(const ResidentMemory&) = delete;
+  ResidentMemory& operator=(const ResidentMemory&) = delete;
+  /// Bytes resident now, 0 when unknown.
+  uint64_t bytes() const;
+
+ private:
+  int fd_ = -1;
+};
 
 class HeadlessHost : public Host {
  public:
@@ -36,6 +52,9 @@ class HeadlessHost : public Host {
   void armWatchdog(const WatchdogLimits& limits, RunAlarms& alarms) override;
   uint64_t memoryInUse() override;
   void disarmWatchdog() override;
+  /// Where memoryInUse() and the watchdog read the process's memory (made before the process is
+  /// confined); none: no memory limit can be kept.
+  std::shared_ptr<const ResidentMemory> memory;
   /// When >= 0, `input` reads this file descriptor itself (instead of the stream), waiting with
   /// poll() so that --timeout ends a run that waits for a line nobody types.
   int inputFd = -1;

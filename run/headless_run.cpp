@@ -57,6 +57,12 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
                 std::FILE* programOutput, RobotObserver* observer, HeadlessRun& run,
                 std::function<void(SourceLoc)> onLine,
                 std::function<void(std::string_view)> onOutput) {
+  // The kernel's rules first: the program and its includes are read under them too.
+  if (!run.memory) run.memory = std::make_shared<ResidentMemory>();
+  if (std::string why = confineRun(command, opts, run.outputs); !why.empty()) {
+    std::fprintf(stderr, "%s\n", why.c_str());
+    return exitcode::kRuntime;
+  }
   if (int code = run.load(command, opts, compile)) return code;
 
   InputScript script;
@@ -64,6 +70,7 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
 
   auto host = std::make_unique<HeadlessHost>(programOutput, std::cin, std::move(script));
   host->inputFd = STDIN_FILENO;
+  host->memory = run.memory;
   // A terminal shows what the user typed; a pipe or a file shows nothing, so rb writes it.
   host->echoInput = !::isatty(STDIN_FILENO);
   host->inputHook = run.onInput;

@@ -23,6 +23,12 @@ struct HeadlessRun : ProgramRun {
   std::function<std::string(HeadlessRun&)> beforeRun;
   /// Called after the program ran, whatever its end, before its output is flushed.
   std::function<void(HeadlessRun&)> afterRun;
+  /// Files the command writes after the run (rb render -o, rb trace --out): the kernel's rules
+  /// let rb create them (kernel_confine.h).
+  std::vector<std::string> outputs;
+  /// The process's memory for --max-memory, opened before the run is confined; runHeadless
+  /// makes it when the caller has not.
+  std::shared_ptr<const ResidentMemory> memory;
 };
 
 /// Builds the scripted input that --events and --keys give (script.given is false when neither

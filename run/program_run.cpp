@@ -5,6 +5,8 @@
 
 #include "diagnostic_output.h"
 #include "exit_codes.h"
+#include "files.h"
+#include "port_names.h"
 #include "robot_port.h"
 
 namespace rb::cli {
@@ -34,6 +36,49 @@ uint64_t runSeed(const RunOptions& opts) { return opts.seed ? *opts.seed : std::
 
 RunLimits runLimits(const RunOptions& opts) {
   return RunLimits::of(opts.maxSteps, opts.timeoutSeconds, opts.maxMemoryMiB);
+}
+
+uint64_t dataLimitBytes(uint64_t maxMemoryMiB) {
+  if (maxMemoryMiB == 0) return 0;
+  return (maxMemoryMiB + maxMemoryMiB / 4 + 256) << 20;
+}
+
+KernelRules runKernelRules(const RunOptions& opts, const std::vector<std::string>& outputs) {
+  namespace fs = std::filesystem;
+  KernelRules rules;
+  std::error_code ec;
+  fs::path home = opts.file == "-" ? fs::current_path(ec) : fs::absolute(opts.file, ec).parent_path();
+  rules.writeDirs.push_back(home.string());
+  for (const std::string& dir : opts.allowFiles) rules.writeDirs.push_back(fs::absolute(dir, ec).string());
+  rules.readPaths = libraryDirs();
+  if (!opts.eventsFile.empty()) rules.readPaths.push_back(fs::absolute(opts.eventsFile, ec).string());
+  if (!opts.noPorts) {
+    rules.devices = serialDevicePaths();
+    if (!opts.port.empty()) {
+      try {
+        rules.devices.push_back(drivers::resolvePortOption(opts.port));
+      } catch (const RuntimeError&) {
+        // No such port: opening it says so.
+      }
+    }
+  }
+  for (const std::string& out : outputs) {
+    if (out.empty()) continue;
+    // A FIFO or a device (-o /dev/stdout) is written as it is: that one file, never its folder.
+    fs::file_status st = fs::status(out, ec);
+    if (fs::exists(st) && !fs::is_regular_file(st)) rules.outputFiles.push_back(out);
+    else rules.outputDirs.push_back(fs::absolute(out, ec).parent_path().string());
+  }
+  rules.allowSpawn = opts.allowSpawn;
+  rules.dataBytes = dataLimitBytes(opts.maxMemoryMiB);
+  return rules;
+}
+
+std::string confineRun(const char* command, const RunOptions& opts, const std::vector<std::string>& outputs) {
+  if (opts.confined) return "";
+  KernelStatus status = confineProcess(runKernelRules(opts, outputs));
+  if (status.complete() || !opts.requireSandbox) return "";
+  return std::string(command) + ": --require-sandbox: the kernel cannot confine this run: " + status.problem;
 }
 
 std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts) {

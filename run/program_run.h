@@ -17,6 +17,7 @@
 
 #include "machine/host.h"
 #include "machine/interpreter.h"
+#include "kernel_confine.h"
 #include "machine/machine.h"
 #include "program_loader.h"
 #include "run_options.h"
@@ -65,6 +66,16 @@ int loadForRun(const char* command, const RunOptions& opts, const CompileOptions
 uint64_t runSeed(const RunOptions& opts);
 /// What the program may reach (--allow-files, --allow-spawn), its folder being FILE's.
 std::unique_ptr<Sandbox> runSandbox(const RunOptions& opts);
+/// The kernel's rules for a run from the command line: the program's folder tree and the
+/// --allow-files folders to read and change, the library folders to read, the serial ports
+/// (unless noPorts), the system folders with --allow-spawn; `outputs` are files rb itself writes
+/// after the run (rb render -o, rb trace --out), whose folders may take new files.
+KernelRules runKernelRules(const RunOptions& opts, const std::vector<std::string>& outputs = {});
+/// Puts runKernelRules in force for the rest of the process (unless opts.confined). Returns ""
+/// or, with --require-sandbox, why the kernel could not confine the run (rb then exits 70).
+std::string confineRun(const char* command, const RunOptions& opts, const std::vector<std::string>& outputs = {});
+/// The kernel's backstop under --max-memory (RLIMIT_DATA): the limit with room for rb itself.
+uint64_t dataLimitBytes(uint64_t maxMemoryMiB);
 /// --max-steps and --timeout.
 RunLimits runLimits(const RunOptions& opts);
 /// With --real: connects the robot on --port before the program starts. Returns "" or why it

@@ -33,6 +33,11 @@ struct RunOptions {
   /// rb test's runs: no serial device unless the grader allows it (the assignment's `ports`, or
   /// --trust-comments). `rb run` opens the port a program names, as RobotBASIC does.
   bool noPorts = false;
+  /// The kernel's rules (kernel_confine.h) are in force already: rb test's jobs confine
+  /// themselves before loading the program, so the run does not confine again.
+  bool confined = false;
+  /// Refuse to run when the kernel cannot confine the program (--require-sandbox).
+  bool requireSandbox = false;
   // rb run only: the live terminal view, its cell mode (ascii, half, braille or pixels; empty:
   // the best the terminal can show), its speed, whether it starts paused, and breakpoints
   // (LINE or FILE:LINE, --break, repeatable).

@@ -16,6 +16,7 @@ packages=(
   libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
   libgif-dev            # rb render --animate OUT.gif: giflib writes the animated GIF
   libre2-dev            # rb test: output patterns matched in linear time (RE2)
+  libseccomp-dev        # the seccomp filter every run of a program is under (docs/confinement.md)
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
   dpkg-dev file         # cpack's Debian package (scripts/package.sh): dpkg-shlibdeps finds what rb links
 )

@@ -220,6 +220,13 @@ int runTui(const RunOptions& opts) {
   runOpts.seed = runSeed(opts);
   std::unique_ptr<FileWatch> watch;
   if (opts.watch) watch = std::make_unique<FileWatch>();
+  // The terminal is open and the program loaded: from here on the kernel's rules hold (a
+  // restart with --watch reads the program's folder again, which they allow).
+  if (std::string refused = confineRun(kCommand, opts); !refused.empty()) {
+    screen.reset();
+    std::fprintf(stderr, "%s\n", refused.c_str());
+    return exitcode::kRuntime;
+  }
   std::unique_ptr<ProgramRun> run;
   TuiHost* view = nullptr;  // the last run's view (its run owns it)
   bool notLoaded = false;   // the view closed while the program could not be loaded
