@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "base/runtime_error.h"
+#include "base/text.h"
 
 extern char** environ;
 
@@ -30,7 +31,9 @@ bool inside(const std::string& path, const std::string& root) {
   return path.size() == root.size() || path[root.size()] == '/' || root.back() == '/';
 }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+/// 'name' for a message, with its control characters escaped (a NUL as \x00): whole, and
+/// harmless on a terminal.
+std::string quoted(const std::string& s) { return cQuoted(s, std::string_view::npos, '\''); }
 
 }  // namespace
 
