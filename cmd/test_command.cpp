@@ -19,6 +19,7 @@
 #include "report.h"
 #include "run_command.h"
 #include "test_job.h"
+#include "text.h"
 
 namespace rb::cli {
 
@@ -74,11 +75,18 @@ std::vector<std::string> includedFiles(const std::string& file) {
   return out;
 }
 
+/// "rb test: MESSAGE" on standard error. A message may quote a student's file name: it is shown
+/// as the reports show untrusted text (text.h), on one line, whole even with a NUL in it.
+void say(const std::string& message) {
+  std::string text = "rb test: " + grade::shownText(message, grade::TextShape::Line) + "\n";
+  std::fwrite(text.data(), 1, text.size(), stderr);
+}
+
 /// One feedback file per program for its student: DIR/NAME.txt.
 bool writeFeedback(const std::string& dir, const grade::ClassResult& result, const std::vector<std::string>& paths) {
   std::string why;
   if (!render::makeFolder(dir, why)) {
-    std::fprintf(stderr, "rb test: %s\n", why.c_str());
+    say(why);
     return false;
   }
   bool ok = true;
@@ -87,7 +95,7 @@ bool writeFeedback(const std::string& dir, const grade::ClassResult& result, con
     std::string name = p.name.empty() ? grade::reportName(p.program, paths) : p.name;
     std::string path = (std::filesystem::path(dir) / (name + ".txt")).string();
     if (!render::writeFileBytes(path, text.data(), text.size(), error)) {
-      std::fprintf(stderr, "rb test: %s\n", error.c_str());
+      say(error);
       ok = false;
     }
   }
@@ -111,7 +119,7 @@ bool parseShard(const std::string& text, int& k, int& n) {
 bool writeReport(const std::string& path, const std::string& text) {
   std::string error;
   if (render::writeFileBytes(path, text.data(), text.size(), error)) return true;
-  std::fprintf(stderr, "rb test: %s\n", error.c_str());
+  say(error);
   return false;
 }
 
@@ -191,11 +199,11 @@ int executeTest(const TestOptions& opts) {
     return 128 + result.interruptedBy;
   }
   if (result.fatalCode) {
-    std::fprintf(stderr, "rb test: %s\n", result.fatal.c_str());
+    say(result.fatal);
     return result.fatalCode;
   }
   result.studentView = opts.student;
-  for (const std::string& w : result.warnings) std::fprintf(stderr, "rb test: warning: %s\n", w.c_str());
+  for (const std::string& w : result.warnings) say("warning: " + w);
   bool written = true;
   if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result, g.paths) && written;
   if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
@@ -203,7 +211,7 @@ int executeTest(const TestOptions& opts) {
   if (!opts.html.empty()) {
     std::string error;
     if (!grade::writeHtmlReport(result, g.paths, opts.html, error)) {
-      std::fprintf(stderr, "rb test: %s\n", error.c_str());
+      say(error);
       written = false;
     }
   }

@@ -48,14 +48,23 @@ const char* sarifLevel(Severity s) {
   return "error";
 }
 
-/// A SARIF artifact URI: a relative path as it is (relative to where rb ran, as code scanning
-/// expects), an absolute one as a file: URI, spaces and % escaped.
+/// A SARIF artifact URI (RFC 3986): a relative path stays relative (to where rb ran, as code
+/// scanning expects), an absolute one becomes a file: URI; every byte but the unreserved
+/// characters (letters, digits, - . _ ~) and '/' is percent-encoded, so a name with a space,
+/// '#', '%', '?', ':' or a non-ASCII letter (its UTF-8 bytes) is still one valid URI path.
 std::string sarifUri(const std::string& path) {
+  static const char kHex[] = "0123456789ABCDEF";
   std::string out = !path.empty() && path[0] == '/' ? "file://" : "";
   for (char c : path) {
-    if (c == ' ') out += "%20";
-    else if (c == '%') out += "%25";
-    else out += c;
+    unsigned char b = static_cast<unsigned char>(c);
+    bool unreserved = (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z') || (b >= '0' && b <= '9') || c == '-' ||
+                      c == '.' || c == '_' || c == '~';
+    if (unreserved || c == '/') out += c;
+    else {
+      out += '%';
+      out += kHex[b >> 4];
+      out += kHex[b & 0xF];
+    }
   }
   return out;
 }

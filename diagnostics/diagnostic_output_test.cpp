@@ -86,3 +86,19 @@ TEST_CASE("text stops after --max-errors and still counts everything", "[diagnos
   CHECK(out.find("stopped after 2 errors") != std::string::npos);
   CHECK(out.substr(out.size() - 9) == "3 errors\n");
 }
+
+TEST_CASE("a SARIF artifact uri is percent-encoded as RFC 3986 wants", "[diagnostics]") {
+  auto uriOf = [](const std::string& name) {
+    SourceSet s;
+    s.add(name, "x\n");
+    DiagnosticList diags;
+    diags.error({0, 1, 1}, "bad", "rb-syntax");
+    DiagOutputOptions o;
+    o.format = DiagFormat::Sarif;
+    nlohmann::json sarif = nlohmann::json::parse(written(o, s, diags));
+    return sarif["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"].get<std::string>();
+  };
+  CHECK(uriOf("class/odd name #1 %?\xC3\xA9:[x].bas") == "class/odd%20name%20%231%20%25%3F%C3%A9%3A%5Bx%5D.bas");
+  CHECK(uriOf("a-b_c.d~e/f.bas") == "a-b_c.d~e/f.bas");
+  CHECK(uriOf("/home/ann/my square.bas") == "file:///home/ann/my%20square.bas");
+}

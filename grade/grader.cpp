@@ -16,7 +16,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include "base/text.h"
 #include "pictures.h"
 
 namespace rb::grade {
@@ -361,7 +360,7 @@ FilteredArgs Grader::commentArgs(const CommentSpec& spec, const std::string& pro
   std::string home = fs::weakly_canonical(fs::absolute(program, ec).parent_path(), ec).string() + "/";
   const std::vector<std::string>& a = spec.args;
   auto ignored = [&](const std::string& option, const std::string& why) {
-    out.notes.push_back("ignored // args: " + visibleText(option) + ": " + why);
+    out.notes.push_back("ignored // args: " + option + ": " + why);
   };
   const std::string grant = "only the person running rb test may grant it (rb test --trust-comments)";
   if (!opts_.trustComments && spec.timeoutSet && spec.timeout > kCommentTimeoutCap && !opts_.timeout)
@@ -934,7 +933,7 @@ ClassResult Grader::run() {
     if (student != students_.end()) r.student = student->second;
     if (!sourceRead_[p]) {
       r.verdict = "error";
-      r.reason = "cannot read " + visibleText(programs_[p]) + ": " + sources_[p];
+      r.reason = "cannot read " + programs_[p] + ": " + sources_[p];
       sources_[p].clear();
       continue;
     }

@@ -16,9 +16,9 @@
 
 namespace rb::grade {
 
-/// Text for HTML character data and attribute values: & < > " ' as character references; bytes
-/// that are not UTF-8 read as Latin-1, control characters (other than tab and line ends) as
-/// U+FFFD.
+/// Text for HTML character data and attribute values: shown as every report shows untrusted
+/// text (shownText in text.h: control characters in caret notation, tab and line feed kept),
+/// then & < > " ' as character references.
 std::string htmlEscape(const std::string& text);
 
 /// The URL, relative to the folder `fromDir`, of the file `to` (both as paths on this machine,

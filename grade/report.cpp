@@ -55,7 +55,10 @@ size_t width(const std::string& s) {
 std::string pad(const std::string& s, size_t w) { return s + std::string(w > width(s) ? w - width(s) : 0, ' '); }
 std::string padLeft(const std::string& s, size_t w) { return std::string(w > width(s) ? w - width(s) : 0, ' ') + s; }
 
-std::string cleanUtf8(const std::string& s, bool xml) { return toUtf8(s, xml); }
+/// Untrusted text as the reports show it (text.h): a name, a message, a reason on one line.
+std::string line(const std::string& s) { return shownText(s, TextShape::Line); }
+/// Lines: output, errors, a teacher's hint or feedback.
+std::string block(const std::string& s) { return shownText(s, TextShape::Block); }
 
 /// A check as a report shows it: hidden ones reduced to their verdict in a student's report.
 CheckResult shown(const CheckResult& c, bool student) {
@@ -84,19 +87,19 @@ json checksJson(const std::vector<CheckResult>& checks, bool student) {
   json out = json::array();
   for (const CheckResult& raw : checks) {
     CheckResult c = shown(raw, student);
-    json j = {{"name", cleanUtf8(c.name, false)},
+    json j = {{"name", line(c.name)},
               {"passed", c.passed},
               {"checked", c.checked},
-              {"message", cleanUtf8(c.message, false)},
+              {"message", line(c.message)},
               {"points", c.points},
               {"earned", c.earned}};
-    if (!c.note.empty()) j["note"] = cleanUtf8(c.note, false);
-    if (!c.hint.empty() && !c.passed) j["hint"] = cleanUtf8(c.hint, false);
+    if (!c.note.empty()) j["note"] = line(c.note);
+    if (!c.hint.empty() && !c.passed) j["hint"] = block(c.hint);
     if (c.hidden) j["hidden"] = true;
     if (c.required) j["required"] = true;
     if (!c.feedback.empty()) {
       j["feedback"] = json::array();
-      for (const std::string& f : c.feedback) j["feedback"].push_back(cleanUtf8(f, false));
+      for (const std::string& f : c.feedback) j["feedback"].push_back(block(f));
     }
     out.push_back(std::move(j));
   }
@@ -155,11 +158,11 @@ bool failed(const ProgramResult& p) { return p.verdict == "fail" || p.verdict ==
 /// files show them.
 std::string details(const ProgramResult& p, bool student, bool withErrors = true) {
   std::string out;
-  for (const std::string& n : p.notes) out += cleanUtf8(indent("note: " + n, "    "), false) + "\n";
+  for (const std::string& n : p.notes) out += "    note: " + line(n) + "\n";
   if (!p.gate.empty()) {
-    out += "    " + p.gate + " (no check counts)\n";
+    out += "    " + line(p.gate) + " (no check counts)\n";
   } else if (p.checks.empty()) {
-    out += "    " + p.reason + "\n";
+    out += "    " + line(p.reason) + "\n";
   }
   bool hiddenSaid = false;
   std::vector<CheckResult> list;
@@ -193,23 +196,33 @@ std::string details(const ProgramResult& p, bool student, bool withErrors = true
     list.push_back(c);
   }
   for (const CheckResult& c : list) {
-    std::string text = c.name + ": " + c.message;
-    if (!c.note.empty()) text += " (" + c.note + ")";
-    out += cleanUtf8(indent(text, "    "), false) + "\n";
-    for (const std::string& f : c.feedback) out += cleanUtf8(indent(f, "      "), false) + "\n";
-    if (!c.hint.empty()) out += cleanUtf8(indent("hint: " + c.hint, "      "), false) + "\n";
+    out += "    " + line(c.name) + ": " + line(c.message);
+    if (!c.note.empty()) out += " (" + line(c.note) + ")";
+    out += "\n";
+    for (const std::string& f : c.feedback) out += indent(block(f), "      ") + "\n";
+    if (!c.hint.empty()) out += indent("hint: " + block(c.hint), "      ") + "\n";
   }
   if (!voided.empty()) {
     std::string names;
-    for (const std::string& n : voided) names += (names.empty() ? "" : ", ") + n;
-    out += cleanUtf8(indent("passed, " + voidedBy + ": " + names, "    "), false) + "\n";
+    for (const std::string& n : voided) names += (names.empty() ? "" : ", ") + line(n);
+    out += "    passed, " + line(voidedBy) + ": " + names + "\n";
   }
   if (outputCheckFailed(p) && !p.output.empty()) {
     out += p.inputs.empty() ? "    what it printed:\n" : "    what it printed (> marks a line where input showed its prompt and read [text]):\n";
-    out += cleanUtf8(indent(transcript(p), "      "), false) + "\n";
+    out += indent(block(transcript(p)), "      ") + "\n";
   }
-  if (withErrors && !p.errors.empty()) out += "    error output:\n" + cleanUtf8(indent(p.errors, "      "), false) + "\n";
+  if (withErrors && !p.errors.empty()) out += "    error output:\n" + indent(block(p.errors), "      ") + "\n";
   return out;
+}
+
+/// The output as the JSON report shows it (block()), and where input marked it in that text.
+std::pair<std::string, std::vector<RunRecord::InputMark>> shownOutput(const ProgramResult& p) {
+  std::vector<size_t> offsets;
+  for (const RunRecord::InputMark& m : p.inputs) offsets.insert(offsets.end(), {m.start, m.promptEnd, m.end});
+  std::string text = shownText(p.output, TextShape::Block, &offsets);
+  std::vector<RunRecord::InputMark> marks;
+  for (size_t i = 0; i + 2 < offsets.size(); i += 3) marks.push_back({offsets[i], offsets[i + 1], offsets[i + 2]});
+  return {text, marks};
 }
 
 }  // namespace
@@ -219,7 +232,7 @@ std::string shownReason(const ProgramResult& program, bool student) { return rea
 std::string outputTranscript(const ProgramResult& program) { return transcript(program); }
 
 std::string markupEscape(const std::string& text, std::string_view apostrophe) {
-  std::string clean = cleanUtf8(text, true), out;
+  std::string clean = block(text), out;
   out.reserve(clean.size());
   for (char c : clean) {
     switch (c) {
@@ -243,8 +256,8 @@ std::string textReport(const ClassResult& r, bool showDetails) {
   for (const ProgramResult& p : r.programs) students = students || !p.student.empty();
   size_t nameWidth = 7, studentWidth = 7;
   for (const ProgramResult& p : r.programs) {
-    nameWidth = std::max(nameWidth, std::min<size_t>(width(p.program), 60));
-    studentWidth = std::max(studentWidth, std::min<size_t>(width(p.student), 30));
+    nameWidth = std::max(nameWidth, std::min<size_t>(width(line(p.program)), 60));
+    studentWidth = std::max(studentWidth, std::min<size_t>(width(line(p.student)), 30));
   }
   out += pad("program", nameWidth) + "  " + (students ? pad("student", studentWidth) + "  " : "") + "result  " +
          (r.assignment ? padLeft("points", 9) + "  " : "") + padLeft("steps", 9) + "  " + padLeft("time", 7) +
@@ -253,13 +266,13 @@ std::string textReport(const ClassResult& r, bool showDetails) {
     std::string verdict = p.verdict == "pass" ? "pass" : upper(p.verdict);
     if (verdict == "MISSING") verdict = "MISS";
     bool ran = p.verdict != "skip" && p.verdict != "missing" && !(p.checks.empty() && p.verdict == "fail");
-    std::string line = pad(p.program, nameWidth) + "  " + (students ? pad(p.student, studentWidth) + "  " : "") +
-                       pad(verdict, 6) + "  " +
-                       (r.assignment ? padLeft(pointsText(p.points) + "/" + pointsText(p.maxPoints), 9) + "  " : "") +
-                       padLeft(ran ? std::to_string(p.steps) : "-", 9) + "  " +
-                       padLeft(ran ? seconds(p.seconds, "%.2fs") : "-", 7) + "  " + firstLine(reasonOf(p, r.studentView));
-    while (!line.empty() && line.back() == ' ') line.pop_back();
-    out += cleanUtf8(line, false) + "\n";
+    std::string row = pad(line(p.program), nameWidth) + "  " + (students ? pad(line(p.student), studentWidth) + "  " : "") +
+                      pad(verdict, 6) + "  " +
+                      (r.assignment ? padLeft(pointsText(p.points) + "/" + pointsText(p.maxPoints), 9) + "  " : "") +
+                      padLeft(ran ? std::to_string(p.steps) : "-", 9) + "  " +
+                      padLeft(ran ? seconds(p.seconds, "%.2fs") : "-", 7) + "  " + line(reasonOf(p, r.studentView));
+    while (!row.empty() && row.back() == ' ') row.pop_back();
+    out += row + "\n";
   }
   if (showDetails) {
     bool header = false;
@@ -270,7 +283,7 @@ std::string textReport(const ClassResult& r, bool showDetails) {
       if (p.verdict == "missing" || (p.checks.empty() && p.gate.empty())) continue;  // the table said it all
       if (!header) out += "\n";
       header = true;
-      out += p.program + (p.student.empty() ? "" : " (" + p.student + ")") + ":\n";
+      out += line(p.program) + (p.student.empty() ? "" : " (" + line(p.student) + ")") + ":\n";
       out += details(p, r.studentView);
     }
   }
@@ -286,63 +299,72 @@ std::string textReport(const ClassResult& r, bool showDetails) {
 }
 
 std::string studentFeedback(const ProgramResult& p, const ClassResult& r) {
-  std::string out = r.title + ": " + p.program + (p.student.empty() ? "" : " (" + p.student + ")") + "\n";
+  std::string out = line(r.title) + ": " + line(p.program) + (p.student.empty() ? "" : " (" + line(p.student) + ")") + "\n";
   out += "result: " + std::string(p.verdict == "pass" ? "passed" : p.verdict == "missing" ? "no submission" : "not passed");
   if (r.assignment) out += ", " + pointsText(p.points) + " of " + pointsText(p.maxPoints) + " points";
   out += "\n\n";
   if (p.checks.empty() || !p.gate.empty()) {
-    out += reasonOf(p, true) + "\n";
+    out += line(reasonOf(p, true)) + "\n";
     if (!p.gate.empty()) return out;
   }
   for (const CheckResult& raw : p.checks) {
     CheckResult c = shown(raw, true);
     std::string mark = !c.checked ? "[ ]" : c.passed ? "[x]" : "[!]";
     std::string pts = r.assignment ? " (" + pointsText(c.earned) + "/" + pointsText(c.points) + ")" : "";
-    out += cleanUtf8(mark + " " + c.name + pts + ": " + c.message, false) + "\n";
-    if (!c.note.empty()) out += "      " + cleanUtf8(c.note, false) + "\n";
-    for (const std::string& f : c.feedback) out += cleanUtf8(indent(f, "      "), false) + "\n";
-    if (!c.passed && !c.hint.empty()) out += cleanUtf8(indent("hint: " + c.hint, "      "), false) + "\n";
+    out += mark + " " + line(c.name) + pts + ": " + line(c.message) + "\n";
+    if (!c.note.empty()) out += "      " + line(c.note) + "\n";
+    for (const std::string& f : c.feedback) out += indent(block(f), "      ") + "\n";
+    if (!c.passed && !c.hint.empty()) out += indent("hint: " + block(c.hint), "      ") + "\n";
   }
   if (!p.output.empty()) {
     out += "\nyour program's output" + std::string(p.inputs.empty() ? "" : " (> marks where input showed its prompt and read [text])") + ":\n";
-    out += cleanUtf8(indent(transcript(p), "  "), false) + "\n";
+    out += indent(block(transcript(p)), "  ") + "\n";
   }
-  if (!p.errors.empty()) out += "\nerror output:\n" + cleanUtf8(indent(p.errors, "  "), false) + "\n";
+  if (!p.errors.empty()) out += "\nerror output:\n" + indent(block(p.errors), "  ") + "\n";
   return out;
 }
 
 std::string jsonReport(const ClassResult& r) {
   json doc;
-  doc["title"] = r.title;
+  doc["title"] = line(r.title);
   doc["timestamp"] = r.timestamp;
   if (r.studentView) doc["student_view"] = true;
   doc["programs"] = json::array();
   for (const ProgramResult& p : r.programs) {
-    json j = {{"program", cleanUtf8(p.program, false)}, {"result", p.verdict}, {"reason", cleanUtf8(reasonOf(p, r.studentView), false)},
+    json j = {{"program", line(p.program)}, {"result", p.verdict}, {"reason", line(reasonOf(p, r.studentView))},
               {"steps", p.steps},     {"seconds", p.seconds}, {"points", p.points},
               {"max_points", p.maxPoints}, {"checks", checksJson(p.checks, r.studentView)}};
-    if (!p.student.empty()) j["student"] = cleanUtf8(p.student, false);
-    if (!p.gate.empty()) j["gate"] = cleanUtf8(p.gate, false);
+    if (!p.student.empty()) j["student"] = line(p.student);
+    if (!p.gate.empty()) j["gate"] = line(p.gate);
     if (!p.notes.empty()) {
       j["notes"] = json::array();
-      for (const std::string& n : p.notes) j["notes"].push_back(cleanUtf8(n, false));
+      for (const std::string& n : p.notes) j["notes"].push_back(line(n));
     }
-    if (!p.picture.empty()) j["picture"] = p.picture;
-    if (!p.replay.empty()) j["replay"] = p.replay;
-    if (!p.output.empty()) j["output"] = cleanUtf8(p.output, false);
-    if (!p.inputs.empty()) {
-      j["inputs"] = json::array();
-      for (const RunRecord::InputMark& m : p.inputs)
-        j["inputs"].push_back({{"start", m.start}, {"prompt_end", m.promptEnd}, {"end", m.end}});
+    if (!p.picture.empty()) j["picture"] = toUtf8(p.picture);
+    if (!p.replay.empty()) j["replay"] = toUtf8(p.replay);
+    if (!p.output.empty()) {
+      auto [output, marks] = shownOutput(p);
+      j["output"] = output;
+      if (!marks.empty()) {
+        j["inputs"] = json::array();
+        for (const RunRecord::InputMark& m : marks)
+          j["inputs"].push_back({{"start", m.start}, {"prompt_end", m.promptEnd}, {"end", m.end}});
+      }
     }
-    if (!p.errors.empty()) j["errors"] = cleanUtf8(p.errors, false);
+    if (!p.errors.empty()) j["errors"] = block(p.errors);
     doc["programs"].push_back(std::move(j));
   }
   if (r.similarity && !r.studentView) doc["similarity"] = json::parse(similarityJson(*r.similarity));
   doc["summary"] = {{"programs", r.programs.size() - r.missing}, {"passed", r.passed}, {"failed", r.failed},
                     {"errors", r.errors},           {"skipped", r.skipped}, {"missing", r.missing},
                     {"seconds", r.seconds}};
-  return doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+  // The paths of pictures and replays are kept as they are, to be opened: a "##[" in them (a
+  // GitHub runner's older workflow command, looked for anywhere in a line) is written with
+  // JSON's escape for the second '#', which reads back as the same path.
+  std::string text = doc.dump(2, ' ', false, json::error_handler_t::replace);
+  for (size_t at = text.find("##["); at != std::string::npos; at = text.find("##[", at))
+    text.replace(at + 1, 1, "\\u0023");
+  return text + "\n";
 }
 
 std::string junitReport(const ClassResult& r) {
@@ -419,16 +441,16 @@ std::string csvReport(const ClassResult& r) {
                     "program,result,points,max_points,checks_passed,checks,steps,seconds,reason";
   for (const std::string& n : names) {
     out += ',';
-    out += csvField(n);
+    out += csvTextField(n);
   }
   out += '\n';
   for (const ProgramResult& p : r.programs) {
     size_t passed = 0;
     for (const CheckResult& c : p.checks) passed += c.passed;
-    out += (students ? csvField(cleanUtf8(p.student, false)) + "," : "") + csvField(p.program) + "," + p.verdict + "," +
+    out += (students ? csvTextField(p.student) + "," : "") + csvTextField(p.program) + "," + p.verdict + "," +
            pointsText(p.points) + "," + pointsText(p.maxPoints) + "," + std::to_string(passed) + "," +
            std::to_string(p.checks.size()) + "," + std::to_string(p.steps) + "," + seconds(p.seconds) + "," +
-           csvField(cleanUtf8(reasonOf(p, r.studentView), false));
+           csvTextField(reasonOf(p, r.studentView));
     for (size_t i = 0; i < names.size(); ++i) {
       out += ',';
       if (i < p.checks.size()) out += pointsText(p.checks[i].earned);

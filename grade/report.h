@@ -1,6 +1,8 @@
 #pragma once
 // The reports of a graded class: the summary table for the terminal, JSON, JUnit XML (which
-// GitHub, GitLab and Jenkins show) and a CSV grade book.
+// GitHub, GitLab and Jenkins show) and a CSV grade book. Every text that comes from a student's
+// program (names, output, errors, the messages quoting them) goes through shownText (text.h):
+// no report carries a control character, a workflow command or a spreadsheet formula of theirs.
 
 #include <string>
 #include <string_view>
@@ -37,11 +39,11 @@ std::string shownReason(const ProgramResult& program, bool student);
 /// "> " and the text it read is in [brackets]; other lines start with two blanks.
 std::string outputTranscript(const ProgramResult& program);
 
-/// Text escaped for XML character data and attribute values. Bytes that are not UTF-8 are
-/// read as Latin-1; control characters XML 1.0 cannot carry become U+FFFD.
-/// Text for XML or HTML: valid UTF-8 without XML's forbidden controls, & < > " escaped, and ' as
-/// `apostrophe` (XML's "&apos;", or HTML's "&#39;").
+/// Text for XML or HTML: shown as every report shows untrusted text (shownText in text.h, as
+/// lines: control characters in caret notation, tab and line feed kept), then & < > " escaped,
+/// and ' as `apostrophe` (XML's "&apos;", or HTML's "&#39;").
 std::string markupEscape(const std::string& text, std::string_view apostrophe);
+/// markupEscape for XML (character data and attribute values).
 std::string xmlEscape(const std::string& text);
 
 }  // namespace rb::grade

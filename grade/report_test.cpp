@@ -69,15 +69,15 @@ TEST_CASE("the JUnit report escapes and counts", "[grade][report]") {
   CHECK(xml.find("<failure message=\"trail is 60 px") != std::string::npos);
   CHECK(xml.find("type=\"trail\"") != std::string::npos);
   CHECK(xml.find("<skipped message=\"not a test\"/>") != std::string::npos);
-  CHECK(xml.find("caf\xC3\xA9 \xEF\xBF\xBD bell") != std::string::npos);  // é from Latin-1, U+FFFD for ^A
+  CHECK(xml.find("caf\xC3\xA9 ^A bell") != std::string::npos);  // é from Latin-1, ^A shown
 }
 
 TEST_CASE("XML escaping keeps text valid", "[grade][report]") {
   CHECK(xmlEscape("a<b>&\"'") == "a&lt;b&gt;&amp;&quot;&apos;");
   CHECK(xmlEscape("tab\tnew\nline") == "tab\tnew\nline");
-  CHECK(xmlEscape("\x1b[31m") == "\xEF\xBF\xBD[31m");
+  CHECK(xmlEscape("\x1b[31m") == "^[[31m");
   CHECK(xmlEscape("\xE2\x82\xAC") == "\xE2\x82\xAC");  // UTF-8 stays
-  CHECK(xmlEscape("\xE2\x82") == "\xC3\xA2\xC2\x82");  // a cut sequence is read as Latin-1
+  CHECK(xmlEscape("\xE2\x82") == "\xC3\xA2\\x82");  // a cut sequence is read as Latin-1, C1 shown
 }
 
 TEST_CASE("the JSON and CSV reports", "[grade][report]") {
@@ -173,4 +173,105 @@ TEST_CASE("points, notes and missing students in the reports", "[grade][report]"
   std::string xml = junitReport(r);
   CHECK(xml.find("name=\"bob.bas (Bob)\"") != std::string::npos);
   CHECK(xml.find("failures=\"2\"") != std::string::npos);
+}
+
+namespace {
+
+/// A class with one program whose every text is hostile: a file name with a line feed and a
+/// workflow command, a spreadsheet formula for a student's name, output that clears the
+/// terminal, moves its cursor to print a "pass" row and sets its clipboard (OSC 52), C1 CSI.
+ClassResult hostileClass() {
+  ClassResult r = sample();
+  r.assignment = true;
+  ProgramResult& p = r.programs[1];
+  p.program = "class/x\n::error::forged\r##[error]old.bas";
+  p.student = "@SUM(1)";
+  p.reason = "=HYPERLINK(\"http://x\",\"y\")";
+  p.checks = {result("solution-output", false, "output differs: got \x1b[2J", 1)};
+  p.checks[0].note = "note\x07";
+  p.checks[0].hint = "hint\x1b]52;c;aGk=\x07";
+  p.notes = {"ignored // args: \x1b[31m"};
+  p.output = std::string("\x1b[2J\x1b[1;1Hclass/b.bas  pass  2/2\n::error file=a.bas::forged\n\xC2\x9B" "2J\x9b" "2J\n") +
+             std::string("a\0b\x7f\n", 5) + "  ##[warning]x\n";
+  p.errors = "\x1b]52;c;ZXZpbA==\x07\n    ::add-mask::secret\n";
+  return r;
+}
+
+/// What a report must never carry from a student: a control character but LF (and tab), a C1
+/// control, a line a GitHub runner would take as a workflow command.
+void checkInert(const std::string& report) {
+  INFO(report);
+  for (size_t i = 0; i < report.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(report[i]);
+    CHECK((c >= 0x20 || c == '\n' || c == '\t'));
+    CHECK(c != 0x7F);
+    if (c == 0xC2 && i + 1 < report.size()) CHECK(!(static_cast<unsigned char>(report[i + 1]) >= 0x80 &&
+                                                    static_cast<unsigned char>(report[i + 1]) <= 0x9F));
+  }
+  CHECK(report.find("##[") == std::string::npos);
+  size_t start = 0;
+  while (start <= report.size()) {
+    size_t end = report.find('\n', start);
+    if (end == std::string::npos) end = report.size();
+    std::string lineText = report.substr(start, end - start);
+    size_t first = lineText.find_first_not_of(" \t");
+    CHECK((first == std::string::npos || lineText.compare(first, 2, "::") != 0));
+    start = end + 1;
+  }
+}
+
+}  // namespace
+
+TEST_CASE("no report carries a student's control characters or workflow commands", "[grade][report]") {
+  ClassResult r = hostileClass();
+  const ProgramResult& p = r.programs[1];
+  std::string text = textReport(r, true);
+  for (const std::string& report : {text, studentFeedback(p, r), jsonReport(r), junitReport(r), csvReport(r)})
+    checkInert(report);
+  // Shown, not dropped: the escapes say what was there.
+  CHECK(text.find("class/x\\n::error::forged\\r\\x23#[error]old.bas") != std::string::npos);
+  CHECK(text.find("output differs: got ^[[2J") != std::string::npos);
+  CHECK(text.find("  ^[[2J^[[1;1Hclass/b.bas  pass  2/2\n") != std::string::npos);
+  CHECK(text.find("\\x3a:error file=a.bas::forged") != std::string::npos);
+  CHECK(text.find("\\x9b2J\\x9b2J") != std::string::npos);
+  CHECK(text.find("a^@b^?") != std::string::npos);
+  CHECK(text.find("^[]52;c;ZXZpbA==^G") != std::string::npos);
+  CHECK(text.find("hint: hint^[]52;c;aGk=^G") != std::string::npos);
+  // The JSON text reads back to the same shown text, output on lines.
+  nlohmann::json doc = nlohmann::json::parse(jsonReport(r));
+  CHECK(doc["programs"][1]["output"].get<std::string>().find("\n\\x3a:error file=a.bas::forged\n") != std::string::npos);
+  CHECK(doc["programs"][1]["student"] == "@SUM(1)");
+}
+
+TEST_CASE("the CSV grade book starts no formula", "[grade][report]") {
+  ClassResult r = hostileClass();
+  std::string csv = csvReport(r);
+  CHECK(csv.find("\n'@SUM(1),") != std::string::npos);
+  CHECK(csv.find(",\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\"") != std::string::npos);
+  CHECK(csv.find(",=") == std::string::npos);
+  CHECK(csv.find("\n@") == std::string::npos);
+}
+
+TEST_CASE("the JSON report's input marks point into the output shown", "[grade][report]") {
+  ClassResult r = sample();
+  ProgramResult& p = r.programs[1];
+  p.checks = {result("solution-output", false, "output differs at line 1", 1)};
+  p.output = "\x1b[1mHow many?\x1b[0m 6\nsides: 6\n";  // bold prompt: each ESC is shown as two characters
+  p.inputs = {{0, 18, 20}};
+  nlohmann::json doc = nlohmann::json::parse(jsonReport(r));
+  std::string output = doc["programs"][1]["output"];
+  const nlohmann::json& mark = doc["programs"][1]["inputs"][0];
+  CHECK(mark["start"] == 0);
+  CHECK(mark["prompt_end"] == 20);
+  CHECK(mark["end"] == 22);
+  CHECK(output.substr(0, 20) == "^[[1mHow many?^[[0m ");
+  CHECK(output.substr(20, 2) == "6\n");
+}
+
+TEST_CASE("the JSON report keeps a picture's path whole but writes no \"##[\"", "[grade][report]") {
+  ClassResult r = sample();
+  r.programs[0].picture = "pictures/##[error]x.png";
+  std::string json = jsonReport(r);
+  CHECK(json.find("##[") == std::string::npos);
+  CHECK(nlohmann::json::parse(json)["programs"][0]["picture"] == "pictures/##[error]x.png");
 }

@@ -732,10 +732,10 @@ std::string percent(double share) {
 }
 
 /// `raw` in exactly `width` columns (width >= 1): tabs as spaces to the next multiple of 4,
-/// control characters as '?', cut to width - 1 columns and a '~' when longer, padded with
-/// spaces when shorter. A character of UTF-8 counts as one column.
+/// control characters as the reports show them (shownText), cut to width - 1 columns and a '~'
+/// when longer, padded with spaces when shorter. A character of UTF-8 counts as one column.
 std::string fit(std::string_view raw, size_t width) {
-  std::string text = toUtf8(raw);
+  std::string text = shownText(raw, TextShape::Block);
   std::vector<std::string> pieces;  // one column each
   for (size_t i = 0; i < text.size();) {
     unsigned char c = static_cast<unsigned char>(text[i]);
@@ -793,7 +793,7 @@ std::string similarityText(const SimilarityReport& r) {
   }
   size_t rank = 0;
   for (const SimilarPair& p : r.pairs) {
-    std::string a = toUtf8(p.a), b = toUtf8(p.b);
+    std::string a = shownText(p.a, TextShape::Line), b = shownText(p.b, TextShape::Line);
     out += "\n" + std::to_string(++rank) + ". " + percent(p.score) + "  " + a + "  and  " + b + "\n";
     out += "   " + std::to_string(p.shared) + " fingerprints in common: " + percent(p.shareA) + " of " + a +
            "'s " + std::to_string(p.fingerprintsA) + ", " + percent(p.shareB) + " of " + b + "'s " +
@@ -833,7 +833,7 @@ std::string similarityText(const SimilarityReport& r) {
     }
   }
   if (!r.notes.empty()) out += "\n";
-  for (const std::string& note : r.notes) out += "note: " + toUtf8(note) + "\n";
+  for (const std::string& note : r.notes) out += "note: " + shownText(note, TextShape::Line) + "\n";
   return out;
 }
 
@@ -845,8 +845,8 @@ std::string similarityJson(const SimilarityReport& r) {
     ordered_json blocks = ordered_json::array();
     for (const SharedBlock& b : p.blocks) {
       ordered_json linesA = ordered_json::array(), linesB = ordered_json::array();
-      for (const std::string& l : b.linesA) linesA.push_back(toUtf8(l));
-      for (const std::string& l : b.linesB) linesB.push_back(toUtf8(l));
+      for (const std::string& l : b.linesA) linesA.push_back(shownText(l, TextShape::Block));
+      for (const std::string& l : b.linesB) linesB.push_back(shownText(l, TextShape::Block));
       ordered_json rows = ordered_json::array();
       auto line = [](uint32_t l) { return l ? ordered_json(l) : ordered_json(nullptr); };
       for (const SharedBlock::Row& row : b.rows) rows.push_back({line(row.a), line(row.b)});
@@ -857,8 +857,8 @@ std::string similarityJson(const SimilarityReport& r) {
                         {"lines_b", std::move(linesB)},
                         {"rows", std::move(rows)}});
     }
-    doc.push_back({{"a", toUtf8(p.a)},
-                   {"b", toUtf8(p.b)},
+    doc.push_back({{"a", shownText(p.a, TextShape::Line)},
+                   {"b", shownText(p.b, TextShape::Line)},
                    {"score", round4(p.score)},
                    {"share_a", round4(p.shareA)},
                    {"share_b", round4(p.shareB)},

@@ -60,13 +60,9 @@ std::string join(const std::string& a, const std::string& b) {
   return a + "/" + b;
 }
 
-/// A name as a message shows it: quoted, its control characters visible.
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  out += visibleText(s);
-  out += '\'';
-  return out;
-}
+/// 'name' for a message, with its control characters escaped (a NUL as \x00): whole, and
+/// harmless on a terminal.
+std::string quoted(const std::string& s) { return cQuoted(s, std::string_view::npos, '\''); }
 
 /// The last component of `path` and the folder it is in ("" when none), trailing slashes aside.
 std::pair<std::string, std::string> splitLast(std::string path) {

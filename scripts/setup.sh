@@ -23,6 +23,7 @@ packages=(
 test_packages=(
   catch2                # unit tests
   libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
+  cmark-gfm             # GitHub's Markdown renderer: the action's job summary rendered as GitHub does (testdata/action)
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
   tmux                  # end-to-end tests of the terminal view
   python3               # golden-test helpers and PNG checks

@@ -11,11 +11,14 @@ namespace rb {
 class RuntimeError : public std::runtime_error {
  public:
   explicit RuntimeError(const std::string& message, const char* code = "rb-runtime-error")
-      : std::runtime_error(message), code_(code) {}
+      : std::runtime_error(message), message_(message), code_(code) {}
   /// The rule code of the diagnostic it becomes (docs/diagnostics.md).
   const char* code() const { return code_; }
+  /// The whole message: what() ends at a NUL byte a program's text may have put into it.
+  const std::string& message() const { return message_; }
 
  private:
+  std::string message_;
   const char* code_;
 };
 

@@ -7,14 +7,9 @@
 
 namespace rb {
 
-/// `s` in double quotes with C escapes (\" \\ \n \r \t \xNN for other control bytes); after
-/// `maxChars` characters the rest is cut and "..." stands for it.
-std::string cQuoted(std::string_view s, size_t maxChars = std::string_view::npos);
-
-/// `s` on one line with nothing a terminal would obey: newline, return and tab as `\n`, `\r`,
-/// `\t`, other control characters in caret notation (`^[` for ESC, `^@` for NUL, `^?` for DEL),
-/// C1 controls (U+0080..U+009F) and bytes that are not UTF-8 as `\xNN`. For names a program
-/// chose (file names in messages).
-std::string visibleText(std::string_view s);
+/// `s` in double quotes with C escapes (\" \\ \n \r \t \xNN for other control bytes and DEL);
+/// after `maxChars` characters the rest is cut and "..." stands for it. With `quote` '\'' it is
+/// in single quotes (\' escaped instead of \"), as messages quote names.
+std::string cQuoted(std::string_view s, size_t maxChars = std::string_view::npos, char quote = '"');
 
 }  // namespace rb

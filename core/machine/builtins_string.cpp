@@ -8,6 +8,7 @@
 
 #include "machine/builtins_impl.h"
 #include "base/runtime_error.h"
+#include "base/text.h"
 
 namespace rb::builtins {
 
@@ -184,7 +185,7 @@ Value strToNumber(Machine&, Args& a) {
   Value v;
   if (parseNumber(a.str(0), v)) return v;
   if (a.has(1)) return a[1];
-  throw RuntimeError("toNumber(): \"" + a.str(0) + "\" is not a number");
+  throw RuntimeError("toNumber(): " + cQuoted(a.str(0)) + " is not a number");
 }
 
 Value strIsNumber(Machine&, Args& a) { return Value::boolean(a[0].isNumeric()); }

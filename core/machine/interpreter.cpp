@@ -493,7 +493,7 @@ RunResult Interpreter::run(const RunLimits& limits) {
     } else {
       result.status = RunStatus::RuntimeError;
       SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
-      result.error = Diagnostic{Severity::Error, loc, e.what(), e.code()};
+      result.error = Diagnostic{Severity::Error, loc, e.message(), e.code()};
       result.error->notes = callChain();
     }
   } catch (const std::bad_alloc&) {

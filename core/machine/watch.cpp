@@ -345,7 +345,7 @@ WatchResult Watch::evaluate(const std::vector<VariableView>& variables, Machine&
   try {
     r.value = Evaluator(variables, machine).eval(parsed_->root);
   } catch (const RuntimeError& e) {
-    r.error = e.what();
+    r.error = e.message();
   } catch (const std::bad_alloc&) {
     r.error = "out of memory";
   }

@@ -23,9 +23,11 @@ action turns into the job's result after the reports are uploaded), and 2 when t
 do their work (no rb, no report).
 """
 import base64
+import html
 import json
 import os
 import re
+import secrets
 import shlex
 import subprocess
 import sys
@@ -86,6 +88,22 @@ def annotation(level, message, file=None, line=None, col=None, title=None):
     return f"::{level} {','.join(props)}::{escape_data(message)}" if props else f"::{level}::{escape_data(message)}"
 
 
+def echo_untrusted(text, stream=None):
+    """Text the runner must only show (rb's own error output, which quotes the students' file
+    names and messages): written between ::stop-commands::TOKEN and ::TOKEN:: with a token no
+    one can guess, so that no line of it is taken as a workflow command. The runner looks for
+    commands in a step's standard output and error alike, in the order each arrives: all three
+    go to one stream, standard output unless another is given."""
+    if not text:
+        return
+    stream = stream or sys.stdout
+    token = "rb-" + secrets.token_hex(16)
+    stream.write(f"::stop-commands::{token}\n")
+    stream.write(text if text.endswith("\n") else text + "\n")
+    stream.write(f"::{token}::\n")
+    stream.flush()
+
+
 def workspace_path(path):
     """A path as GitHub's annotations want it: relative to the workspace (the repository)."""
     workspace = os.environ.get("GITHUB_WORKSPACE") or os.getcwd()
@@ -98,10 +116,18 @@ def workspace_path(path):
 
 
 def cell(text):
-    """Text for a cell of a Markdown table: one line, pipes escaped, HTML's specials kept as text."""
-    text = " ".join(str(text).split())
-    text = text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
-    return text.replace("|", "\\|")
+    """Text for the job summary, which GitHub renders as Markdown: one line (blanks and line
+    ends as one space), HTML's specials as character references. The summary puts it only
+    inside HTML blocks (a <table>, <h2>, <p>, <pre>), where Markdown makes no link, image,
+    emphasis or markup of anything: a student's `[x](url)`, `![x](url)`, `<img>` or bare URL
+    stays text."""
+    return html.escape(" ".join(str(text).split()), quote=True)
+
+
+def code(text):
+    """A student's text (a file name, a name, a message quoting their output) in <code>: shown
+    as it is, and left alone by GitHub's own passes over rendered text (mentions, references)."""
+    return f"<code>{cell(text)}</code>"
 
 
 def points_text(value):
@@ -227,12 +253,15 @@ def error_location(program):
 
 
 def summary_markdown(report, exit_code, reports_dir):
+    """The job summary: a heading, the totals, and a table with a row per program. What comes
+    from the report is in HTML blocks with its text escaped (cell()): nothing a student wrote
+    becomes a link, an image or markup. Each block has no blank line inside, which would end it."""
     s = report.get("summary", {})
     programs = report.get("programs", [])
     points = sum(float(p.get("points", 0) or 0) for p in programs)
     max_points = sum(float(p.get("max_points", 0) or 0) for p in programs)
     title = report.get("title") or "rb test"
-    lines = [f"## {cell(title)}", ""]
+    lines = [f"<h2>{cell(title)}</h2>", ""]
     total = f"{s.get('programs', len(programs))} programs: {s.get('passed', 0)} passed, {s.get('failed', 0)} failed"
     for key in ("errors", "skipped", "missing"):
         if s.get(key):
@@ -242,20 +271,20 @@ def summary_markdown(report, exit_code, reports_dir):
     lines += [("✅ " if exit_code == 0 else "❌ ") + total, ""]
     has_students = any(p.get("student") for p in programs)
     head = ["program"] + (["student"] if has_students else []) + ["result", "points", "failed checks"]
-    lines.append("| " + " | ".join(head) + " |")
-    lines.append("|" + "---|" * len(head))
+    lines.append("<table>")
+    lines.append("<tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>")
     rows = []
     for p in programs:
         failed = failed_groups(p)
         if failed:
-            why = "; ".join(f"**{cell(', '.join(names))}**: {cell(message)}" + (f" (hint: {cell(hint)})" if hint else "")
-                            for names, message, hint in failed)
+            why = "<br>".join(f"<b>{cell(', '.join(names))}</b>: {code(message)}" + (f" (hint: {cell(hint)})" if hint else "")
+                              for names, message, hint in failed)
         else:
-            why = cell(p.get("reason", ""))
+            why = code(p["reason"]) if p.get("reason") else ""
         pts = f"{points_text(p.get('points', 0))}/{points_text(p.get('max_points', 0))}" if p.get("max_points") else ""
-        row = [f"`{cell(p.get('program', ''))}`"] + ([cell(p.get("student", ""))] if has_students else [])
-        row += [("pass" if p.get("result") == "pass" else f"**{cell(p.get('result', '').upper())}**"), pts, why]
-        rows.append("| " + " | ".join(row) + " |")
+        row = [code(p.get("program", ""))] + ([code(p["student"]) if p.get("student") else ""] if has_students else [])
+        row += [("pass" if p.get("result") == "pass" else f"<b>{cell(p.get('result', '').upper())}</b>"), pts, why]
+        rows.append("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>")
     text = "\n".join(lines) + "\n"
     shown = 0
     for r in rows:
@@ -263,9 +292,15 @@ def summary_markdown(report, exit_code, reports_dir):
             break
         text += r + "\n"
         shown += 1
+    text += "</table>\n"
     if shown < len(rows):
-        text += f"\n{len(rows) - shown} more programs are in the report ({cell(reports_dir)}/rb-test.json).\n"
+        text += f"\n<p>{len(rows) - shown} more programs are in the report ({code(reports_dir + '/rb-test.json')}).</p>\n"
     return text + "\n"
+
+
+def failure_summary(heading, what, why):
+    """The summary when rb could not do its work: its error output in a <pre> block, escaped."""
+    return f"<h2>{cell(heading)}</h2>\n\n❌ {what}:\n\n<pre>{html.escape(why, quote=True)}</pre>\n\n"
 
 
 def annotations_for(report):
@@ -319,7 +354,7 @@ def run_test():
         set_output("exit-code", 2)
         return 2
     stderr = proc.stderr.decode("utf-8", "replace")
-    sys.stderr.write(stderr)
+    echo_untrusted(stderr)
     set_output("exit-code", proc.returncode)
     set_output("report", os.path.join(reports, "rb-test.json"))
     try:
@@ -330,7 +365,7 @@ def run_test():
         # rb graded nothing: a mistake in the assignment or the command line, a missing path.
         why = stderr.strip() or f"rb test ended with status {proc.returncode} and no report"
         print(annotation("error", why, title=f"rb test could not grade (exit {proc.returncode})"))
-        append("GITHUB_STEP_SUMMARY", f"## rb test\n\n❌ rb test could not grade (exit status {proc.returncode}):\n\n```\n{why}\n```\n\n")
+        append("GITHUB_STEP_SUMMARY", failure_summary("rb test", f"rb test could not grade (exit status {proc.returncode})", why))
         set_output("result", encode(classroom_error(why)))
         for name in ("points", "max-points", "programs", "passed", "failed"):
             set_output(name, 0)
@@ -376,14 +411,14 @@ def run_check():
         print(annotation("error", f"cannot run rb: {e}", title="rb check"))
         set_output("exit-code", 2)
         return 2
-    sys.stderr.write(sarif.stderr.decode("utf-8", "replace"))
+    echo_untrusted(sarif.stderr.decode("utf-8", "replace"))
     set_output("exit-code", sarif.returncode)
     try:
         log = json.loads(sarif.stdout.decode("utf-8"))
     except ValueError:
         why = sarif.stderr.decode("utf-8", "replace").strip() or f"rb check ended with status {sarif.returncode}"
         print(annotation("error", why, title="rb check"))
-        append("GITHUB_STEP_SUMMARY", f"## rb check\n\n❌ rb check wrote no SARIF log (exit status {sarif.returncode}):\n\n```\n{why}\n```\n\n")
+        append("GITHUB_STEP_SUMMARY", failure_summary("rb check", f"rb check wrote no SARIF log (exit status {sarif.returncode})", why))
         return 0
     with open(sarif_path, "wb") as f:
         f.write(sarif.stdout)
@@ -403,8 +438,8 @@ def run_check():
     set_output("warnings", counts.get("warning", 0))
     mark = "✅" if sarif.returncode == 0 else "❌"
     append("GITHUB_STEP_SUMMARY",
-           f"## rb check\n\n{mark} {counts.get('error', 0)} errors, {counts.get('warning', 0)} warnings, "
-           f"{counts.get('note', 0)} notes in {len(files)} files; the SARIF log is {cell(sarif_path)}.\n\n")
+           f"<h2>rb check</h2>\n\n<p>{mark} {counts.get('error', 0)} errors, {counts.get('warning', 0)} warnings, "
+           f"{counts.get('note', 0)} notes in {len(files)} files; the SARIF log is {code(sarif_path)}.</p>\n\n")
     return 0
 
 

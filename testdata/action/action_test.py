@@ -6,8 +6,8 @@ against what rb itself wrote in the same run (its CSV grade book, rb check's own
 the Classroom result is read by GitHub Classroom's own reporter (its source, run under node:
 testdata/action/classroom-reporter/).
 
-Usage: action_test.py PATH/TO/rb SOURCE_DIR [--part NAME]  (parts: test, classroom, check,
-install, yaml; default all). Exit 77 when a part needs node and it is missing.
+Usage: action_test.py PATH/TO/rb SOURCE_DIR [--part NAME]  (parts: test, classroom, untrusted,
+check, install, yaml; default all). Exit 77 when a part needs node and it is missing.
 """
 import base64
 import csv
@@ -174,23 +174,23 @@ def part_test_and_classroom(do_test, do_classroom):
             check(len(feedback) == len(book), f"one feedback file per program: {feedback}")
             check(out.get("report") == os.path.join("rb-report", "rb-test.json"), f"report output {out.get('report')!r}")
 
-            # The summary: a Markdown table, a row per program with its points and its failed checks.
+            # The summary: an HTML table, a row per program with its points and its failed checks.
             summary = step.summary()
-            rows = [l for l in summary.splitlines() if l.startswith("| `")]
+            rows = [l for l in summary.splitlines() if l.startswith("<tr><td>")]
             check(len(rows) == len(book), f"summary: {len(rows)} rows for {len(book)} programs:\n{summary}")
-            header = [l for l in summary.splitlines() if l.startswith("| program")]
-            check(header and header[0].count("|") == rows[0].count("|") if rows else False, "summary: header and rows have the same columns")
+            header = [l for l in summary.splitlines() if l.startswith("<tr><th>program")]
+            check(header and header[0].count("<th>") == rows[0].count("<td>") if rows else False, "summary: header and rows have the same columns")
             check_names = [k for k in book[0].keys()][9:]
             for r in book:
-                row = next((l for l in rows if "`" + r["program"] + "`" in l), "")
+                row = next((l for l in rows if "<code>" + r["program"] + "</code>" in l), "")
                 check(row, f"summary has a row for {r['program']}")
                 want = f"{r['points']}/{r['max_points']}"
-                check(f"| {want} |" in row, f"summary row of {r['program']} shows {want}: {row}")
-                check(("| pass |" in row) == (r["result"] == "pass"), f"summary row of {r['program']}: result {r['result']}")
+                check(f"<td>{want}</td>" in row, f"summary row of {r['program']} shows {want}: {row}")
+                check(("<td>pass</td>" in row) == (r["result"] == "pass"), f"summary row of {r['program']}: result {r['result']}")
                 # Every check the grade book gives no points (of a failing program) is named in its row.
                 for c in check_names:
                     if r["result"] != "pass" and r[c] == "0":
-                        check(re.search(r"\*\*[^*]*\b" + re.escape(c) + r"\b[^*]*\*\*", row),
+                        check(re.search(r"<b>[^<]*\b" + re.escape(c) + r"\b[^<]*</b>", row),
                               f"summary row of {r['program']} names the failed check {c}: {row}")
             check(summary.count("❌") == 1, "summary: one ❌ total line for a failing class")
 
@@ -275,6 +275,123 @@ def part_classroom_pass_and_error():
         check(anns and anns[0][0] == "error" and "tolerence" in anns[0][2], f"an error annotation says why: {p.stdout}")
         code, text = run_reporter(out.get("result", ""))
         check(code != 0 and "Error:" in text and "tolerence" in text, f"the reporter shows the error (exit {code}):\n{text}")
+    finally:
+        step.close()
+
+
+# --- what students write reaches the runner and the summary only as text
+
+def runner(stdout):
+    """The workflow commands a GitHub runner carries out for a step's output, as actions/runner
+    reads it (ActionCommandManager, ActionCommand): lines end at CR or LF; `::NAME props::data`
+    after leading blanks, or the older `##[NAME props]data` anywhere in a line; between
+    ::stop-commands::TOKEN and ::TOKEN:: nothing but the resume is carried out. Returns
+    (name, properties, data) of each command carried out, stop and resume left out."""
+    done, token = [], None
+    for line in re.split(r"\r\n|\r|\n", stdout):
+        text = line.lstrip()
+        m = re.match(r"::([^ :]+)(?: ([^:]*))?::(.*)$", text) if text.startswith("::") else None
+        if not m:
+            old = re.search(r"##\[([^\] ]+)(?: ([^\]]*))?\](.*)$", line)
+            m = old
+        if not m:
+            continue
+        name = m.group(1)
+        if token is not None:
+            if name.lower() == token.lower():
+                token = None
+            continue
+        if name == "stop-commands":
+            token = m.group(3)
+            continue
+        props = dict(kv.partition("=")[::2] for kv in (m.group(2) or "").split(",") if kv)
+        done.append((name, props, m.group(3)))
+    return done
+
+
+def summary_tags(summary):
+    """The HTML a job summary renders to: GitHub's own renderer (cmark-gfm with its extensions,
+    raw HTML kept as GitHub keeps it before its sanitizer) when it is installed, else the raw
+    HTML blocks as they are. Returns (the HTML, its tags, whether cmark-gfm rendered it)."""
+    import html.parser
+    cmark = shutil.which("cmark-gfm")
+    rendered = summary
+    if cmark:
+        rendered = subprocess.run([cmark, "--unsafe", "-e", "table", "-e", "autolink", "-e", "strikethrough"],
+                                  input=summary, capture_output=True, text=True, check=True).stdout
+    tags = []
+
+    class Tags(html.parser.HTMLParser):
+        def handle_starttag(self, tag, attrs):
+            tags.append((tag, dict(attrs)))
+
+    Tags().feed(rendered)
+    return rendered, tags, bool(cmark)
+
+
+def hostile_class(ws):
+    cls = os.path.join(ws, "class")
+    os.makedirs(cls)
+    out = ('print "see [my page](https://evil.example/x) ![pixel](https://evil.example/t.png) '
+           '<img src=x onerror=alert(1)> https://evil.example www.evil.example @octocat"\n'
+           'print "::error file=square.bas::forged from the output"\n'
+           'print "  ::add-mask::x"\n'
+           'print "##[warning]the old form"\n'
+           'print char(27) + "[2J" + char(27) + "]52;c;cm0gLXJmIH4=" + char(7)\n')
+    files = {"out.bas": out, "x\n::error::forged.bas": "print 1\n", "[click](javascript:alert(1)).bas": "print 2\n",
+             "<img src=x onerror=alert(2)>.bas": "print 3\n", "good.bas": 'print "ok"\n'}
+    for name, text in files.items():
+        with open(os.path.join(cls, name), "w") as f:
+            f.write(text)
+    with open(os.path.join(ws, "a.toml"), "w") as f:
+        f.write('[[check]]\nkind = "output"\ntext = "ok"\n')
+    return len(files) - 1
+
+
+ALLOWED_TAGS = {"h2", "p", "table", "tr", "th", "td", "code", "b", "br", "pre", "thead", "tbody"}
+
+
+def part_untrusted():
+    step = Step()
+    try:
+        failing = hostile_class(step.ws)
+        p = step.run([sys.executable, os.path.join(ACTION, "rb_action.py"), "test"],
+                     RB_PATHS="class", RB_ASSIGNMENT="a.toml", RB_PICTURES="false")
+        check(p.returncode == 0, f"rb_action.py test on the hostile class: exit {p.returncode}: {p.stderr[-500:]}")
+        done = runner(p.stdout)
+        check(len(done) == failing and all(c[0] == "error" and c[1].get("title", "").startswith("rb test%3A") for c in done),
+              f"the runner carries out only the action's {failing} annotations, not a student's line:\n{done}\n{p.stdout}")
+        check(not runner(p.stderr), f"no command on standard error: {runner(p.stderr)}")
+        summary = step.summary()
+        rendered, tags, real = summary_tags(summary)
+        check(not [t for t in tags if t[0] not in ALLOWED_TAGS],
+              f"the summary renders only the action's own markup{' (cmark-gfm)' if real else ''}: "
+              f"{[t for t in tags if t[0] not in ALLOWED_TAGS]}\n{rendered}")
+        check(not [t for t in tags if t[1]], f"no attributes (links, sources, handlers): {[t for t in tags if t[1]]}")
+        for shown in ("[my page](https://evil.example/x)", "![pixel](https://evil.example/t.png)", "&lt;img src=x",
+                      "[click](javascript:alert(1)).bas", "&lt;img src=x onerror=alert(2)&gt;.bas"):
+            check(shown in rendered, f"the summary shows {shown!r} as text:\n{rendered}")
+        if not real:
+            print("(cmark-gfm is not installed: the summary's HTML was read as it is; scripts/setup.sh --test installs it)")
+    finally:
+        step.close()
+
+    # rb's error output is shown, never obeyed; the summary has it in <pre>, escaped.
+    step = Step()
+    try:
+        fake = os.path.join(step.dir, "fake_rb.py")
+        with open(fake, "w") as f:
+            f.write("import sys\nsys.stderr.write('rb test: x\\n::error::forged\\n  ::add-mask::y\\n##[warning]z\\n"
+                    "```\\n[link](https://evil.example) </pre><img src=x>\\n')\nsys.exit(64)\n")
+        p = step.run([sys.executable, os.path.join(ACTION, "rb_action.py"), "test"], RB=f"{sys.executable} {fake}")
+        done = runner(p.stdout)
+        check(len(done) == 1 and done[0][0] == "error" and "could not grade" in done[0][1].get("title", ""),
+              f"one annotation, the action's own: {done}\n{p.stdout}")
+        check("::error::forged" in p.stdout, f"rb's error output is still shown in the log:\n{p.stdout}")
+        check(not runner(p.stderr), f"no command on standard error: {runner(p.stderr)}")
+        rendered, tags, real = summary_tags(step.summary())
+        check(not [t for t in tags if t[0] not in ALLOWED_TAGS or t[1]], f"only the action's own markup: {tags}\n{rendered}")
+        check("[link](https://evil.example) &lt;/pre&gt;&lt;img src=x&gt;" in rendered, f"rb's error output as text:\n{rendered}")
     finally:
         step.close()
 
@@ -375,6 +492,8 @@ def main():
     if PART in ("all", "classroom"):
         if part_classroom_pass_and_error() == "skip":
             skipped.append("classroom")
+    if PART in ("all", "untrusted"):
+        part_untrusted()
     if PART in ("all", "check"):
         part_check()
     if PART in ("all", "install"):

@@ -9,7 +9,8 @@
 
     consumers.py --rb RB --tools DIR sarif-multitool PROGRAM...
         Microsoft's SARIF Multitool (npm @microsoft/sarif-multitool, installed in DIR by
-        scripts/setup.sh --test) validates rb check --format sarif of each program against the
+        scripts/setup.sh --test) validates rb check --format sarif of each program (and of the
+        first under a name with a space, '#', '%', '?' and accents) against the
         SARIF 2.1.0 schema and its rules, with GitHub code scanning's rules (--rule-kind Sarif;Gh):
         any result it reports fails the test.
 """
@@ -78,7 +79,11 @@ def sarif_multitool(rb, tools, programs):
         return False
     problems = 0
     with tempfile.TemporaryDirectory() as work:
-        for prog in programs:
+        # The first program once more under a name a URI cannot carry as it is: a space, '#',
+        # '%', '?' and a non-ASCII letter (its artifact uri must be percent-encoded).
+        odd = os.path.join(work, "odd name #1 %? \u00e9t\u00e9.bas")
+        shutil.copyfile(programs[0], odd)
+        for prog in list(programs) + [odd]:
             log = os.path.join(work, os.path.basename(prog) + ".sarif")
             out = os.path.join(work, os.path.basename(prog) + ".validation.sarif")
             r = subprocess.run([rb, "check", "--format", "sarif", os.path.basename(prog)],
@@ -98,7 +103,7 @@ def sarif_multitool(rb, tools, programs):
                 print(f"{prog}: {res.get('ruleId')} {res.get('level', 'warning')}: {args}")
             problems += len(found)
             print(f"{prog}: {len(results)} results, {len(found)} findings")
-    print(f"{len(programs)} logs, {problems} findings")
+    print(f"{len(programs) + 1} logs, {problems} findings")
     return problems == 0
 
 

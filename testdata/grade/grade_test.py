@@ -525,6 +525,86 @@ def case_class_files(env):
     expect(r.returncode == 64 and "r.toml:1:10: roster: no such file" in r.stderr, "missing roster", r.stderr)
 
 
+# --- what a student's program and file names put into the reports
+
+def runner_commands(text):
+    """Lines a GitHub Actions runner would take as workflow commands: it splits its input at CR
+    and LF, trims blanks (.NET's TrimStart) and looks for `::`, and looks for the older `##[`
+    anywhere in a line (actions/runner, ActionCommand.TryParseV2 and TryParse)."""
+    return [l for l in re.split(r"\r\n|\r|\n", text) if l.lstrip().startswith("::") or "##[" in l]
+
+
+def raw_controls(text):
+    """Control characters a report must not carry (LF and tab are its own): C0, DEL, C1."""
+    return sorted({f"U+{ord(c):04X}" for c in text if (ord(c) < 0x20 and c not in "\n\t") or 0x7F <= ord(c) <= 0x9F})
+
+
+def hostile_class(env):
+    """A class folder made here (such names cannot be kept in git): a program that clears the
+    terminal, moves the cursor to print a fake "pass" row, sets the clipboard (OSC 52) and prints
+    workflow commands; a file name with a line feed and a workflow command; file names that are
+    spreadsheet formulas; a roster name that is one too."""
+    cls = env.path("class")
+    os.makedirs(cls)
+    esc = ('print char(27) + "[2J" + char(27) + "[1;1Hgood.bas   pass   1/1" + char(27) + "[K"\n'
+           'print char(27) + "]52;c;cm0gLXJmIH4=" + char(7) + char(155) + "2J"\n'
+           'print "::error file=good.bas::forged from the output"\n'
+           'print "   ::add-mask::x"\n'
+           'print "  ##[error]the old form"\n')
+    files = {"esc.bas": esc, "x\n::error::forged.bas": "print 1\n",
+             '=HYPERLINK("http:evil","y").bas': "print 2\n", "@SUM(1).bas": "print 3\n",
+             "good.bas": 'print "ok"\n'}
+    for name, text in files.items():
+        with open(os.path.join(cls, name), "w") as f:
+            f.write(text)
+    env.write("roster.csv", "student,file\n+cmd|' /C calc'!A0,class/esc.bas\nAna,class/good.bas\n")
+    return cls, env.write("a.toml", 'roster = "roster.csv"\n[[check]]\nkind = "output"\ntext = "ok"\n')
+
+
+def case_untrusted_text(env):
+    cls, a = hostile_class(env)
+    reports = {}
+    # Graded from inside the folder, so that the names begin the table's lines and the CSV's cells.
+    r = subprocess.run([env.rb, "test", "-a", a, ".", "--csv", env.path("grades.csv"), "--junit", env.path("junit.xml"),
+                        "--feedback", env.path("feedback")], capture_output=True, timeout=300, cwd=cls)
+    expect(r.returncode == 1, f"rb test: exit {r.returncode}", r.stderr)
+    reports["the text report"] = r.stdout.decode("utf-8")
+    reports["standard error"] = r.stderr.decode("utf-8")
+    j = subprocess.run([env.rb, "test", "--format", "json", "-a", a, "."], capture_output=True, timeout=300, cwd=cls)
+    reports["the JSON report"] = j.stdout.decode("utf-8")
+    for name in ("grades.csv", "junit.xml"):
+        with open(env.path(name), encoding="utf-8") as f:
+            reports[name] = f.read()
+    for name in os.listdir(env.path("feedback")):
+        with open(os.path.join(env.path("feedback"), name), encoding="utf-8") as f:
+            reports["feedback " + repr(name)] = f.read()
+    expect(len(reports) == 5 + len(os.listdir(cls)), "a feedback file per program", sorted(reports))
+    for what, text in reports.items():
+        expect(not raw_controls(text), f"{what} carries raw control characters {raw_controls(text)}", text)
+        expect(not runner_commands(text), f"{what} has lines a runner takes as workflow commands", runner_commands(text), text)
+    text = reports["the text report"]
+    # Shown, visibly: the reader sees what the program tried.
+    for shown in ("x\\n::error::forged.bas", "^[[2J^[[1;1Hgood.bas   pass   1/1^[[K", "^[]52;c;cm0gLXJmIH4=^G\\x9b2J",
+                  "\\x3a:error file=good.bas::forged from the output", "\\x3a:add-mask::x", "\\x23#[error]the old form"):
+        expect(shown in text, f"the text report shows {shown!r}", text)
+    rows = [l for l in text.splitlines() if l.startswith(("x\\n", "esc.bas")) and " FAIL " in l]
+    expect(len(rows) == 2, "one table row each for the program with a line feed in its name and esc.bas", text)
+    doc = json.loads(reports["the JSON report"])
+    by = {p["program"]: p for p in doc["programs"]}
+    expect("x\\n::error::forged.bas" in by and "^[[2J" in by["esc.bas"]["output"], "the JSON report shows the same", sorted(by))
+    expect(by["esc.bas"]["student"] == "+cmd|' /C calc'!A0", "the roster's name", by["esc.bas"])
+    # The grade book: a text cell never begins a formula; numbers stay numbers.
+    with open(env.path("grades.csv"), newline="", encoding="utf-8") as f:
+        book = list(csv.DictReader(f))
+    for row in book:
+        for key in ("student", "program", "reason"):
+            expect(not row[key].startswith(("=", "+", "-", "@", "\t", "\r")), f"CSV {key} cell {row[key]!r} is a formula", row)
+        expect(re.fullmatch(r"\d+", row["points"]) and re.fullmatch(r"\d+\.\d+", row["seconds"]), "numbers stay numbers", row)
+    programs = {row["program"] for row in book}
+    expect({"'=HYPERLINK(\"http:evil\",\"y\").bas", "'@SUM(1).bas"} <= programs, "formulas behind a quote", programs)
+    expect("'+cmd|' /C calc'!A0" in {row["student"] for row in book}, "the roster's formula too", book)
+
+
 def case_bad_goals(env):
     # Checks that contradict each other, teacher programs with errors: exit 64, file:line:col.
     write_goal_class(env)
