@@ -204,7 +204,8 @@ int executeTest(const TestOptions& opts) {
   }
   result.studentView = opts.student;
   for (const std::string& w : result.warnings) say("warning: " + w);
-  bool written = true;
+  for (const std::string& e : result.writeErrors) say(e);
+  bool written = result.writeErrors.empty();
   if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result, g.paths) && written;
   if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
   if (!opts.csv.empty()) written = writeReport(opts.csv, grade::csvReport(result)) && written;

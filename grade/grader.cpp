@@ -1067,13 +1067,16 @@ void Grader::finishProgram(size_t index) {
     fs::path to = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".screen.png");
     std::string error;
     if (render::writePngFile(to.string(), halfSize(imageOf(*first.screen)), error)) r.screen = to.string();
+    else result_.writeErrors.push_back(error);
   }
   if (!first.replayFile.empty()) {
     // Written as every other report file is (a FIFO there is written to, never replaced).
     fs::path to = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension("." + opts_.replayFormat);
     bool cut = false;
     std::string bytes = readCapped(first.replayFile, kFileLimit, &cut), error;
+    if (cut) error = "cannot write '" + to.string() + "': the replay is larger than " + std::to_string(kFileLimit >> 20) + " MB";
     if (!cut && render::writeFileBytes(to.string(), bytes.data(), bytes.size(), error)) r.replay = to.string();
+    else result_.writeErrors.push_back(error);
     std::error_code ec;
     fs::remove(first.replayFile, ec);
   }
@@ -1118,6 +1121,7 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
   fs::path out = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".png");
   std::string error;
   if (render::writePngFile(out.string(), feedbackPicture(in), error)) r.picture = out.string();
+  else result_.writeErrors.push_back(error);
 }
 
 }  // namespace

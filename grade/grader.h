@@ -106,6 +106,9 @@ struct ClassResult {
   std::string timestamp;           ///< ISO 8601, UTC, when grading started
   /// Things the teacher should know that do not stop grading ("the solution fails its own check").
   std::vector<std::string> warnings;
+  /// Pictures, screens and replays rb test could not write (each names the file and why): rb
+  /// test says them and ends with 74.
+  std::vector<std::string> writeErrors;
   /// What the kernel could not put in force around the runs (no Landlock...), said once in every
   /// report; "" when every run was confined by the kernel (docs/confinement.md).
   std::string confinement;

@@ -274,9 +274,10 @@ std::string classPage(const ClassResult& r, const std::vector<std::string>& page
   if (r.skipped) out += ", " + std::to_string(r.skipped) + " skipped";
   if (r.missing) out += "; " + std::to_string(r.missing) + " with no submission";
   out += ". Graded " + htmlEscape(r.timestamp) + " by rb test.</p></header>\n";
-  if (!r.warnings.empty()) {
+  if (!r.warnings.empty() || (!r.confinement.empty() && !r.studentView)) {
     out += "<div class=\"warnings\">";
     for (const std::string& w : r.warnings) out += "<p>warning: " + htmlEscape(w) + "</p>";
+    if (!r.confinement.empty() && !r.studentView) out += "<p>note: " + htmlEscape(r.confinement) + "</p>";
     out += "</div>\n";
   }
   std::set<std::string> checkNames;

@@ -288,6 +288,7 @@ std::string textReport(const ClassResult& r, bool showDetails) {
     }
   }
   if (r.similarity && !r.studentView) out += "\n" + similarityText(*r.similarity);
+  if (!r.confinement.empty() && !r.studentView) out += "\nnote: " + line(r.confinement) + "\n";
   size_t n = r.programs.size() - r.missing;
   out += "\n" + std::to_string(n) + " program" + (n == 1 ? "" : "s") + ": " + std::to_string(r.passed) +
          " passed, " + std::to_string(r.failed) + " failed";
@@ -355,6 +356,7 @@ std::string jsonReport(const ClassResult& r) {
     doc["programs"].push_back(std::move(j));
   }
   if (r.similarity && !r.studentView) doc["similarity"] = json::parse(similarityJson(*r.similarity));
+  if (!r.confinement.empty() && !r.studentView) doc["confinement"] = line(r.confinement);
   doc["summary"] = {{"programs", r.programs.size() - r.missing}, {"passed", r.passed}, {"failed", r.failed},
                     {"errors", r.errors},           {"skipped", r.skipped}, {"missing", r.missing},
                     {"seconds", r.seconds}};
@@ -387,8 +389,10 @@ std::string junitReport(const ClassResult& r) {
     if (!p.student.empty()) name += " (" + p.student + ")";
     return name;
   };
-  if (!r.programs.empty()) {
+  if (!r.programs.empty() || (!r.confinement.empty() && !r.studentView)) {
     out += "    <properties>\n";
+    if (!r.confinement.empty() && !r.studentView)
+      out += "      <property name=\"confinement\" value=\"" + xmlEscape(line(r.confinement)) + "\"/>\n";
     for (const ProgramResult& p : r.programs)
       out += "      <property name=\"file: " + xmlEscape(caseName(p)) + "\" value=\"" + xmlEscape(p.program) + "\"/>\n";
     out += "    </properties>\n";
