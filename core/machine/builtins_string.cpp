@@ -12,8 +12,6 @@
 namespace rb::builtins {
 
 namespace {
-constexpr int64_t kMaxString = 64 << 20;
-
 size_t clampCount(int64_t n, size_t size) {
   if (n <= 0) return 0;
   return static_cast<size_t>(std::min<int64_t>(n, static_cast<int64_t>(size)));
@@ -139,19 +137,20 @@ Value strReplace(Machine& m, Args& a) {
   return Value::string(std::move(out));
 }
 
-Value strExtract(Machine&, Args& a) {
+Value strExtract(Machine& m, Args& a) {
   const std::string& s = a.str(0);
   const std::string& d = a.str(1);
   int64_t n = a.integer(2);
   if (d.empty()) throw RuntimeError(a.describe(1) + " must not be empty");
   if (n < 1) return Value::string("");
-  size_t pos = 0;
-  for (int64_t field = 1;; ++field) {
-    size_t at = s.find(d, pos);
-    if (field == n) return Value::string(s.substr(pos, at == std::string::npos ? std::string::npos : at - pos));
-    if (at == std::string::npos) return Value::string("");
-    pos = at + d.size();
-  }
+  std::string_view found;  // "" when s has fewer than n fields
+  int64_t field = 0;
+  forEachField(m, s, d, [&](std::string_view f) {
+    if (++field < n) return true;
+    found = f;
+    return false;
+  });
+  return Value::string(std::string(found));
 }
 
 Value strChar(Machine&, Args& a) {

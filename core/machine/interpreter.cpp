@@ -27,8 +27,6 @@ namespace {
 
 /// Statements run between two checks of the limits and of the host (a live view polls here).
 constexpr int64_t kCheckInterval = 1 << 16;
-/// The largest array rb creates.
-constexpr uint64_t kMaxArrayElements = 64u << 20;
 /// The longest string `+` builds.
 constexpr size_t kMaxStringLength = 64u << 20;
 
@@ -627,15 +625,7 @@ void Interpreter::doDim(const Instr& in) {
   // run holds is asked of the host (it reads the process's memory) only for a big array.
   uint64_t need = total * sizeof(Value);
   bool big = need > kLongWork;
-  if (m_.memoryLimit) {
-    uint64_t held = big ? m_.host().memoryInUse() : 0;
-    if (need > m_.memoryLimit || held + need > m_.memoryLimit) {
-      std::string msg = "out of memory: array '" + slotName(in.a) + "' would need " + std::to_string(need >> 20) + " MiB";
-      if (need <= m_.memoryLimit) msg += " beside the " + std::to_string(held >> 20) + " MiB the run holds already";
-      throw RuntimeError(msg + ", more than the " + std::to_string(m_.memoryLimit >> 20) +
-                         " MiB of the --max-memory limit");
-    }
-  }
+  if (!m_.memoryFits(need)) m_.reserveMemory(need, "array '" + slotName(in.a) + "'");
   bases_(in.a) = Value::array(std::move(dims));
   if (big) m_.checkAlarms();  // making a big array takes time too
 }
