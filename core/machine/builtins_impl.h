@@ -83,8 +83,9 @@ void appendSystemBuiltins(std::vector<Builtin>& table);
 constexpr int64_t kMaxString = 64 << 20;
 
 /// The first place at or after `from` where `needle` occurs in `hay`, or npos: linear in both
-/// lengths, however the strings repeat (builtins_string.cpp).
-size_t findText(const std::string& hay, const std::string& needle, size_t from);
+/// lengths, however the strings repeat (builtins_string.cpp). The memory a long needle's search
+/// takes is counted against the machine's --max-memory first.
+size_t findText(Machine& m, const std::string& hay, const std::string& needle, size_t from);
 
 /// Calls `field(text)` for each field of `s` split at `delimiter` (not empty), in order, until
 /// it returns false. Linear in the length of s whatever the delimiter (findText: fields are at
@@ -95,7 +96,7 @@ void forEachField(Machine& m, const std::string& s, const std::string& delimiter
   size_t pos = 0;
   for (uint32_t count = 1;; ++count) {
     if (count % 65536 == 0) m.checkAlarms();
-    size_t at = findText(s, delimiter, pos);
+    size_t at = findText(m, s, delimiter, pos);
     size_t end = at == std::string::npos ? s.size() : at;
     if (!field(std::string_view(s).substr(pos, end - pos)) || at == std::string::npos) return;
     pos = at + delimiter.size();
