@@ -151,7 +151,10 @@ std::string formatItems(const Value* items, uint32_t n, const std::vector<Tok>& 
   newline = true;
   char room[kNumberTextSize];
   for (uint32_t i = 0; i < n; ++i) {
-    out += printedForm(items[i], room);
+    std::string_view item = printedForm(items[i], room);
+    // One line is one string: many long items cannot join into more (print s;s;s... of a long s).
+    if (out.size() + item.size() > kMaxStringLength) [[unlikely]] stringTooLong();
+    out += item;
     Tok sep = i < seps.size() ? seps[i] : Tok::Eof;
     if (sep == Tok::Semicolon && i + 1 < n) out += '\t';
     if (i + 1 == n && sep != Tok::Eof) {
