@@ -152,3 +152,19 @@ TEST_CASE("mFromString counts its array and strings against --max-memory before 
                     "run holds already, more than the 4 MiB of the --max-memory limit");
   CHECK(numbers[0].isInt());
 }
+
+TEST_CASE("polygon and mPolygon look at the run's limits between the edges of an outline", "[builtins]") {
+  test::TestHost host;
+  Machine m(host, 1);
+  Value flat = Value::array({8});
+  Value rows = Value::array({4, 2});
+  for (Value* v : {&flat, &rows})
+    for (size_t i = 0; i < 8; ++i) v->arr().items[i] = Value::integer(static_cast<int64_t>(10 + 10 * (i % 3)));
+  m.alarms().raise(RunAlarms::kDeadline);
+  std::vector<Value> polygon{flat};
+  CHECK_THROWS_AS(call(m, "polygon", BuiltinKind::Command, polygon), DeadlinePassed);
+  std::vector<Value> mFlat{flat};
+  CHECK_THROWS_AS(call(m, "mPolygon", BuiltinKind::Command, mFlat), DeadlinePassed);
+  std::vector<Value> mRows{rows};
+  CHECK_THROWS_AS(call(m, "mPolygon", BuiltinKind::Command, mRows), DeadlinePassed);
+}
