@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 
 #include "machine/builtins_impl.h"
 #include "base/runtime_error.h"
@@ -125,6 +126,12 @@ std::vector<Point> arrayPairs(Args& a) {
   return pts;
 }
 
+/// Between the edges of a polygon's outline: the run's limits (65,536 edges of a wide line
+/// across the screen take minutes).
+std::function<void()> edgeCheck(Machine& m) {
+  return [&m] { m.checkAlarms(); };
+}
+
 const ArrObj& coordinateArray(Args& a) {
   if (!a[0].isArr()) throw RuntimeError(a.describe(0) + " must be an array of coordinates");
   return a[0].arr();
@@ -136,7 +143,7 @@ Value polygon(Machine& m, Args& a) {
     throw RuntimeError(a.describe(0) + " must be a one-dimensional array x1, y1, x2, y2, ...");
   auto pts = arrayPairs(a);
   auto [outline, fill] = shapeColours(m, a, 1);
-  m.canvas().polygon(pts, m.canvas().lineWidth, outline, fill);
+  m.canvas().polygon(pts, m.canvas().lineWidth, outline, fill, edgeCheck(m));
   return {};
 }
 
@@ -176,13 +183,15 @@ Value mPolygon(Machine& m, Args& a) {
     if (a.has(2)) throw RuntimeError("mPolygon with a flat array takes one colour, the fill: " + a.describe(2) + " is one too many");
     std::optional<Colour> fill;
     if (a.has(1)) fill = a.colour(1);
+    const std::function<void()> check = edgeCheck(m);
     for (const FlatPolygon& poly : flatPolygons(a, arrayPairs(a))) {
       if (fill && poly.fillPoint) {
-        c.polygon(poly.vertices, c.lineWidth, c.foreground, std::nullopt);
+        c.polygon(poly.vertices, c.lineWidth, c.foreground, std::nullopt, check);
         c.floodFill(poly.fillPoint->x, poly.fillPoint->y, *fill);
       } else {
-        c.polygon(poly.vertices, c.lineWidth, c.foreground, fill);
+        c.polygon(poly.vertices, c.lineWidth, c.foreground, fill, check);
       }
+      m.checkAlarms();  // each fill may cover the screen
     }
     return {};
   }
@@ -190,7 +199,7 @@ Value mPolygon(Machine& m, Args& a) {
     throw RuntimeError(a.describe(0) + " must be a flat array of x, y pairs or an array with 2 columns (x, y)");
   auto pts = arrayPairs(a);
   auto [outline, fill] = shapeColours(m, a, 1);
-  c.polygon(pts, c.lineWidth, outline, fill);
+  c.polygon(pts, c.lineWidth, outline, fill, edgeCheck(m));
   return {};
 }
 

@@ -2,6 +2,8 @@
 // Handlers of the built-in table, one family per builtins_*.cpp file. Each handler is named
 // after its BASIC name with its family as prefix (mathAbs is abs(), strLeft is left()).
 
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "lang/builtins.h"
@@ -76,6 +78,30 @@ void appendRobotBuiltins(std::vector<Builtin>& table);
 void appendGraphicsBuiltins(std::vector<Builtin>& table);
 void appendInputBuiltins(std::vector<Builtin>& table);
 void appendSystemBuiltins(std::vector<Builtin>& table);
+
+/// The longest string a built-in makes.
+constexpr int64_t kMaxString = 64 << 20;
+
+/// The first place at or after `from` where `needle` occurs in `hay`, or npos: linear in both
+/// lengths, however the strings repeat (builtins_string.cpp). The memory a long needle's search
+/// takes is counted against the machine's --max-memory first.
+size_t findText(Machine& m, const std::string& hay, const std::string& needle, size_t from);
+
+/// Calls `field(text)` for each field of `s` split at `delimiter` (not empty), in order, until
+/// it returns false. Linear in the length of s whatever the delimiter (findText: fields are at
+/// least as long apart as the delimiter, so searching from each costs s's length in all), and
+/// the run's limits are looked at every 65,536 fields.
+template <typename Field>
+void forEachField(Machine& m, const std::string& s, const std::string& delimiter, Field&& field) {
+  size_t pos = 0;
+  for (uint32_t count = 1;; ++count) {
+    if (count % 65536 == 0) m.checkAlarms();
+    size_t at = findText(m, s, delimiter, pos);
+    size_t end = at == std::string::npos ? s.size() : at;
+    if (!field(std::string_view(s).substr(pos, end - pos)) || at == std::string::npos) return;
+    pos = at + delimiter.size();
+  }
+}
 
 /// P_NOWAIT, Spawn's mode that returns at once (the value C's process.h gives it).
 constexpr int64_t kSpawnNoWait = 1;

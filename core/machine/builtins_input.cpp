@@ -75,20 +75,31 @@ Value waitClick(Machine& m, Args& a) {
 }
 
 /// MsgBox's text: a value, or an array whose elements are its lines (a published program builds
-/// the text with `data IM; "line"` and shows it with `MsgBox(IM)`).
-std::string messageText(const Value& v) {
+/// the text with `data IM; "line"` and shows it with `MsgBox(IM)`). Lines are joined while the
+/// text stays one string (kMaxString), with the run's limits looked at every 65,536 lines: an
+/// array of many long strings (sharing one text) cannot make the join take memory or time
+/// without end.
+std::string messageText(Machine& m, const Value& v) {
   if (!v.isArr()) return formatValue(v);
   std::string text;
+  char room[kNumberTextSize];
+  uint32_t count = 0;
   for (const Value& line : v.arr().items) {
-    if (!text.empty()) text += '\n';
-    if (!line.isUndef()) text += formatValue(line);
+    if (++count % 65536 == 0) m.checkAlarms();
+    std::string_view part = line.isUndef() ? std::string_view() : printedForm(line, room);
+    bool newline = !text.empty();
+    if (text.size() + newline + part.size() > static_cast<uint64_t>(kMaxString))
+      throw RuntimeError("MsgBox: the array's lines make a text longer than " + std::to_string(kMaxString) +
+                         " characters");
+    if (newline) text += '\n';
+    text += part;
   }
   return text;
 }
 
 Value msgBox(Machine& m, Args& a) {
   std::string title = a.has(1) ? formatValue(a[1]) : "RobotBASIC";
-  m.host().messageBox(messageText(a[0]), title);
+  m.host().messageBox(messageText(m, a[0]), title);
   return Value::integer(1);  // the button that closed it: OK
 }
 

@@ -13,8 +13,6 @@
 namespace rb::builtins {
 
 namespace {
-constexpr int64_t kMaxString = 64 << 20;
-
 size_t clampCount(int64_t n, size_t size) {
   if (n <= 0) return 0;
   return static_cast<size_t>(std::min<int64_t>(n, static_cast<int64_t>(size)));
@@ -86,11 +84,15 @@ Value strReverse(Machine&, Args& a) {
 /// The first place at or after `from` where `needle` occurs in `hay`, or npos. Short needles
 /// use the library's search; long ones the Knuth-Morris-Pratt scan, linear in both lengths, so
 /// that no pair of strings (a long run of one letter and the same run plus one other) makes a
-/// search quadratic.
-size_t findText(const std::string& hay, const std::string& needle, size_t from) {
+/// search quadratic. Its table (4 bytes a character of the needle) is counted against
+/// --max-memory before it is made.
+size_t findText(Machine& machine, const std::string& hay, const std::string& needle, size_t from) {
   constexpr size_t kShortNeedle = 64;
   if (needle.size() < kShortNeedle || from >= hay.size()) return hay.find(needle, from);
+  if (hay.size() - from < needle.size()) return std::string::npos;
   size_t m = needle.size();
+  if (uint64_t table = m * sizeof(uint32_t); !machine.memoryFits(table))
+    machine.reserveMemory(table, "searching for a string of " + std::to_string(m) + " characters");
   // border[i]: the length of the longest proper border of needle[0..i].
   std::vector<uint32_t> border(m, 0);
   for (size_t i = 1, k = 0; i < m; ++i) {
@@ -106,18 +108,18 @@ size_t findText(const std::string& hay, const std::string& needle, size_t from) 
   return std::string::npos;
 }
 
-Value strInstr(Machine&, Args& a) {
+Value strInstr(Machine& m, Args& a) {
   const std::string& s = a.str(0);
   const std::string& f = a.str(1);
   int64_t start = a.intOr(2, 1);
   if (start < 1) start = 1;
   if (static_cast<uint64_t>(start) > s.size() + 1) return Value::integer(0);
-  size_t at = findText(s, f, static_cast<size_t>(start - 1));
+  size_t at = findText(m, s, f, static_cast<size_t>(start - 1));
   return Value::integer(at == std::string::npos ? 0 : static_cast<int64_t>(at) + 1);
 }
 
-Value strContains(Machine&, Args& a) {
-  return Value::boolean(findText(a.str(0), a.str(1), 0) != std::string::npos);
+Value strContains(Machine& m, Args& a) {
+  return Value::boolean(findText(m, a.str(0), a.str(1), 0) != std::string::npos);
 }
 
 Value strReplace(Machine& m, Args& a) {
@@ -128,7 +130,7 @@ Value strReplace(Machine& m, Args& a) {
   std::string out;
   size_t pos = 0;
   for (uint32_t found = 1;; ++found) {
-    size_t at = findText(s, f, pos);
+    size_t at = findText(m, s, f, pos);
     if (at == std::string::npos) break;
     if (found % 65536 == 0) m.checkAlarms();  // millions of matches: the time limit still holds
     out.append(s, pos, at - pos);
@@ -140,19 +142,20 @@ Value strReplace(Machine& m, Args& a) {
   return Value::string(std::move(out));
 }
 
-Value strExtract(Machine&, Args& a) {
+Value strExtract(Machine& m, Args& a) {
   const std::string& s = a.str(0);
   const std::string& d = a.str(1);
   int64_t n = a.integer(2);
   if (d.empty()) throw RuntimeError(a.describe(1) + " must not be empty");
   if (n < 1) return Value::string("");
-  size_t pos = 0;
-  for (int64_t field = 1;; ++field) {
-    size_t at = s.find(d, pos);
-    if (field == n) return Value::string(s.substr(pos, at == std::string::npos ? std::string::npos : at - pos));
-    if (at == std::string::npos) return Value::string("");
-    pos = at + d.size();
-  }
+  std::string_view found;  // "" when s has fewer than n fields
+  int64_t field = 0;
+  forEachField(m, s, d, [&](std::string_view f) {
+    if (++field < n) return true;
+    found = f;
+    return false;
+  });
+  return Value::string(std::string(found));
 }
 
 Value strChar(Machine&, Args& a) {

@@ -29,25 +29,55 @@ Value arrMaxDim(Machine&, Args& a) {
   return Value::integer(arr.dims[static_cast<size_t>(d - 1)]);
 }
 
-Value arrFromString(Machine&, Args& a) {
+namespace {
+
+/// What the allocator takes for a block of n bytes (glibc's malloc: n and 8 bytes, in 16s).
+constexpr uint64_t allocated(uint64_t n) { return (n + 8 + 15) / 16 * 16; }
+
+/// The memory a string value of `length` characters takes beyond its array element: its StrObj
+/// and, past the few characters std::string keeps inside itself, its text.
+uint64_t stringBytes(size_t length) {
+  static const size_t inPlace = std::string().capacity();
+  return allocated(sizeof(StrObj)) + (length > inPlace ? allocated(length + 1) : 0);
+}
+
+}  // namespace
+
+Value arrFromString(Machine& m, Args& a) {
   const std::string& s = a.str(1);
   const std::string& delim = a.has(2) ? a.str(2) : std::string(",");
   if (delim.empty()) throw RuntimeError(a.describe(2) + " must not be empty");
-  std::vector<std::string_view> fields;
-  std::string_view rest(s);
-  for (;;) {
-    size_t at = rest.find(delim);
-    fields.push_back(rest.substr(0, at));
-    if (at == std::string_view::npos) break;
-    rest.remove_prefix(at + delim.size());
+  // The fields are counted first, and what they will take measured, without making anything:
+  // the array and its strings must fit in --max-memory before any of them is made. Taking every
+  // field for a string bounds what they take; only when that bound does not fit are the fields
+  // that spell numbers (they take no string) told apart, which reads the fields once more.
+  uint64_t fields = 0, bound = 0;
+  forEachField(m, s, delim, [&](std::string_view field) {
+    ++fields;
+    bound += sizeof(Value) + stringBytes(field.size());
+    return true;
+  });
+  if (fields > kMaxArrayElements)
+    throw RuntimeError("mFromString: " + std::to_string(fields) + " fields are too many for one array (at most " +
+                       std::to_string(kMaxArrayElements) + ")");
+  if (!m.memoryFits(bound)) {
+    uint64_t need = 0;
+    forEachField(m, s, delim, [&](std::string_view field) {
+      Value number;
+      need += sizeof(Value) + (parseNumber(field, number) ? 0 : stringBytes(field.size()));
+      return true;
+    });
+    m.reserveMemory(need, "mFromString's " + std::to_string(fields) + " fields");
   }
-  Value arr = Value::array({static_cast<int64_t>(fields.size())});
-  for (size_t i = 0; i < fields.size(); ++i) {
-    Value v;
+  Value arr = Value::array({static_cast<int64_t>(fields)});
+  auto& items = arr.arr().items;
+  size_t i = 0;
+  forEachField(m, s, delim, [&](std::string_view field) {
     // A field that spells a number is a number (so that `round(a[3])` works), else a string.
-    if (!parseNumber(fields[i], v)) v = Value::string(std::string(fields[i]));
-    arr.arr().items[i] = std::move(v);
-  }
+    Value& v = items[i++];
+    if (!parseNumber(field, v)) v = Value::string(std::string(field));
+    return true;
+  });
   a[0] = std::move(arr);
   return {};
 }

@@ -3,10 +3,32 @@
 #include <algorithm>
 #include <set>
 
+#include "base/runtime_error.h"
 #include "lang/suggest.h"
 #include "machine/builtins.h"
+#include "machine/machine.h"
+#include "machine/test_support.h"
 
 using namespace rb;
+
+namespace {
+
+/// Calls the built-in `name` of `kind` on `m` with `args` (which an output parameter changes).
+Value call(Machine& m, std::string_view name, BuiltinKind kind, std::vector<Value>& args) {
+  const Builtin* b = standardBuiltins().find(name, kind);
+  REQUIRE(b);
+  Args a(*b, args.data(), static_cast<int>(args.size()));
+  return b->fn(m, a);
+}
+
+/// A host that says how much memory the run holds.
+class HoldingHost : public test::TestHost {
+ public:
+  uint64_t held = 0;
+  uint64_t memoryInUse() override { return held; }
+};
+
+}  // namespace
 
 TEST_CASE("signatures give arity and output parameters", "[builtins]") {
   const Builtin* mid = standardBuiltins().find("MID", BuiltinKind::Function);
@@ -83,4 +105,66 @@ TEST_CASE("a bounded edit distance is the distance, or bound + 1 beyond it", "[s
       CHECK(editDistance(a, b, ignoreCase, bound) == std::min(full, static_cast<int>(bound) + 1));
     }
   }
+}
+
+TEST_CASE("extract and mFromString look at the run's limits every 65,536 fields", "[builtins]") {
+  test::TestHost host;
+  Machine m(host, 1);
+  const std::string many(70000, ',');  // 70,001 empty fields
+  std::vector<Value> last{Value::string(many), Value::string(","), Value::integer(70001)};
+  CHECK(call(m, "extract", BuiltinKind::Function, last).str().empty());
+  std::vector<Value> few{Value::string("a::b::c"), Value::string("::"), Value::integer(2)};
+  CHECK(call(m, "extract", BuiltinKind::Function, few).str() == "b");
+
+  m.alarms().raise(RunAlarms::kDeadline);  // the time limit has passed
+  CHECK_THROWS_AS(call(m, "extract", BuiltinKind::Function, last), DeadlinePassed);
+  std::vector<Value> split{Value::integer(7), Value::string(many)};
+  CHECK_THROWS_AS(call(m, "mFromString", BuiltinKind::Command, split), DeadlinePassed);
+  CHECK(split[0].isInt());  // no array was made
+  // Fewer fields are split before the limits are looked at: the call after them stops the run.
+  CHECK(call(m, "extract", BuiltinKind::Function, few).str() == "b");
+}
+
+TEST_CASE("mFromString counts its array and strings against --max-memory before making them", "[builtins]") {
+  HoldingHost host;
+  Machine m(host, 1);
+  m.memoryLimit = 4 << 20;
+  // 100,001 empty strings: each an element and a string object, 6 MiB in all.
+  std::vector<Value> strings{Value::integer(7), Value::string(std::string(100000, ','))};
+  CHECK_THROWS_WITH(call(m, "mFromString", BuiltinKind::Command, strings),
+                    "out of memory: mFromString's 100001 fields would need 6 MiB, more than the 4 MiB "
+                    "of the --max-memory limit");
+  CHECK(strings[0].isInt());  // nothing was made
+
+  // Numbers take no string: 100,001 of them are 1.5 MiB, which fit...
+  std::string ones = "1";
+  for (int i = 0; i < 100000; ++i) ones += ",1";
+  std::vector<Value> numbers{Value::integer(7), Value::string(ones)};
+  call(m, "mFromString", BuiltinKind::Command, numbers);
+  REQUIRE(numbers[0].isArr());
+  CHECK(numbers[0].arr().items.size() == 100001);
+  CHECK(numbers[0].arr().items[100000].i() == 1);
+  // ... unless the run holds 3 MiB already.
+  host.held = 3 << 20;
+  numbers[0] = Value::integer(7);
+  CHECK_THROWS_WITH(call(m, "mFromString", BuiltinKind::Command, numbers),
+                    "out of memory: mFromString's 100001 fields would need 1 MiB beside the 3 MiB the "
+                    "run holds already, more than the 4 MiB of the --max-memory limit");
+  CHECK(numbers[0].isInt());
+}
+
+TEST_CASE("polygon and mPolygon look at the run's limits between the edges of an outline", "[builtins]") {
+  test::TestHost host;
+  Machine m(host, 1);
+  Value flat = Value::array({8});
+  Value rows = Value::array({4, 2});
+  for (Value* v : {&flat, &rows})
+    for (size_t i = 0; i < 8; ++i) v->arr().items[i] = Value::integer(static_cast<int64_t>(10 + 10 * (i % 3)));
+  m.alarms().raise(RunAlarms::kDeadline);
+  std::vector<Value> polygon{flat};
+  CHECK_THROWS_AS(call(m, "polygon", BuiltinKind::Command, polygon), DeadlinePassed);
+  std::vector<Value> mFlat{flat};
+  CHECK_THROWS_AS(call(m, "mPolygon", BuiltinKind::Command, mFlat), DeadlinePassed);
+  std::vector<Value> mRows{rows};
+  CHECK_THROWS_AS(call(m, "mPolygon", BuiltinKind::Command, mRows), DeadlinePassed);
 }

@@ -27,8 +27,6 @@ namespace {
 
 /// Statements run between two checks of the limits and of the host (a live view polls here).
 constexpr int64_t kCheckInterval = 1 << 16;
-/// The largest array rb creates.
-constexpr uint64_t kMaxArrayElements = 64u << 20;
 /// The longest string `+` builds.
 constexpr size_t kMaxStringLength = 64u << 20;
 
@@ -153,7 +151,10 @@ std::string formatItems(const Value* items, uint32_t n, const std::vector<Tok>& 
   newline = true;
   char room[kNumberTextSize];
   for (uint32_t i = 0; i < n; ++i) {
-    out += printedForm(items[i], room);
+    std::string_view item = printedForm(items[i], room);
+    // One line is one string: many long items cannot join into more (print s;s;s... of a long s).
+    if (out.size() + item.size() > kMaxStringLength) [[unlikely]] stringTooLong();
+    out += item;
     Tok sep = i < seps.size() ? seps[i] : Tok::Eof;
     if (sep == Tok::Semicolon && i + 1 < n) out += '\t';
     if (i + 1 == n && sep != Tok::Eof) {
@@ -627,15 +628,7 @@ void Interpreter::doDim(const Instr& in) {
   // run holds is asked of the host (it reads the process's memory) only for a big array.
   uint64_t need = total * sizeof(Value);
   bool big = need > kLongWork;
-  if (m_.memoryLimit) {
-    uint64_t held = big ? m_.host().memoryInUse() : 0;
-    if (need > m_.memoryLimit || held + need > m_.memoryLimit) {
-      std::string msg = "out of memory: array '" + slotName(in.a) + "' would need " + std::to_string(need >> 20) + " MiB";
-      if (need <= m_.memoryLimit) msg += " beside the " + std::to_string(held >> 20) + " MiB the run holds already";
-      throw RuntimeError(msg + ", more than the " + std::to_string(m_.memoryLimit >> 20) +
-                         " MiB of the --max-memory limit");
-    }
-  }
+  if (!m_.memoryFits(need)) m_.reserveMemory(need, "array '" + slotName(in.a) + "'");
   bases_(in.a) = Value::array(std::move(dims));
   if (big) m_.checkAlarms();  // making a big array takes time too
 }

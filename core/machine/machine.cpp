@@ -51,6 +51,26 @@ void Machine::raiseAlarm() const {
   throw DeadlinePassed{};
 }
 
+namespace {
+/// Past this many bytes, what the run holds is asked of the host (it reads the process's memory).
+constexpr uint64_t kAskHostFrom = uint64_t{1} << 16;
+}  // namespace
+
+bool Machine::memoryFits(uint64_t bytes) {
+  if (!memoryLimit) return true;
+  uint64_t held = bytes > kAskHostFrom ? host_.memoryInUse() : 0;
+  return bytes <= memoryLimit && held + bytes <= memoryLimit;
+}
+
+void Machine::reserveMemory(uint64_t bytes, std::string_view what) {
+  if (!memoryLimit) return;
+  uint64_t held = bytes > kAskHostFrom ? host_.memoryInUse() : 0;
+  if (bytes <= memoryLimit && held + bytes <= memoryLimit) return;
+  std::string msg = "out of memory: " + std::string(what) + " would need " + std::to_string(bytes >> 20) + " MiB";
+  if (bytes <= memoryLimit) msg += " beside the " + std::to_string(held >> 20) + " MiB the run holds already";
+  throw RuntimeError(msg + ", more than the " + std::to_string(memoryLimit >> 20) + " MiB of the --max-memory limit");
+}
+
 void Machine::useCommPort(int64_t port) {
   real_.reset();  // closes the previous port, if any
   if (port != 0) connectRobot(host_.openRobot(port));

@@ -18,6 +18,9 @@
 
 namespace rb {
 
+/// The most elements one array holds (dim, data, mFromString).
+inline constexpr uint64_t kMaxArrayElements = 64u << 20;
+
 /// Something the robot did, for `rb trace` and live views.
 struct RobotEvent {
   enum Kind { Locate, Move, Turn, Pen, Crash, Sensor, Setting } kind;
@@ -55,6 +58,12 @@ class Machine {
   [[noreturn]] void raiseAlarm() const;
   /// The --max-memory limit in bytes, for messages (0: none).
   uint64_t memoryLimit = 0;
+  /// Whether `bytes` more fit in the --max-memory limit beside the memory the run holds already
+  /// (always without a limit). What the run holds is asked of the host only for more than 64 KiB.
+  bool memoryFits(uint64_t bytes);
+  /// Before making something big (`dim`'s array, mFromString's fields): unless memoryFits, a
+  /// runtime error saying that `what` would need `bytes`.
+  void reserveMemory(uint64_t bytes, std::string_view what);
   /// The random generator; using it marks the run as depending on the seed.
   Rng& rng() {
     rngUsed_ = true;

@@ -414,7 +414,7 @@ void Canvas::ellipse(Point a, Point b, int width, std::optional<Colour> outline,
 }
 
 void Canvas::polygon(const std::vector<Point>& pts, int width, std::optional<Colour> outline,
-                     std::optional<Colour> fill) {
+                     std::optional<Colour> fill, const std::function<void()>& afterEdge) {
   if (pts.empty()) return;
   if (fill && pts.size() >= 3) {
     // Even-odd scanline fill through pixel centres.
@@ -444,7 +444,10 @@ void Canvas::polygon(const std::vector<Point>& pts, int width, std::optional<Col
   }
   if (outline) {
     auto saved = ops_.size();
-    for (size_t i = 0; i < pts.size(); ++i) line(pts[i], pts[(i + 1) % pts.size()], width, *outline);
+    for (size_t i = 0; i < pts.size(); ++i) {
+      line(pts[i], pts[(i + 1) % pts.size()], width, *outline);
+      if (afterEdge) afterEdge();
+    }
     ops_.erase(ops_.begin() + static_cast<long>(saved), ops_.end());  // recorded once, as the polygon
   }
   record([&] { return DrawOp{DrawOp::Polygon, pts, outline.value_or(0), fill, outline ? width : 0}; });

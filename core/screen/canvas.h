@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -159,8 +160,10 @@ class Canvas {
   void line(Point a, Point b, int width, Colour c);
   void rectangle(Point a, Point b, int width, std::optional<Colour> outline, std::optional<Colour> fill);
   void ellipse(Point a, Point b, int width, std::optional<Colour> outline, std::optional<Colour> fill);
+  /// `afterEdge`, when given, is called after each edge of the outline: a wide outline of many
+  /// long edges is slow work, and the caller may end it there (the run's limits).
   void polygon(const std::vector<Point>& pts, int width, std::optional<Colour> outline,
-               std::optional<Colour> fill);
+               std::optional<Colour> fill, const std::function<void()>& afterEdge = nullptr);
   void floodFill(int x, int y, Colour c);
   /// Draws text with the top-left corner of its first cell at (x, y); returns its width in
   /// pixels (the sum of the characters' advances).
