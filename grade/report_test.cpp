@@ -268,7 +268,7 @@ TEST_CASE("the JSON report's input marks point into the output shown", "[grade][
   CHECK(output.substr(20, 2) == "6\n");
 }
 
-TEST_CASE("the JSON report keeps a picture's path whole but writes no \"##[\"", "[grade][report]") {
+TEST_CASE("the JSON report keeps a picture's path whole but writes no workflow command", "[grade][report]") {
   ClassResult r = sample();
   r.programs[0].picture = "pictures/##[error]x.png";
   std::string json = jsonReport(r);

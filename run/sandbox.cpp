@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -13,6 +14,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <system_error>
@@ -308,7 +310,8 @@ void Sandbox::setDirectory(std::string_view who, const std::string& path) {
   currentFd_ = fd;
 }
 
-int64_t Sandbox::spawn(std::string_view who, const std::string& command, bool wait) {
+int64_t Sandbox::spawn(std::string_view who, const std::string& command, bool wait,
+                       const std::function<void()>& checkpoint) {
   if (!allowSpawn_)
     throw RuntimeError(std::string(who) + ": running other programs is not allowed; rb run "
                        "--allow-spawn allows it");
@@ -323,9 +326,22 @@ int64_t Sandbox::spawn(std::string_view who, const std::string& command, bool wa
     throw RuntimeError(std::string(who) + ": cannot start " + quoted(command) + ": " +
                        std::generic_category().message(rc));
   if (!wait) return 1;
+  // Waited for a little at a time, the run's limits looked at in between: a command that never
+  // ends is ended with the run.
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
+  for (int pause = 1;; pause = std::min(pause * 2, 20)) {
+    pid_t got = waitpid(pid, &status, WNOHANG);
+    if (got == pid) break;
+    if (got < 0 && errno != EINTR) return -1;
+    try {
+      if (checkpoint) checkpoint();
+    } catch (...) {
+      ::kill(pid, SIGKILL);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      throw;
+    }
+    ::usleep(static_cast<useconds_t>(pause) * 1000);
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }

@@ -28,7 +28,8 @@ class Sandbox : public SystemAccess {
   bool fileExists(std::string_view who, const std::string& path) override;
   void renameFile(std::string_view who, const std::string& from, const std::string& to) override;
   void setDirectory(std::string_view who, const std::string& path) override;
-  int64_t spawn(std::string_view who, const std::string& command, bool wait) override;
+  int64_t spawn(std::string_view who, const std::string& command, bool wait,
+                const std::function<void()>& checkpoint) override;
 
   /// Resolve names one component at a time, as on kernels without openat2 (for tests of that
   /// path; it is chosen by itself where openat2 is missing).

@@ -106,7 +106,7 @@ Value sysDirSet(Machine& m, Args& a) {
 
 Value sysSpawn(Machine& m, Args& a) {
   bool wait = a.has(1) && a.integer(1) != kSpawnNoWait;
-  return Value::integer(system(m, "Spawn").spawn("Spawn", a.str(0), wait));
+  return Value::integer(system(m, "Spawn").spawn("Spawn", a.str(0), wait, [&m] { m.checkAlarms(); }));
 }
 
 void appendSystemBuiltins(std::vector<Builtin>& t) {

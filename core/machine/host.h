@@ -5,6 +5,7 @@
 // never touches stdin, stdout or the system clock itself.
 
 #include <atomic>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -32,8 +33,11 @@ class SystemAccess {
   /// Makes `path` the folder that later relative names start from.
   virtual void setDirectory(std::string_view who, const std::string& path) = 0;
   /// Runs a command line; `wait`: until it ends (returns its exit status), else returns at once
-  /// (1 when it started).
-  virtual int64_t spawn(std::string_view who, const std::string& command, bool wait) = 0;
+  /// (1 when it started). While it waits it calls `checkpoint` now and then: a run's limits
+  /// hold during the wait, and when `checkpoint` throws, the command is ended and the exception
+  /// goes on.
+  virtual int64_t spawn(std::string_view who, const std::string& command, bool wait,
+                        const std::function<void()>& checkpoint) = 0;
 };
 
 /// What a host's watchdog raises while a program runs (Host::armWatchdog), as bits of one
