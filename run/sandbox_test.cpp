@@ -115,7 +115,7 @@ TEST_CASE("sandbox: a command waited for ends when the run's limit does", "[sand
   auto checkpoint = [&calls] {
     if (++calls == 3) throw RuntimeError("the time limit");
   };
-  CHECK_THROWS_WITH(box.spawn("Spawn", "sleep 30", true, checkpoint), "the time limit");
+  CHECK_THROWS_WITH(box.spawn("Spawn", "exec sleep 30", true, checkpoint), "the time limit");
   CHECK(calls == 3);
 }
 
