@@ -203,6 +203,8 @@ int executeTest(const TestOptions& opts) {
     return result.fatalCode;
   }
   result.studentView = opts.student;
+  if (opts.student)
+    for (grade::ProgramResult& p : result.programs) p = grade::forStudents(std::move(p));
   for (const std::string& w : result.warnings) say("warning: " + w);
   for (const std::string& e : result.writeErrors) say(e);
   bool written = result.writeErrors.empty();
@@ -260,8 +262,9 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
   test->add_option("--junit", opts->junit, "Also write a JUnit XML report to FILE")->type_name("FILE");
   test->add_option("--csv", opts->csv, "Also write a CSV grade book to FILE")->type_name("FILE");
   test->add_option("--pictures", opts->pictures,
-                   "Write one PNG per program into DIR: its trail (red) over the solution's (green), the "
-                   "waypoints and regions asked for, a legend (with --student: no solution)")
+                   "Write one PNG per program into DIR: its robot's path and trail (red) over the solution's "
+                   "(green), the waypoints, regions and colours asked for, where checks failed, a legend "
+                   "(with --student: no solution)")
       ->type_name("DIR");
   test->add_option("--replays", opts->replays,
                    "With --pictures (or --html): also a replay of each program's run beside its "

@@ -118,10 +118,14 @@ grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
   return r;
 }
 
-/// rb check's view of the program, as `rb check [--target rb9] FILE` reports it.
-void recordCheck(const JobOptions& opts, grade::RunRecord& rec) {
+/// rb check's view of the program, as `rb check [--target rb9] FILE` reports it; `placed`:
+/// as it runs, after a world program that placed the robot.
+void recordCheck(const JobOptions& opts, grade::RunRecord& rec, bool placed = false) {
   LintOptions lint;
   lint.realRobot = opts.checkTarget == "rb9";  // a real robot needs no rLocate
+  lint.robotPlaced = placed;
+  rec.checkDiags.clear();
+  rec.targetDiags.clear();
   LoadedFile checked = loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles, lint);
   if (checked.exitCode == exitcode::kNoInput) {
     rec.checkExit = exitcode::kNoInput;
@@ -362,14 +366,27 @@ int executeJob(JobOptions opts) {
                                   std::to_string(d.line) + ": " + d.message;
         }
         observer->startAt(r.machine->robot());
+        // rb check's view as the program runs: after this world, which placed the robot.
+        if (r.machine->robot().located()) {
+          recordCheck(opts, rec, true);
+          rec.complete = false;
+          bool written = writeRecord(recordFile, rec);
+          rec.complete = true;
+          if (!written) return "cannot write the record";
+        }
       }
       if (recording) observer->recording = &*recording;
       r.machine->setObserver(&*observer);
       return "";
     };
+    std::optional<std::vector<render::ColourRun>> finalScreen;
     run.afterRun = [&](HeadlessRun& r) {
       r.machine->setObserver(nullptr);
       if (recording) recording->finish(*r.machine, r.result);  // before the post programs
+      // The student's screen as their program left it: a post program's prints (a hidden
+      // check's "fail: ...") never reach a picture, a thumbnail or a replay.
+      if (screenFile.wanted())
+        finalScreen = render::composeRuns(r.machine->canvas().pixels(), render::robotView(*r.machine));
       if (posts.empty()) return;
       HeadlessHost& host = r.headlessHost();
       host.flush();
@@ -459,11 +476,9 @@ int executeJob(JobOptions opts) {
           std::fprintf(stderr, "rb test-job: cannot make the replay: %s\n", e.what());
         }
       }
-      if (screenFile.wanted()) {
-        const Machine& m = *run.machine;
+      if (screenFile.wanted() && finalScreen) {
         std::string error;
-        std::string bytes = grade::screenFileBytes(render::composeRuns(m.canvas().pixels(), render::robotView(m)),
-                                                   Canvas::kWidth, Canvas::kHeight);
+        std::string bytes = grade::screenFileBytes(*finalScreen, Canvas::kWidth, Canvas::kHeight);
         rec.screen = screenFile.write(bytes, error);
         if (!rec.screen) std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
       }

@@ -1,5 +1,7 @@
 #include "checks.h"
 
+#include <optional>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -310,7 +312,14 @@ struct Verdict {
   std::string message;
   double earned = -1;  ///< points earned when not the check's own (a tier's); -1: the check's
   std::vector<std::string> feedback;
+  std::optional<P2> at;  ///< where on the screen it failed, when it failed at a place
 };
+
+Verdict failedAt(std::string message, P2 at) {
+  Verdict v{false, std::move(message)};
+  v.at = at;
+  return v;
+}
 
 Verdict checkOutput(const Check& c, const RunOutcome& run) {
   if (run.outputCut) return {false, "the output is longer than " + std::to_string(kOutputCap >> 20) + " MB"};
@@ -343,13 +352,22 @@ Verdict checkClean(const Check& c, const RunRecord& r) {
   auto count = [](size_t n, const char* what) {
     return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
   };
+  // Every diagnostic the check counts, with its text: the first in the message, the others
+  // below it (at most 20, then how many more).
+  auto listed = [](Verdict v, const std::vector<const DiagRecord*>& all) {
+    constexpr size_t kShown = 20;
+    for (size_t i = 1; i < all.size() && i <= kShown; ++i) v.feedback.push_back(diagText(*all[i]));
+    if (all.size() > kShown + 1) v.feedback.push_back("(and " + std::to_string(all.size() - kShown - 1) + " more)");
+    return v;
+  };
   if (!errors.empty())
-    return {false, "rb check finds " + count(errors.size(), "error") + ": " + diagText(*errors[0]) +
-                       (errors.size() > 1 ? " (and more)" : "")};
+    return listed({false, "rb check finds " + count(errors.size(), "error") + ": " + diagText(*errors[0])}, errors);
   if (!warnings.empty() && !c.allowWarnings)
-    return {false, "rb check finds " + count(warnings.size(), "warning") + " (none allowed): " +
-                       diagText(*warnings[0]) + (warnings.size() > 1 ? " (and more)" : "")};
-  return {true, warnings.empty() ? "rb check finds nothing" : "rb check finds " + count(warnings.size(), "warning") + " (allowed)"};
+    return listed({false, "rb check finds " + count(warnings.size(), "warning") + " (none allowed): " + diagText(*warnings[0])},
+                  warnings);
+  if (warnings.empty()) return {true, "rb check finds nothing"};
+  return listed({true, "rb check finds " + count(warnings.size(), "warning") + " (allowed): " + diagText(*warnings[0])},
+                warnings);
 }
 
 std::string regionText(const Region& g) {
@@ -379,7 +397,7 @@ Verdict checkEndsIn(const Check& c, const RunRecord& r) {
   const Region& g = c.regions[0];
   double off = outside(g, r.pos);
   if (off > 0)
-    return {false, "the robot ends at " + point(r.pos) + ", " + pixels(off) + " px outside " + regionText(g)};
+    return failedAt("the robot ends at " + point(r.pos) + ", " + pixels(off) + " px outside " + regionText(g), r.pos);
   return {true, "the robot ends at " + point(r.pos) + ", inside " + regionText(g)};
 }
 
@@ -403,9 +421,11 @@ Verdict checkVisits(const Check& c, const RunRecord& r) {
                          " after point " + std::to_string(k)};
   }
   std::string after = c.inOrder && k > 0 ? " after point " + std::to_string(k) : "";
-  if (!std::isfinite(v.closest)) return {false, "the robot never reaches " + which + after + ": it does not move on"};
-  return {false, "the robot misses " + which + after + " by " + pixels(v.closest - c.tolerance) +
-                     " px: it comes within " + pixels(v.closest) + " px, " + pixels(c.tolerance) + " px allowed"};
+  if (!std::isfinite(v.closest))
+    return failedAt("the robot never reaches " + which + after + ": it does not move on", c.targets[k]);
+  return failedAt("the robot misses " + which + after + " by " + pixels(v.closest - c.tolerance) + " px: it comes within " +
+                      pixels(v.closest) + " px, " + pixels(c.tolerance) + " px allowed",
+                  c.targets[k]);
 }
 
 Verdict compareTrails(const Polylines& got, const Polylines& want, double tolerance, const std::string& whose) {
@@ -449,13 +469,14 @@ Verdict checkAvoid(const Check& c, const RunRecord& r) {
   for (const Region& g : c.regions) {
     Reach reach = firstReach(r.path, g, r.radius);
     if (reach.reached)
-      return {false, "the robot enters " + regionText(g) + " at " + point(reach.at) +
-                         onLine(pathLine(r, reach.line, reach.point))};
+      return failedAt("the robot enters " + regionText(g) + " at " + point(reach.at) +
+                          onLine(pathLine(r, reach.line, reach.point)),
+                      reach.at);
   }
   for (size_t k = 0; k < c.colours.size(); ++k) {
     const RunRecord::Touch* t = touchOf(r, c.colours[k]);
     if (!t) return {false, "the colour " + colourText(c, k) + " was not watched"};
-    if (t->touched) return {false, "the robot touches " + colourText(c, k) + " at " + point(t->at) + onLine(t->line)};
+    if (t->touched) return failedAt("the robot touches " + colourText(c, k) + " at " + point(t->at) + onLine(t->line), t->at);
   }
   return {true, "the robot keeps out"};
 }
@@ -574,7 +595,7 @@ Verdict evaluateKind(const Check& c, size_t index, const References& refs, const
       return {true, "finishes after " + std::to_string(r.steps) + " steps"};
     }
     case Check::NoCrash:
-      if (r.crashed) return {false, stopDescription(r, refs.limits)};
+      if (r.crashed) return failedAt(stopDescription(r, refs.limits), r.pos);
       return {true, "the robot never crashes"};
     case Check::Clean: return checkClean(c, r);
     case Check::EndsIn: return checkEndsIn(c, r);
@@ -625,6 +646,9 @@ Verdict evaluate(const Check& c, size_t index, const References& refs, const Run
 
 /// Why nothing the program did can earn points, or "".
 std::string gateOf(const RunOutcome& run, bool aboutRobot, const LimitNames& limits) {
+  // A program that does not compile: said once, not as every check's failure with its hint.
+  if (run.record && run.record->status == "rejected" && run.process.kind == JobOutcome::Exited)
+    return "the program " + unrunnable(run);
   if (!run.record || run.record->status == "rejected" || run.record->status == "not-run") return "";
   const RunRecord& r = *run.record;
   if (!r.worldError.empty()) return "";
@@ -676,6 +700,7 @@ Grading checkAssignment(const Assignment& assignment, const References& refs, co
         result.passed = false;
         result.message = prefix + v.message;
         result.feedback = std::move(v.feedback);
+        if (s == 0) result.at = v.at;  // the pictures show the first seed's run
         earned = 0;
         break;
       }

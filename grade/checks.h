@@ -42,7 +42,12 @@ struct CheckResult {
   std::string hint;     ///< the teacher's hint, shown under a failure
   bool hidden = false;  ///< a student's report shows only that a hidden check failed
   bool required = false;
-  std::vector<std::string> feedback;  ///< what a teacher's post program printed
+  /// More lines under the message: what a teacher's post program printed, or every diagnostic
+  /// a check kind counted beyond the first.
+  std::vector<std::string> feedback;
+  /// Where on the screen the check failed (the robot entered a region, touched a colour,
+  /// crashed, ended outside, missed a waypoint), in the first seed's run; for pictures.
+  std::optional<P2> at;
 };
 
 /// How each limit of a run is named in messages, as whoever set it wrote it

@@ -291,8 +291,7 @@ class Grader {
     return opts_.timeout.value_or(opts_.trustComments ? spec.timeout : std::min(spec.timeout, kCommentTimeoutCap));
   }
   bool screenWanted() const {
-    return assignment_ && (assignment_->needsScreen() ||
-                           (!opts_.picturesDir.empty() && (opts_.studentPictures || opts_.screens)));
+    return assignment_ && (assignment_->needsScreen() || !opts_.picturesDir.empty());
   }
 
   const GradeOptions& opts_;
@@ -760,12 +759,13 @@ bool Grader::findClass() {
     }
     if (!any) {
       // Saved under another name by an editor (square.bas.txt for square.bas): that file is
-      // the student's, not graded, and says why.
-      for (ProgramResult& r : extra_) {
-        fs::path cp = fs::weakly_canonical(r.program, ec);
-        std::string stem = full.string() + ".";
-        if (r.student.empty() && cp.string().rfind(stem, 0) == 0) {
-          r.student = e.student;
+      // the student's, whether it is graded (--include '*.bas.txt') or listed as not graded.
+      // Looked for in the whole class, so that every shard agrees on who is missing.
+      std::string stem = full.string() + ".";
+      for (const std::string& p : all) {
+        std::string cp = fs::weakly_canonical(p, ec).string();
+        if (cp.rfind(stem, 0) == 0 && !students_.count(cp)) {
+          students_[cp] = e.student;
           any = true;
         }
       }
@@ -1062,8 +1062,10 @@ void Grader::finishProgram(size_t index) {
   r.output = first.output.substr(0, kReportCap);
   r.errors = first.errors.substr(0, kReportCap);
   if (first.record) r.marks = lineMarks(*first.record, r.program);
-  if (!opts_.picturesDir.empty()) writePicture(r, runs);
-  if (opts_.screens && !opts_.picturesDir.empty() && first.screen) {
+  // A program that did not compile (or run) has no picture: there is nothing of its own to show.
+  const bool ran = first.record && first.record->status != "rejected" && first.record->status != "not-run";
+  if (!opts_.picturesDir.empty() && ran) writePicture(r, runs);
+  if (opts_.screens && !opts_.picturesDir.empty() && first.screen && ran) {
     fs::path to = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".screen.png");
     std::string error;
     if (render::writePngFile(to.string(), halfSize(imageOf(*first.screen)), error)) r.screen = to.string();
@@ -1095,6 +1097,7 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
   if (run.screen) in.studentScreen = imageOf(*run.screen);
   in.title = fs::path(r.program).filename().string() + (r.student.empty() ? "" : " (" + r.student + ")");
   if (run.record->located) in.studentEnd = run.record->pos;
+  in.studentPath = run.record->path;
   if (!refs_.solution.empty() && refs_.solution[0].record) {
     const RunRecord& sol = *refs_.solution[0].record;
     in.reference = sol.trail;
@@ -1104,24 +1107,41 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
       in.background = solutionImage_;
     }
   } else if (assignment_) {
+    // No solution to compare with: the program's own screen behind its path (the world's walls).
+    if (run.screen && !opts_.studentPictures) in.background = imageOf(*run.screen);
     for (const Check* c : allChecks(*assignment_))
       if (c->kind == Check::Trail) {
         in.reference = c->reference;
         break;
       }
   }
-  if (assignment_)
+  if (assignment_) {
     for (const Check* c : allChecks(*assignment_)) {
       if (c->hidden && opts_.studentPictures) continue;
       if (c->kind == Check::Visits && in.waypoints.empty()) in.waypoints = c->targets;
       if (c->kind == Check::EndsIn || c->kind == Check::Touch || c->kind == Check::Avoid)
         for (const Region& g : c->regions)
           in.regions.push_back({c->kind == Check::Avoid ? PictureRegion::Avoid : PictureRegion::Goal, g, c->name});
+      if (c->kind == Check::Touch || c->kind == Check::Avoid)
+        for (size_t k = 0; k < c->colours.size(); ++k)
+          in.colours.push_back({c->colours[k], c->name == c->colourNames[k] ? c->name : c->name + ": " + c->colourNames[k],
+                                c->kind == Check::Avoid});
     }
+    // Where each failed check failed (a hidden one's place stays hidden from students).
+    for (const CheckResult& c : r.checks)
+      if (!c.passed && c.checked && c.at && !(c.hidden && opts_.studentPictures)) in.failures.push_back({*c.at, c.name});
+  }
   fs::path out = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".png");
   std::string error;
-  if (render::writePngFile(out.string(), feedbackPicture(in), error)) r.picture = out.string();
-  else result_.writeErrors.push_back(error);
+  if (render::writePngFile(out.string(), feedbackPicture(in), error)) {
+    r.picture = out.string();
+    std::vector<std::string> drawn = legendEntries(in);
+    r.pictureCaption = "Drawn: ";
+    for (size_t i = 0; i < drawn.size(); ++i) r.pictureCaption += (i ? "; " : "") + drawn[i];
+    r.pictureCaption += drawn.empty() ? "nothing but the screen." : ".";
+  } else {
+    result_.writeErrors.push_back(error);
+  }
 }
 
 }  // namespace

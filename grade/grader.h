@@ -82,6 +82,7 @@ struct ProgramResult {
   std::vector<RunRecord::InputMark> inputs;
   std::string errors;              ///< the first run's standard error, shortened
   std::string picture;             ///< the PNG written for it, or ""
+  std::string pictureCaption;      ///< what the picture draws, from its legend ("Drawn: your trail; ...")
   std::string replay;              ///< the replay written for it, or ""
   std::string screen;              ///< its final screen's PNG, half size (GradeOptions::screens), or ""
   /// Lines of the program where its first run went wrong: its errors (rb check's, loading's),

@@ -352,14 +352,16 @@ std::string programPage(const ClassResult& r, size_t index, const std::string* s
   if (!p.picture.empty() || !p.screen.empty()) {
     out += "<section id=\"pictures\"><h2>Pictures</h2>\n";
     if (!p.picture.empty())
-      out += "<figure>" + imageTag(p.picture, pageDir, "the run compared with the solution", "") +
+      out += "<figure>" +
+             imageTag(p.picture, pageDir,
+                      r.studentView ? "the run over its final screen" : "the run compared with the solution", "") +
              "<figcaption>" +
-             (r.studentView ? "The run's trail (red) over its final screen, with what the assignment asked for."
-                            : "The run's trail (red) over the solution's (green), with what the assignment asked for.") +
+             htmlEscape(p.pictureCaption.empty() ? std::string("The run and what the assignment asked for.")
+                                                 : p.pictureCaption) +
              "</figcaption></figure>\n";
     if (!p.screen.empty())
       out += "<figure>" + imageTag(p.screen, pageDir, "the final screen", "") +
-             "<figcaption>The final screen.</figcaption></figure>\n";
+             "<figcaption>The final screen, as the program left it.</figcaption></figure>\n";
     out += "</section>\n";
   }
   if (!p.replay.empty()) {

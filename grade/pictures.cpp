@@ -17,6 +17,7 @@ constexpr int kWidth = kPictureWidth, kArena = kArenaHeight, kHeight = kPictureH
 // ---- how things are drawn (pixels)
 constexpr double kReferenceHalfWidth = 4.5;  ///< the solution's trail: a band 9 px wide
 constexpr double kStudentHalfWidth = 1.0;    ///< the student's trail: a line 2 px wide
+constexpr double kPathHalfWidth = 0.75;       ///< the robot's path: a pale line 1.5 px wide
 constexpr double kRingHalfWidth = 1.25;      ///< a robot's end circle: 2.5 px
 constexpr double kOutlineHalfWidth = 1.0;    ///< a region's outline: 2 px
 constexpr double kWaypointRadius = 5;
@@ -156,6 +157,12 @@ void ring(Coverage& c, P2 centre, double r, double halfWidth) {
   for (int y = box.y0; y <= box.y1; ++y)
     for (int x = box.x0; x <= box.x1; ++x)
       c.cover(x, y, edge(halfWidth, std::abs(std::hypot(x - centre.x, y - centre.y) - r)));
+}
+
+/// An X of two strokes, `r` from its centre to each end.
+void cross(Coverage& c, P2 centre, double r) {
+  segment(c, {centre.x - r, centre.y - r}, {centre.x + r, centre.y + r}, 1.6);
+  segment(c, {centre.x - r, centre.y + r}, {centre.x + r, centre.y - r}, 1.6);
 }
 
 void disc(Coverage& c, P2 centre, double r) {
@@ -380,9 +387,11 @@ Box centred(double x, double y, int w, int h) {
 
 /// One entry of the legend; its text in Latin-1, as the fonts draw it.
 struct LegendItem {
-  enum Swatch { StudentTrail, StudentEnd, ReferenceTrail, ReferenceEnd, Waypoint, Goal, Avoid } swatch;
+  enum Swatch { StudentTrail, StudentPath, StudentEnd, Failure, ReferenceTrail, ReferenceEnd, Waypoint, Goal, Avoid,
+                Colour } swatch;
   std::string text;
   Region::Kind shape = Region::Rect;  ///< a region's swatch: a small square or circle
+  uint32_t rgb = 0;                   ///< a colour's swatch
 };
 
 bool drawsReference(const PictureInput& in) { return !in.studentView && !empty(in.reference); }
@@ -395,7 +404,9 @@ constexpr int kRowHeight = 24, kLegendRows = 2, kMaxLabelWidth = 260;
 int group(const LegendItem& it) {
   switch (it.swatch) {
     case LegendItem::StudentTrail:
-    case LegendItem::StudentEnd: return 0;
+    case LegendItem::StudentPath:
+    case LegendItem::StudentEnd:
+    case LegendItem::Failure: return 0;
     case LegendItem::ReferenceTrail:
     case LegendItem::ReferenceEnd: return 1;
     default: return 2;
@@ -461,7 +472,10 @@ bool layOut(Writer& w, const std::vector<LegendItem>& items, std::vector<Box>& b
 std::vector<LegendItem> legendItems(const PictureInput& in, Writer& w) {
   std::vector<LegendItem> items;
   if (!empty(in.student)) items.push_back({LegendItem::StudentTrail, "your trail"});
+  if (!empty(in.studentPath)) items.push_back({LegendItem::StudentPath, "your robot's path"});
   if (in.studentEnd) items.push_back({LegendItem::StudentEnd, "where your robot ended"});
+  if (!in.failures.empty())
+    items.push_back({LegendItem::Failure, in.failures.size() == 1 ? "where a check failed" : "where checks failed"});
   if (drawsReference(in)) items.push_back({LegendItem::ReferenceTrail, "the solution's trail"});
   if (drawsReferenceEnd(in)) items.push_back({LegendItem::ReferenceEnd, "where the solution's robot ended"});
   if (!in.waypoints.empty())
@@ -497,11 +511,25 @@ std::vector<LegendItem> legendItems(const PictureInput& in, Writer& w) {
     }
     return out;
   };
+  // The colours colour checks watch, named (or by role only when there is no room).
+  auto colourItems = [&](bool named) {
+    std::vector<LegendItem> out;
+    for (const PictureColour& c : in.colours) {
+      std::string text = (c.avoid ? "keep off: " : "touch: ") +
+                         (named ? w.fit(kLegendFont, latin1(c.label), kMaxLabelWidth) : std::string("a colour"));
+      LegendItem it{LegendItem::Colour, text, Region::Rect, c.rgb};
+      if (std::none_of(out.begin(), out.end(), [&](const LegendItem& o) { return o.text == it.text && o.rgb == it.rgb; }))
+        out.push_back(it);
+    }
+    return out;
+  };
   std::vector<LegendItem> all = items;
   for (LegendItem& it : regionItems(true)) all.push_back(std::move(it));
+  for (LegendItem& it : colourItems(true)) all.push_back(std::move(it));
   std::vector<Box> boxes;
   if (layOut(w, all, boxes)) return all;
   for (LegendItem& it : regionItems(false)) items.push_back(std::move(it));
+  for (LegendItem& it : colourItems(false)) items.push_back(std::move(it));
   return items;
 }
 
@@ -517,6 +545,22 @@ void drawSwatch(render::RgbImage& img, const LegendItem& it, int x, int mid) {
       segment(c, {x + 5.0, y}, {x + kSwatchWidth - 6.0, y}, kReferenceHalfWidth);
       c.paint(img, kReferenceColour);
       return;
+    case LegendItem::StudentPath:
+      segment(c, {x + 3.0, y}, {x + kSwatchWidth - 4.0, y}, kPathHalfWidth);
+      c.paint(img, kPathColour);
+      return;
+    case LegendItem::Failure:
+      cross(c, {cx, y}, 6);
+      c.paint(img, kFailColour);
+      return;
+    case LegendItem::Colour: {
+      for (int yy = mid - 7; yy <= mid + 7; ++yy)
+        for (int xx = x + 7; xx <= x + kSwatchWidth - 8; ++xx) {
+          bool rim = yy == mid - 7 || yy == mid + 7 || xx == x + 7 || xx == x + kSwatchWidth - 8;
+          img.set(xx, yy, rim ? kTextColour : it.rgb);
+        }
+      return;
+    }
     case LegendItem::StudentEnd:
     case LegendItem::ReferenceEnd:
       ring(c, {cx, y}, 7, kRingHalfWidth);
@@ -625,8 +669,17 @@ render::RgbImage feedbackPicture(const PictureInput& in) {
     dots.paint(img, kWaypointColour);
   }
 
+  // The path under the trail: where the robot went, also with its pen up.
+  Coverage path(kArenaBox);
+  polylines(path, in.studentPath, kPathHalfWidth);
+  path.paint(img, kPathColour);
   polylines(student, in.student, kStudentHalfWidth);
   student.paint(img, kStudentColour);
+  Coverage crosses(kArenaBox);
+  for (const PictureMark& m : in.failures) cross(crosses, m.at, 7);
+  crosses.grown().paint(img, kWhite);
+  crosses.paint(img, kFailColour);
+  for (const PictureMark& m : in.failures) cross(marks, m.at, 7);
   if (in.studentEnd) {
     Coverage end(near(*in.studentEnd, in.robotRadius, kArenaBox));
     ring(end, *in.studentEnd, in.robotRadius, kRingHalfWidth);
@@ -675,6 +728,20 @@ render::RgbImage feedbackPicture(const PictureInput& in) {
     const Box place = labels.place(candidates);
     labelBox(img, place, colour, 0.88);
     w.write(img, kArenaBox, kLabelFont, place.x0 + 4, place.y0 + 2, text, colour, false);
+  }
+  // Each failed check's name beside its cross.
+  for (const PictureMark& m : in.failures) {
+    const std::string text = w.fit(kLabelFont, latin1(m.label), 260);
+    if (text.empty()) continue;
+    const int tw = w.width(kLabelFont, text) + 8, th = w.height(kLabelFont) + 4;
+    std::vector<Box> candidates;
+    for (double off : {12.0, 24.0, in.robotRadius + 6})
+      for (int sx : {1, -1})
+        for (int sy : {-1, 1})
+          candidates.push_back(centred(m.at.x + sx * (off + tw / 2.0), m.at.y + sy * (off / 2 + th / 2.0), tw, th));
+    const Box place = labels.place(candidates);
+    labelBox(img, place, kFailColour, 0.9);
+    w.write(img, kArenaBox, kLabelFont, place.x0 + 4, place.y0 + 2, text, kFailColour, false);
   }
   // Waypoint numbers beside their markers; waypoints at the same place share one ("1, 5").
   std::vector<bool> done(in.waypoints.size(), false);

@@ -21,8 +21,25 @@ struct PictureRegion {
   std::string label;  ///< the check's name
 };
 
+/// Where a check failed (the robot entered an area, touched a colour, crashed...), marked with
+/// a cross and the check's name.
+struct PictureMark {
+  P2 at;
+  std::string label;
+};
+
+/// A colour an avoid or touch check watches: not drawn (it is on the screen), but named in the
+/// legend with its swatch.
+struct PictureColour {
+  uint32_t rgb = 0;  ///< 0xRRGGBB
+  std::string label;  ///< the check's name and the colour's ("walls: black")
+  bool avoid = true;
+};
+
 struct PictureInput {
   Polylines student;                          ///< the student's trail
+  /// The student's robot's path (its centre, from the recording), drawn whatever the pen did.
+  Polylines studentPath;
   Polylines reference;                        ///< the solution's trail (or the trail check's)
   std::optional<render::RgbImage> background; ///< the solution's final screen, shown faded
   std::optional<render::RgbImage> studentScreen; ///< the student's final screen (student view)
@@ -34,6 +51,8 @@ struct PictureInput {
   bool studentView = false;
   std::vector<P2> waypoints;                  ///< numbered in order (the visits checks)
   std::vector<PictureRegion> regions;
+  std::vector<PictureColour> colours;         ///< colour checks, in the legend
+  std::vector<PictureMark> failures;          ///< where checks failed
   std::string title;                          ///< the program's name, written at the top
 };
 
@@ -44,8 +63,11 @@ constexpr int kLegendHeight = 64;  ///< two rows of legend entries
 constexpr int kPictureHeight = kArenaHeight + kLegendHeight;
 
 /// The arena, and a legend strip below it naming everything drawn: the reference trail as a
-/// wide light green band ("the solution's trail"), the student's trail as a thin red line on
-/// top ("your trail"), the robots' final positions as circles in the same colours, waypoints as
+/// wide light green band ("the solution's trail"), the robot's path as a thin pale red line
+/// ("your robot's path"; also where the pen was up), the student's trail as a red line on top
+/// ("your trail"), the places where checks failed as dark crosses with the check's name
+/// ("where a check failed"), the colours colour checks watch as swatches ("keep off: walls:
+/// black"), the robots' final positions as circles in the same colours, waypoints as
 /// numbered blue markers, regions outlined (goals green, areas to avoid orange and hatched)
 /// with their labels written in the arena. The title, when given, is at the top left (or at
 /// another corner when the screen has something drawn there and that corner has not). Text is
@@ -66,5 +88,7 @@ constexpr uint32_t kStudentColour = 0xD01818;
 constexpr uint32_t kWaypointColour = 0x1F5FD0;
 constexpr uint32_t kGoalColour = 0x2E9E2E;
 constexpr uint32_t kAvoidColour = 0xE05A00;
+constexpr uint32_t kPathColour = 0xE89090;
+constexpr uint32_t kFailColour = 0x8B0000;
 
 }  // namespace rb::grade

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <re2/re2.h>
 
 #include "text.h"
 
@@ -57,6 +58,19 @@ std::string padLeft(const std::string& s, size_t w) { return std::string(w > wid
 
 /// Untrusted text as the reports show it (text.h): a name, a message, a reason on one line.
 std::string line(const std::string& s) { return shownText(s, TextShape::Line); }
+/// Line `n` (1-based) of a program's text, without its line end; "" when there is none.
+std::string sourceLine(const std::string& text, uint32_t n) {
+  size_t start = 0;
+  for (uint32_t i = 1; i < n; ++i) {
+    start = text.find('\n', start);
+    if (start == std::string::npos) return "";
+    ++start;
+  }
+  std::string out = text.substr(start, text.find('\n', start) - start);
+  if (!out.empty() && out.back() == '\r') out.pop_back();
+  return out.size() > 200 ? out.substr(0, 200) + "..." : out;
+}
+
 /// Lines: output, errors, a teacher's hint or feedback.
 std::string block(const std::string& s) { return shownText(s, TextShape::Block); }
 
@@ -227,6 +241,31 @@ std::pair<std::string, std::vector<RunRecord::InputMark>> shownOutput(const Prog
 
 }  // namespace
 
+std::string withoutGrants(const std::string& text) {
+  // A parenthesis that names what grants access, and "; rb run --allow-spawn allows it".
+  static const RE2 aside(R"(\s*\([^()]*(?:--allow-files|--allow-spawn|--trust-comments|--port\b|--real\b|)"
+                         R"(ports = true|spawn = true)[^()]*\))");
+  static const RE2 clause(R"(;\s*rb (?:run|test) --[a-z-]+[^;()\n]*allows? [^;()\n]*)");
+  std::string out = text;
+  RE2::GlobalReplace(&out, aside, "");
+  RE2::GlobalReplace(&out, clause, "");
+  return out;
+}
+
+ProgramResult forStudents(ProgramResult p) {
+  p.reason = withoutGrants(p.reason);
+  p.gate = withoutGrants(p.gate);
+  p.errors = withoutGrants(p.errors);
+  for (std::string& n : p.notes) n = withoutGrants(n);
+  for (ProgramResult::LineMark& m : p.marks) m.message = withoutGrants(m.message);
+  for (CheckResult& c : p.checks) {
+    c.message = withoutGrants(c.message);
+    c.note = withoutGrants(c.note);
+    for (std::string& f : c.feedback) f = withoutGrants(f);
+  }
+  return p;
+}
+
 CheckResult shownCheck(const CheckResult& check, bool student) { return shown(check, student); }
 std::string shownReason(const ProgramResult& program, bool student) { return reasonOf(program, student); }
 std::string outputTranscript(const ProgramResult& program) { return transcript(program); }
@@ -299,13 +338,21 @@ std::string textReport(const ClassResult& r, bool showDetails) {
   return out;
 }
 
-std::string studentFeedback(const ProgramResult& p, const ClassResult& r) {
+std::string studentFeedback(const ProgramResult& program, const ClassResult& r) {
+  const ProgramResult p = forStudents(program);
   std::string out = line(r.title) + ": " + line(p.program) + (p.student.empty() ? "" : " (" + line(p.student) + ")") + "\n";
   out += "result: " + std::string(p.verdict == "pass" ? "passed" : p.verdict == "missing" ? "no submission" : "not passed");
   if (r.assignment) out += ", " + pointsText(p.points) + " of " + pointsText(p.maxPoints) + " points";
   out += "\n\n";
   if (p.checks.empty() || !p.gate.empty()) {
     out += line(reasonOf(p, true)) + "\n";
+    // The lines where it went wrong, as the program has them: said once, not under every check.
+    size_t shownMarks = 0;
+    for (const ProgramResult::LineMark& m : p.marks) {
+      if (shownMarks++ == 3) break;
+      std::string text = sourceLine(p.source, m.line);
+      if (!text.empty()) out += "  " + std::to_string(m.line) + " | " + line(text) + "\n";
+    }
     if (!p.gate.empty()) return out;
   }
   for (const CheckResult& raw : p.checks) {

@@ -30,6 +30,14 @@ std::string junitReport(const ClassResult& result);
 /// A CSV grade book: one row per program with its result, points and reason.
 std::string csvReport(const ClassResult& result);
 
+/// The program as a student's report shows it: no message names an option or a setting that
+/// would have granted what was refused ("(rb run --allow-files DIR allows another folder)",
+/// "(rb test --trust-comments)", "(ports = true)"): that is for the teacher, not a cheater's
+/// guide. rb test --student's reports and every feedback file show programs this way.
+ProgramResult forStudents(ProgramResult program);
+/// The same for one message.
+std::string withoutGrants(const std::string& text);
+
 /// A check as a report shows it: in a report for students (--student) a hidden check is only
 /// "hidden check" with its verdict.
 CheckResult shownCheck(const CheckResult& check, bool student);

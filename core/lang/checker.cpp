@@ -101,7 +101,7 @@ std::unordered_set<std::string> namesOnErrorLines(const SourceSet& sources, cons
 
 struct Linter::State {
   State(const LoadedProgram& p, const LintOptions& o)
-      : program(p), nextSpan(p.subSpans.begin()), flow(p, o.realRobot) {}
+      : program(p), nextSpan(p.subSpans.begin()), flow(p, o.realRobot || o.robotPlaced) {}
   const LoadedProgram& program;
   std::unordered_map<std::string_view, std::vector<bool>> byRef;  ///< sub parameters by reference
   ScopeUse global;

@@ -13,6 +13,9 @@ namespace rb {
 struct LintOptions {
   /// The program is meant for a real robot (`rb check --target rb9`), which needs no rLocate.
   bool realRobot = false;
+  /// The robot is placed before the program starts (rb test's world program placed it), so a
+  /// robot statement before the program's own rLocate is no mistake.
+  bool robotPlaced = false;
 };
 
 /// Warns about every variable that is read somewhere but assigned nowhere in its scope (the main

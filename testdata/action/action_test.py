@@ -169,7 +169,9 @@ def part_test_and_classroom(do_test, do_classroom):
             for name in ("rb-test.json", "junit.xml", "grades.csv"):
                 check(os.path.isfile(os.path.join(reports, name)), f"the reports folder has {name}")
             pngs = os.listdir(os.path.join(reports, "pictures")) if os.path.isdir(os.path.join(reports, "pictures")) else []
-            check(len([n for n in pngs if n.endswith(".png")]) == len(book), f"one picture per program: {pngs}")
+            # Every program that ran has a picture; one that does not compile has none.
+            check(len([n for n in pngs if n.endswith(".png")]) == len(book) - 1 and "not_compiling.png" not in pngs,
+                  f"one picture per program that ran: {pngs}")
             feedback = os.listdir(os.path.join(reports, "feedback")) if os.path.isdir(os.path.join(reports, "feedback")) else []
             check(len(feedback) == len(book), f"one feedback file per program: {feedback}")
             check(out.get("report") == os.path.join("rb-report", "rb-test.json"), f"report output {out.get('report')!r}")

@@ -93,7 +93,7 @@ EXPECTED = {
         ["no-error", "solution-output"]),
     "not_compiling.bas": (
         "fail",
-        r"^rb check finds 1 error: not_compiling\.bas:7:3: unknown command 'rForwad'; did you mean 'rForward'\?$",
+        r"^the program does not compile: not_compiling\.bas:7:3: unknown command 'rForwad'; did you mean 'rForward'\?$",
         ["check", "no-error", "solution-output", "corners", "solution-trail", "ends-in", "solution-screen"]),
     "wrong_output.bas": (
         "fail",
@@ -211,9 +211,13 @@ def case_pictures(env):
     code, programs, _ = env.grade("--pictures", pics, CLASS)
     expect(code == 1, f"exit {code}")
     for name, p in programs.items():
+        if name == "not_compiling.bas":
+            # Nothing of its own to show: no picture (never the solution's screen instead).
+            expect("picture" not in p, f"{name}: a picture of a program that does not compile", p)
+            continue
         expect(os.path.isfile(p.get("picture", "")), f"{name}: no picture", p)
         expect(png_size(p["picture"]) == (800, 664), f"{name}: picture size (the arena and the legend below it)")
-    expect(len(os.listdir(pics)) == 6, "one picture per program", os.listdir(pics))
+    expect(len(os.listdir(pics)) == 5, "one picture per program that ran", os.listdir(pics))
 
 
 def case_shard(env):
@@ -386,8 +390,8 @@ def case_yard(env):
     expect("a hidden check failed" in feedback and "facing 90" not in feedback and "heading" not in feedback and "7 of 12 points" in feedback and
            "hint: Start at 400, 300" in feedback and "drawn the other way round?" in feedback, "feedback file", feedback)
     pics = sorted(os.listdir(env.path("pictures")))
-    expect(len(pics) == 11 and all(png_size(os.path.join(env.path("pictures"), p)) == (800, 664) for p in pics),
-           "one picture per program that ran", pics)
+    expect(len(pics) == 10 and all(png_size(os.path.join(env.path("pictures"), p)) == (800, 664) for p in pics),
+           "one picture per program that ran (not typo.bas, which does not compile)", pics)
     # Replays beside the pictures: each program's own run, never the solution's.
     r, rdoc, rby = yard_grades(env, "--pictures", env.path("replays"), "--replays", "html")
     ana = rby["class/correct.bas"]
@@ -689,7 +693,7 @@ def case_misspelt_closer(env):
     code, programs, _ = env.grade(prog)
     p = programs["nxt.bas"]
     expect(code == 1 and p["result"] == "fail", f"exit {code}", p)
-    expect(p["reason"] == "rb check finds 1 error: nxt.bas:9:1: unknown command 'nxt'; did you mean 'next'? "
+    expect(p["reason"] == "the program does not compile: nxt.bas:9:1: unknown command 'nxt'; did you mean 'next'? "
            "(the for at line 6 has no next)", "reason", p["reason"])
     r = env.rb_run("test", "-a", ASSIGNMENT, prog)
     row = next((l for l in r.stdout.splitlines() if "nxt.bas" in l and "FAIL" in l), "")
