@@ -684,6 +684,86 @@ def case_comment_limits(env):
     expect(r.returncode == 0, "granted by the person running rb test", r.stdout)
 
 
+MAZE = os.path.join(HERE, "maze")
+
+
+def maze_grades(env, *args):
+    r = env.rb_run("test", "--format", "json", "-j", "2", "-a", os.path.join(MAZE, "assignment.toml"),
+                   os.path.join(MAZE, "class"), "--include", "*.bas.txt", *args)
+    try:
+        doc = json.loads(r.stdout)
+    except json.JSONDecodeError:
+        raise Failure(f"rb test printed no JSON (exit {r.returncode})\n{r.stdout}\n{r.stderr}")
+    return r, doc, {os.path.relpath(p["program"], MAZE) if os.path.isabs(p["program"]) else p["program"]: p
+                    for p in doc["programs"]}
+
+
+def magenta_pixels(path):
+    sys.path.insert(0, os.path.join(HERE, "..", "render"))
+    from replay_browser import read_png  # noqa: E402
+    with open(path, "rb") as f:
+        w, h, rgb = read_png(f.read())
+    return sum(1 for i in range(0, len(rgb), 3) if rgb[i] > 200 and rgb[i + 1] < 60 and rgb[i + 2] > 200)
+
+
+def case_maze(env):
+    # The second golden class: a world that places the robot, a colour to avoid, tiers, a hidden
+    # post program and a roster; every verdict, grade and reason as expected.csv gives it.
+    r, doc, by = maze_grades(env)
+    expect(r.returncode == 1, f"exit {r.returncode}", r.stderr)
+    with open(os.path.join(MAZE, "expected.csv"), newline="") as f:
+        rows = list(csv.reader(f))[1:]
+    expect(sorted(by) == sorted(row[0] for row in rows), "the grade book lists every file and student", sorted(by))
+    for program, student, result, points, *why in rows:
+        why = ",".join(why)
+        p = by[program]
+        expect((p.get("student"), p["result"], p["points"]) == (student, result, float(points)),
+               f"{program}: {p.get('student')}, {p['result']}, {p['points']}; expected {student}, {result}, {points}",
+               p["reason"])
+        expect(re.search(why, p["reason"]), f"{program}: reason {p['reason']!r} does not match {why!r}")
+    expect(doc["summary"]["missing"] == 1, "Ivy alone is missing (Gus's .bas.txt keeps his name)", doc["summary"])
+    # rb check as the program runs: after the world, which placed the robot, no program is
+    # told its robot is not placed.
+    for name in ("class/ada.bas", "class/ben.bas", "class/cy.bas", "class/hal.bas"):
+        check = {c["name"]: c for c in by[name]["checks"]}["check"]
+        expect(check["passed"] and check["message"] == "rb check finds nothing", f"{name}: check", check)
+    # The teacher sees the hidden check's words and where the lava was touched.
+    cy = {c["name"]: c for c in by["class/cy.bas"]["checks"]}
+    expect("does not face the exit" in cy["facing the exit"]["message"], "hidden, teacher", cy["facing the exit"])
+    expect(cy["lava"]["message"].startswith("the robot touches red at ("), "where the lava was touched", cy["lava"])
+
+    # What students see: hidden checks only as their verdict, on every page and picture; a
+    # compile error once, with its line; no option that would have let an include through.
+    fb, pics, html = env.path("feedback"), env.path("pictures"), env.path("html")
+    r, sdoc, sby = maze_grades(env, "--student", "--feedback", fb, "--pictures", pics, "--html", html)
+    everything = r.stdout
+    for folder in (fb, html):
+        for root, _, files in os.walk(folder):
+            for name in files:
+                if name.endswith((".txt", ".html", ".json")):
+                    with open(os.path.join(root, name), errors="replace") as f:
+                        everything += f.read()
+    for secret in ("does not face the exit", "exit_check.bas", "--allow-files", "--trust-comments"):
+        expect(secret not in everything, f"students see {secret!r}")
+    expect("a hidden check failed" in everything, "the hidden check's verdict is shown")
+    pngs = [os.path.join(root, n) for root, _, files in os.walk(env.work) for n in files if n.endswith(".png")]
+    expect(pngs, "no pictures were written")
+    for png in pngs:
+        expect(magenta_pixels(png) == 0, f"{png}: a post program's drawing reached a student's picture")
+    expect(not any("eve" in os.path.basename(p) for p in pngs), "a program that does not compile has a picture", pngs)
+    with open(os.path.join(fb, "eve.bas.txt")) as f:
+        eve = f.read()
+    expect(eve.count("does not compile") == 1 and "hint:" not in eve, "eve: the error once, no hints", eve)
+    expect('11 | print "reached in " + n " moves"' in eve, "eve: the line it is on", eve)
+    # The teacher's picture of Cy says what it draws: the path, where checks failed, the lava.
+    r, _, tby = maze_grades(env, "--html", env.path("teacher"))
+    page = next(f for f in os.listdir(os.path.join(env.path("teacher"), "programs")) if f.startswith("cy"))
+    with open(os.path.join(env.path("teacher"), "programs", page)) as f:
+        text = f.read()
+    for part in ("your robot&#39;s path", "where checks failed", "keep off: lava: red", "reach: goal"):
+        expect(part in text or part.replace("&#39;", "'") in text, f"cy's caption names {part!r}", text[:3000])
+
+
 def case_misspelt_closer(env):
     # A student's misspelt `next`: the reason is that line, which says the loop it leaves
     # open, not the loop's line (reported before it, as "for without next", until issue 28).

