@@ -38,10 +38,48 @@ ftsrc=$out/freetype-src
 if [ ! -f "$ftsrc/.ready" ]; then
   rm -rf "$out/apt" "$ftsrc"
   mkdir -p "$out/apt/lists/partial"
-  cat > "$out/apt/sources.list" <<'LIST'
-deb-src http://deb.debian.org/debian bookworm main
-deb-src http://deb.debian.org/debian-security bookworm-security main
-LIST
+  # deb-src entries made from the machine's own apt sources (its configured mirrors), for the
+  # suites of its own release: no host is named here.
+  python3 - "$out/apt/sources.list" <<'PY'
+import glob, re, sys
+codename = ""
+with open("/etc/os-release") as f:
+    for line in f:
+        if line.startswith("VERSION_CODENAME="):
+            codename = line.split("=", 1)[1].strip().strip('"')
+entries = []  # (uri, suite, components, signed_by)
+def ours(suite):
+    return codename and (suite == codename or suite.startswith(codename + "-"))
+for path in ["/etc/apt/sources.list"] + sorted(glob.glob("/etc/apt/sources.list.d/*.list")):
+    try:
+        lines = open(path).read().splitlines()
+    except OSError:
+        continue
+    for line in lines:
+        m = re.match(r"\s*deb\s+(\[[^\]]*\]\s+)?(\S+)\s+(\S+)\s+(.+)", line.split("#", 1)[0])
+        if m and ours(m.group(3)):
+            opts = re.search(r"signed-by=(\S+?)[\s\]]", m.group(1) or "")
+            entries.append((m.group(2), m.group(3), m.group(4).strip(), opts.group(1) if opts else ""))
+for path in sorted(glob.glob("/etc/apt/sources.list.d/*.sources")):
+    for stanza in re.split(r"\n\s*\n", open(path).read()):
+        fields = {}
+        for line in stanza.splitlines():
+            if line.startswith("#") or ":" not in line:
+                continue
+            key, value = line.split(":", 1)
+            fields[key.strip().lower()] = value.strip()
+        if "deb" not in fields.get("types", "").split() or fields.get("enabled", "yes").lower() == "no":
+            continue
+        for uri in fields.get("uris", "").split():
+            for suite in fields.get("suites", "").split():
+                if ours(suite):
+                    entries.append((uri, suite, fields.get("components", "main"), fields.get("signed-by", "")))
+if not entries:
+    sys.exit("web.sh: no apt source of this release (" + (codename or "unknown") + ") to fetch FreeType's source from")
+with open(sys.argv[1], "w") as out:
+    for uri, suite, comps, key in entries:
+        out.write(f"deb-src {'[signed-by=' + key + '] ' if key else ''}{uri} {suite} {comps}\n")
+PY
   apt_opts=(-q -o Dir::Etc::SourceList="$out/apt/sources.list" -o Dir::Etc::SourceParts=-
             -o Dir::State::Lists="$out/apt/lists" -o Debug::NoLocking=1 -o APT::Sandbox::User=root)
   apt-get "${apt_opts[@]}" update >/dev/null
