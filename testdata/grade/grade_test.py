@@ -332,15 +332,21 @@ def case_trace(env):
 YARD = os.path.join(HERE, "yard")
 
 
-def yard_grades(env, *args):
-    r = env.rb_run("test", "--format", "json", "-j", "2", "-a", os.path.join(YARD, "assignment.toml"), *args,
-                   os.path.join(YARD, "class"))
+def class_grades(env, folder, *args, cls="class"):
+    """rb test --format json of FOLDER/class against FOLDER/assignment.toml: (run, doc, programs by
+    their path relative to FOLDER)."""
+    r = env.rb_run("test", "--format", "json", "-j", "2", "-a", os.path.join(folder, "assignment.toml"),
+                   os.path.join(folder, cls), *args)
     try:
         doc = json.loads(r.stdout)
     except json.JSONDecodeError:
         raise Failure(f"rb test printed no JSON (exit {r.returncode})\n{r.stdout}\n{r.stderr}")
-    return r, doc, {os.path.relpath(p["program"], YARD) if os.path.isabs(p["program"]) or p["program"].startswith(YARD)
+    return r, doc, {os.path.relpath(p["program"], folder) if os.path.isabs(p["program"]) or p["program"].startswith(folder)
                     else p["program"]: p for p in doc["programs"]}
+
+
+def yard_grades(env, *args):
+    return class_grades(env, YARD, *args)
 
 
 def case_yard(env):
@@ -688,14 +694,7 @@ MAZE = os.path.join(HERE, "maze")
 
 
 def maze_grades(env, *args):
-    r = env.rb_run("test", "--format", "json", "-j", "2", "-a", os.path.join(MAZE, "assignment.toml"),
-                   os.path.join(MAZE, "class"), "--include", "*.bas.txt", *args)
-    try:
-        doc = json.loads(r.stdout)
-    except json.JSONDecodeError:
-        raise Failure(f"rb test printed no JSON (exit {r.returncode})\n{r.stdout}\n{r.stderr}")
-    return r, doc, {os.path.relpath(p["program"], MAZE) if os.path.isabs(p["program"]) else p["program"]: p
-                    for p in doc["programs"]}
+    return class_grades(env, MAZE, "--include", "*.bas.txt", *args)
 
 
 def magenta_pixels(path):
