@@ -292,7 +292,7 @@ void DiagnosticReport::one(const SourceSet* sources, const Diagnostic& d, const 
         json fixes = json::array();
         for (const FixIt& f : d.fixits) {
           fixes.push_back(json{
-              {"description", {{"text", "replace with '" + f.replacement + "'"}}},
+              {"description", {{"text", (f.start == f.end ? "insert '" : "replace with '") + f.replacement + "'"}}},
               {"artifactChanges",
                json::array({json{{"artifactLocation", {{"uri", sarifUri(fileOf(*sources, f.start))}}},
                                  {"replacements",

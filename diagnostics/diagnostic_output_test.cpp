@@ -73,6 +73,30 @@ TEST_CASE("json, sarif and github carry the rule, the range, notes and fix-its",
         "'nowher'; did you mean 'nowhere'?%0Aline 2: a label\n");
 }
 
+TEST_CASE("a fix-it that inserts: an empty range in json, an insertion in sarif", "[diagnostics]") {
+  SourceSet s;
+  s.add("p.bas", "print n \" moves\"\n");
+  DiagnosticList diags;
+  Diagnostic& d = diags.error({0, 1, 9}, "missing '+' between 'n' and \" moves\"", "rb-missing-operator");
+  d.fixits.push_back({{0, 1, 8}, {0, 1, 8}, " +"});
+
+  DiagOutputOptions o;
+  o.format = DiagFormat::Json;
+  nlohmann::json j = nlohmann::json::parse(written(o, s, diags));
+  CHECK(j[0]["fixits"][0]["start"]["column"] == 8);
+  CHECK(j[0]["fixits"][0]["next"]["column"] == 8);
+  CHECK(j[0]["fixits"][0]["string"] == " +");
+
+  o.format = DiagFormat::Sarif;
+  nlohmann::json sarif = nlohmann::json::parse(written(o, s, diags));
+  const auto& fix = sarif["runs"][0]["results"][0]["fixes"][0];
+  CHECK(fix["description"]["text"] == "insert ' +'");
+  const auto& r = fix["artifactChanges"][0]["replacements"][0];
+  CHECK(r["deletedRegion"]["startColumn"] == 8);
+  CHECK(r["deletedRegion"]["endColumn"] == 8);
+  CHECK(r["insertedContent"]["text"] == " +");
+}
+
 TEST_CASE("text stops after --max-errors and still counts everything", "[diagnostics]") {
   SourceSet s;
   s.add("p.bas", "a\nb\nc\n");

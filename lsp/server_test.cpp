@@ -207,6 +207,17 @@ TEST_CASE("lsp: a diagnostic links to its rule, and hover over it says what the 
   CHECK(text.find("rb-unknown-command") == std::string::npos);
 }
 
+TEST_CASE("lsp: two values side by side, the missing operator as rb check gives it", "[lsp]") {
+  Session s;
+  s.initialize();
+  json d = s.open(kUri, "n = 5\nprint \"moves: \" n\n");
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["code"] == "rb-missing-operator");
+  CHECK(d[0]["message"] == "missing '+' between \"moves: \" and 'n'");
+  CHECK(d[0]["range"]["start"] == json{{"line", 1}, {"character", 16}});
+  CHECK(d[0]["codeDescription"]["href"].get<std::string>().ends_with("/diagnostics.md#rb-missing-operator"));
+}
+
 TEST_CASE("lsp: the warnings about a program's flow, as rb check gives them", "[lsp]") {
   Session s;
   s.initialize();

@@ -224,11 +224,14 @@ void formatOne(const SourceSet& sources, const Diagnostic& d, const Painter& p, 
     out += p.paint(underline, "\033[1;32m");
     out += '\n';
     for (const FixIt& f : d.fixits) {
-      if (f.start.file != d.loc.file || f.start.line != d.loc.line || f.replacement.empty()) continue;
+      // The new text at its column; spaces after it cannot be seen (an insertion's " + ").
+      std::string_view shown = f.replacement;
+      while (!shown.empty() && shown.back() == ' ') shown.remove_suffix(1);
+      if (f.start.file != d.loc.file || f.start.line != d.loc.line || shown.empty()) continue;
       out += blank;
       out += " | ";
       out += padTo(line, f.start.col);
-      out += p.paint(f.replacement, "\033[1;32m");
+      out += p.paint(shown, "\033[1;32m");
       out += '\n';
     }
   }

@@ -17,6 +17,18 @@ TEST_CASE("diagnostics print file:line:col, the line in a gutter and the word un
         "      |   print\n");
 }
 
+TEST_CASE("an insertion is shown at its column, without the spaces after it", "[diagnostic]") {
+  SourceSet s;
+  s.add("p.bas", "x = \"a\"n\n");
+  Diagnostic d{Severity::Error, {0, 1, 8}, "missing '+' between \"a\" and 'n'", "rb-missing-operator"};
+  d.fixits.push_back({{0, 1, 8}, {0, 1, 8}, " + "});
+  CHECK(formatDiagnostic(s, d) ==
+        "p.bas:1:8: error: missing '+' between \"a\" and 'n' [rb-missing-operator]\n"
+        "    1 | x = \"a\"n\n"
+        "      |        ^\n"
+        "      |         +\n");
+}
+
 TEST_CASE("a range is underlined from its start to its end", "[diagnostic]") {
   SourceSet s;
   s.add("p.bas", "x = abs(1, 2 + 3)\n");

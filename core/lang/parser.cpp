@@ -203,13 +203,19 @@ class Parser {
 
   [[noreturn]] void fail(SourceLoc loc, std::string message, const char* code = "rb-syntax",
                          std::string suggestion = {}, size_t length = 0) {
+    std::optional<FixIt> fix;
+    if (!suggestion.empty() && length > 0)
+      fix = FixIt{loc, {loc.file, loc.line, static_cast<uint32_t>(loc.col + length)}, std::move(suggestion)};
+    failWithFix(loc, {}, std::move(message), code, std::move(fix));
+  }
+  /// The same with the range's last character (`end`, invalid: the word at loc) and any fix-it.
+  [[noreturn]] void failWithFix(SourceLoc loc, SourceLoc end, std::string message, const char* code,
+                                std::optional<FixIt> fix) {
     // One error per line: a lexical error already explains what follows it.
     if (!diags_.hasErrorOnLine(loc.file, loc.line)) {
       Diagnostic& d = diags_.error(loc, std::move(message), code);
-      if (!suggestion.empty() && length > 0) {
-        SourceLoc end{loc.file, loc.line, static_cast<uint32_t>(loc.col + length)};
-        d.fixits.push_back({loc, end, std::move(suggestion)});
-      }
+      d.end = end;
+      if (fix) d.fixits.push_back(std::move(*fix));
     }
     throw StatementAbandoned{};
   }
@@ -263,6 +269,122 @@ class Parser {
       std::string shown = cur().kind == Tok::String ? quoted(cur().text, '"') : quoted(cur().text);
       fail(cur().loc, "unexpected " + shown + " after the end of the statement");
     }
+  }
+
+  /// Where a value stands whose end may be followed by a second value (rb-missing-operator).
+  enum class Place {
+    Value,         ///< an assignment's or a return's value
+    PrintItem,     ///< an item of print
+    ListArgument,  ///< an item of a command that takes a print list (xyString x, y, ...)
+  };
+
+  /// Two values side by side, as beginners write them (`print "moves: " n`, `total = 2 n`):
+  /// after the value that just ended, the current token starts another one. Reports which
+  /// operator or separator is missing, with a fix-it that inserts it (rb-missing-operator);
+  /// returns when the line goes on otherwise (a separator, `then`, `else`, an operator, the end).
+  void noValuesSideBySide(Place place) {
+    if (pos_ == 0 || !atValueStart()) return;
+    size_t leftLast = pos_ - 1;
+    size_t leftFirst = valueStartBefore(leftLast);
+    size_t rightLast = valueEndFrom(pos_);
+    bool text = holdsString(leftFirst, leftLast) || holdsString(pos_, rightLast);
+    Tok before = toks_[leftLast].kind;
+    Tok after = cur().kind;
+    // In print, '+' joins text as ',' does; two numbers printed side by side want ',' (with
+    // '+' they would be added). A print-list command's first items are coordinates: ','. A
+    // number or a parenthesis before a name or a parenthesis is a product, as algebra writes
+    // 2n and (a + b)c.
+    std::string_view op = "+";
+    if (place == Place::ListArgument || (place == Place::PrintItem && !text)) {
+      op = ",";
+    } else if (!text && (before == Tok::Int || before == Tok::Float || before == Tok::RParen) &&
+               (after == Tok::Ident || after == Tok::LParen)) {
+      op = "*";
+    }
+    SourceLoc at = tokenEnd(toks_[leftLast]);
+    ++at.col;  // right after the first value
+    std::string insert(op == "," ? "" : " ");
+    insert += op;
+    if (cur().loc.col <= at.col) insert += ' ';  // nothing between the values
+    // Built by appending (see quoted()).
+    std::string message = "missing ";
+    message += quoted(op);
+    message += " between ";
+    message += shownValue(leftFirst, leftLast);
+    message += " and ";
+    message += shownValue(pos_, rightLast);
+    failWithFix(cur().loc, tokenEnd(toks_[rightLast]), std::move(message), "rb-missing-operator",
+                FixIt{at, at, std::move(insert)});
+  }
+
+  /// True when the current token can only begin a value here: a number, a string, '(' or a
+  /// name that is not a command (a command starts a statement: `x = 1 rForward 10` is two
+  /// statements on one line, no sum) nor a label's (`name:`).
+  bool atValueStart() const {
+    switch (cur().kind) {
+      case Tok::Int: case Tok::Float: case Tok::String: case Tok::LParen: return true;
+      case Tok::Ident:
+        return peek().kind != Tok::Colon && !builtins_.find(cur().text, BuiltinKind::Command);
+      default: return false;
+    }
+  }
+
+  static bool isOpen(Tok k) { return k == Tok::LParen || k == Tok::LBracket; }
+  static bool isClose(Tok k) { return k == Tok::RParen || k == Tok::RBracket; }
+
+  /// The first token of the value whose last token is toks_[last]: a parenthesised group with
+  /// the name before it (a call, an index), or the token alone.
+  size_t valueStartBefore(size_t last) const {
+    if (!isClose(toks_[last].kind)) return last;
+    int depth = 0;
+    for (size_t i = last + 1; i-- > 0;) {
+      if (isClose(toks_[i].kind)) ++depth;
+      if (isOpen(toks_[i].kind) && --depth == 0)
+        return i > 0 && toks_[i - 1].kind == Tok::Ident ? i - 1 : i;
+    }
+    return last;
+  }
+
+  /// The last token of the value that starts at toks_[first] (see valueStartBefore); when its
+  /// parenthesis is not closed on the line, the first token alone.
+  size_t valueEndFrom(size_t first) const {
+    size_t i = first;
+    if (toks_[i].kind == Tok::Ident && isOpen(toks_[i + 1].kind)) ++i;
+    if (!isOpen(toks_[i].kind)) return first;
+    int depth = 0;
+    for (; toks_[i].kind != Tok::Newline && toks_[i].kind != Tok::Eof; ++i) {
+      if (isOpen(toks_[i].kind)) ++depth;
+      if (isClose(toks_[i].kind) && --depth == 0) return i;
+    }
+    return first;
+  }
+
+  bool holdsString(size_t first, size_t last) const {
+    for (size_t i = first; i <= last; ++i)
+      if (toks_[i].kind == Tok::String) return true;
+    return false;
+  }
+
+  /// Tokens [first, last] as the message shows them: a string in its double quotes, anything
+  /// else in single quotes, written as in the source (one space where it has any); cut after
+  /// about 40 bytes.
+  std::string shownValue(size_t first, size_t last) const {
+    std::string text;
+    for (size_t i = first; i <= last; ++i) {
+      const Token& t = toks_[i];
+      if (i > first && t.loc.col > tokenEnd(toks_[i - 1]).col + 1) text += ' ';
+      if (t.kind == Tok::String) text += quoted(t.text, '"');
+      else text += t.text;
+    }
+    constexpr size_t kLongest = 40;
+    if (text.size() > kLongest) {
+      size_t cut = kLongest - 3;
+      while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // whole characters
+      bool inString = first == last && toks_[first].kind == Tok::String;
+      text.resize(cut);
+      text += inString ? "...\"" : "...";
+    }
+    return first == last && toks_[first].kind == Tok::String ? text : quoted(text);
   }
 
   // line -> [label ':'] [statement] NEWLINE  |  '#' include STRING NEWLINE
@@ -398,7 +520,10 @@ class Parser {
       case Tok::KwReturn: {
         ++pos_;
         Stmt* s = newStmt(StmtKind::Return, loc);
-        if (!atLineEnd() && !at(Tok::KwElse)) s->value = expression();
+        if (!atLineEnd() && !at(Tok::KwElse)) {
+          s->value = expression();
+          noValuesSideBySide(Place::Value);
+        }
         return s;
       }
       case Tok::KwSub: return subStmt(inLineIf);
@@ -443,11 +568,13 @@ class Parser {
 
   // print-list -> [ expr { (',' | ';') expr } [',' | ';'] ]
   void printList(Stmt* s) {
+    Place place = s->kind == StmtKind::Print ? Place::PrintItem : Place::ListArgument;
     while (!atLineEnd() && !at(Tok::KwElse)) {
       s->exprs.push_back(expression());
       if (at(Tok::Comma) || at(Tok::Semicolon)) {
         s->seps.push_back(advance().kind);
       } else {
+        noValuesSideBySide(place);
         s->seps.push_back(Tok::Eof);
         break;
       }
@@ -624,7 +751,10 @@ class Parser {
     s->target = lvalue();
     if (!isAssignOp(cur().kind)) failHere("'=' in an assignment");
     s->op = advance().kind;
-    if (s->op != Tok::PlusPlus && s->op != Tok::MinusMinus) s->value = expression();
+    if (s->op != Tok::PlusPlus && s->op != Tok::MinusMinus) {
+      s->value = expression();
+      noValuesSideBySide(Place::Value);
+    }
     return s;
   }
 

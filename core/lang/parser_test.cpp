@@ -13,6 +13,7 @@ namespace {
 const BuiltinTable& testBuiltins() {
   static const BuiltinTable table({
       {"randomize", BuiltinKind::Command, "math", "seed", nullptr, 0, "restarts the random numbers"},
+      {"xyText", BuiltinKind::Command, "graphics", "x, y, items...", nullptr, 0, "text at x, y"},
       {"mid", BuiltinKind::Function, "string", "s, start [, count]", nullptr, 0, "part of s"},
       {"Red", BuiltinKind::Constant, "colour", "", nullptr, 4, "colour 4"},
   });
@@ -164,4 +165,66 @@ TEST_CASE("one expression alone, as a watch is written", "[parser]") {
   CHECK(error == "unexpected '2' after the end of the expression");
   CHECK(expr("(x + ", &error).empty());
   CHECK_FALSE(error.empty());
+}
+
+TEST_CASE("two values side by side: the missing operator, where, and a fix-it inserting it", "[parser]") {
+  struct Case {
+    std::string line;
+    std::string message;
+    uint32_t col, endCol;  // the second value's range
+    uint32_t fixCol;       // where the fix-it inserts
+    std::string insert;
+  };
+  const Case cases[] = {
+      {"print \"in \" + n \" moves\"", "missing '+' between 'n' and \" moves\"", 17, 24, 16, " +"},
+      {"x = \"x = \"n", "missing '+' between \"x = \" and 'n'", 11, 11, 11, " + "},
+      {"x = 2 n", "missing '*' between '2' and 'n'", 7, 7, 6, " *"},
+      {"x = 2n", "missing '*' between '2' and 'n'", 6, 6, 6, " * "},
+      {"x = (a + b) c", "missing '*' between '(a + b)' and 'c'", 13, 13, 12, " *"},
+      {"x = 2 (a + b)", "missing '*' between '2' and '(a + b)'", 7, 13, 6, " *"},
+      {"x = mid(s, 1) \"!\"", "missing '+' between 'mid(s, 1)' and \"!\"", 15, 17, 14, " +"},
+      {"x = a b", "missing '+' between 'a' and 'b'", 7, 7, 6, " +"},
+      {"print a b", "missing ',' between 'a' and 'b'", 9, 9, 8, ","},
+      {"print a[1]b", "missing ',' between 'a[1]' and 'b'", 11, 11, 11, ", "},
+      {"xyText 1 2, \"s\"", "missing ',' between '1' and '2'", 10, 10, 9, ","},
+      {"if a then return \"a\" b", "missing '+' between \"a\" and 'b'", 22, 22, 21, " +"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.line);
+    auto p = parse(c.line + "\n");
+    REQUIRE(p->diags.errorCount() == 1);
+    const Diagnostic& d = p->diags.all()[0];
+    CHECK(d.message == c.message);
+    CHECK(d.code == "rb-missing-operator");
+    CHECK(d.loc.line == 1);
+    CHECK(d.loc.col == c.col);
+    CHECK(d.end.col == c.endCol);
+    REQUIRE(d.fixits.size() == 1);
+    CHECK(d.fixits[0].start.col == c.fixCol);
+    CHECK(d.fixits[0].end == d.fixits[0].start);
+    CHECK(d.fixits[0].replacement == c.insert);
+  }
+}
+
+TEST_CASE("where the grammar goes on, values side by side are no missing operator", "[parser]") {
+  for (const char* line : {"print a; b, c", "print(1) + 2", "if a then b = 1 else b = 2", "for i = 1 to 9 step 2",
+                           "x = a -1", "x = f (1)", "x = a [1]", "a [1] = 2", "randomize 5", "randomize(5)",
+                           "L: print 1", "x = a mod b and not c", "if a then return else print 1"}) {
+    INFO(line);
+    auto p = parse(std::string(line) + "\n");
+    CHECK_FALSE(p->diags.hasErrors());
+  }
+  // A command's arguments (a comma may be missing, or the arguments too many), a command after
+  // a value (two statements on one line), a word before 'then': the grammar's own messages.
+  auto message = [](const std::string& line) {
+    auto p = parse(line + "\n");
+    REQUIRE(p->diags.errorCount() == 1);
+    CHECK(p->diags.all()[0].code == "rb-syntax");
+    return p->diags.all()[0].message;
+  };
+  CHECK(message("randomize 1 2") == "unexpected '2' after the end of the statement");
+  CHECK(message("x = 1 randomize 5") == "unexpected 'randomize' after the end of the statement");
+  CHECK(message("if a b then c = 1") == "expected 'then' or the end of the line after the if condition, found 'b'");
+  CHECK(message("for i = 1 9") == "expected 'to', found a number");
+  CHECK(message("x = (a b)") == "expected ')', found 'b'");
 }

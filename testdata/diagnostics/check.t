@@ -40,6 +40,30 @@ inputs/errors.bas:13:1: warning: if without endif before the next sub; the block
 7 errors, 2 warnings
 [exit 65]
 
+$ rb check --color=never inputs/side_by_side.bas
+inputs/side_by_side.bas:3:25: error: missing '+' between 'n' and " moves" [rb-missing-operator]
+    3 | print "reached in " + n " moves"
+      |                         ^~~~~~~~
+      |                         +
+inputs/side_by_side.bas:4:13: error: missing '+' between "x = " and 'n' [rb-missing-operator]
+    4 | msg = "x = "n
+      |             ^
+      |              +
+inputs/side_by_side.bas:5:11: error: missing '*' between '2' and 'n' [rb-missing-operator]
+    5 | total = 2 n
+      |           ^
+      |           *
+inputs/side_by_side.bas:6:17: error: missing '*' between '(n + 1)' and 'n' [rb-missing-operator]
+    6 | total = (n + 1) n
+      |                 ^
+      |                 *
+inputs/side_by_side.bas:7:9: error: missing ',' between 'n' and '2' [rb-missing-operator]
+    7 | print n 2
+      |         ^
+      |        ,
+5 errors
+[exit 65]
+
 $ rb check --color=never inputs/flow.bas
 inputs/flow.bas:2:1: warning: the robot is not placed yet when 'rForward' runs: rLocate x, y places it [rb-robot-not-placed]
     2 | rForward 100

@@ -2,7 +2,7 @@
 #define X // expect-error: unknown directive: only #include is supported
 #include missing // expect-error: expected a file name in quotes after #include, found 'missing'
 if x then for i = 1 to 2 // expect-error: 'for' cannot be part of a single-line if (put it on its own line)
-print 1 2 // expect-error: unexpected '2' after the end of the statement
+rForward 10 20 // expect-error: unexpected '20' after the end of the statement
 input 5 // expect-error: input needs a variable to store what is typed
 if x print 1 // expect-error: expected 'then' or the end of the line after the if condition, found 'print'
 x = (1 + 2 // expect-error: expected ')', found end of line
