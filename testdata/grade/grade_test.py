@@ -951,6 +951,20 @@ def case_merge(env):
         r = env.rb_run("test", "--merge", *reports, cwd=split)
         expect(r.returncode == code and message in r.stderr and r.stdout == "",
                f"--merge {' '.join(reports)}: exit {r.returncode} (expected {code}, saying {message!r})", r.stderr)
+    # A warning (the solution fails one of its own checks) that every shard gives: said once.
+    shutil.copytree(SQUARE, env.path("warned"), ignore=shutil.ignore_patterns("class"))
+    warned = env.write("warned/assignment.toml", read(ASSIGNMENT) +
+                       '[[check]]\nname = "far corner"\nkind = "visits"\nwaypoints = [[10, 10]]\n')
+    os.makedirs(env.path("warned/shards"))
+    for k in (1, 2):
+        r = env.rb_run("test", "-j", "2", "-a", warned, "--shard", f"{k}/2", "--format", "json", CLASS)
+        env.write(f"warned/shards/{k}.json", r.stdout)
+    one = env.rb_run("test", "-j", "2", "-a", warned, "--format", "json", CLASS)
+    r = env.rb_run("test", "--merge", "1.json", "2.json", "--format", "json", cwd=env.path("warned/shards"))
+    warning = "rb test: warning: the solution fails its own check 'far corner'"
+    expect(one.stderr.count(warning) == 1 and r.stderr.count(warning) == 1, "the warning, once", one.stderr, r.stderr)
+    expect(json.loads(r.stdout)["warnings"] == json.loads(one.stdout)["warnings"], "the merged JSON's warnings are one run's",
+           r.stdout[:2000])
     for args, message in ((["--merge", "shard1.json", "-a", ASSIGNMENT], "leave out --assignment"),
                           (["shard1.json", "--merge", "shard2.json"], "leave out the paths to grade"),
                           (["--merge", "shard1.json", "--student"], "leave out --student"),
