@@ -12,6 +12,7 @@
 #include "exit_codes.h"
 #include "files.h"
 #include "kernel_confine.h"
+#include "merge.h"
 #include "program_loader.h"
 #include "grader.h"
 #include "html_report.h"
@@ -43,6 +44,7 @@ struct TestOptions {
   std::vector<std::string> similarityIgnore;
   bool quiet = false;
   bool requireSandbox = false;
+  std::vector<std::string> merge, mergePictures;
 };
 
 /// A teacher's program (world, post) as rb check sees it: its first error, or "".
@@ -121,6 +123,31 @@ bool writeReport(const std::string& path, const std::string& text) {
   if (render::writeFileBytes(path, text.data(), text.size(), error)) return true;
   say(error);
   return false;
+}
+
+/// Every report asked for of a graded (or merged) class; rb test's exit status.
+int writeClassReports(const TestOptions& opts, const grade::ClassResult& result) {
+  const std::vector<std::string>& paths = result.origin.paths;
+  for (const std::string& w : result.warnings) say("warning: " + w);
+  for (const std::string& e : result.writeErrors) say(e);
+  bool written = result.writeErrors.empty();
+  if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result, paths) && written;
+  if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
+  if (!opts.csv.empty()) written = writeReport(opts.csv, grade::csvReport(result)) && written;
+  if (!opts.html.empty()) {
+    std::string error;
+    if (!grade::writeHtmlReport(result, paths, opts.html, error)) {
+      say(error);
+      written = false;
+    }
+  }
+  std::string out = opts.format == "json" ? grade::jsonReport(result) : grade::textReport(result, !opts.quiet);
+  if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() || std::fflush(stdout) != 0) {
+    std::fprintf(stderr, "rb test: cannot write to standard output\n");
+    return exitcode::kIoError;
+  }
+  if (!written) return exitcode::kIoError;
+  return result.failed + result.errors + result.missing == 0 ? exitcode::kOk : 1;
 }
 
 int executeTest(const TestOptions& opts) {
@@ -205,26 +232,88 @@ int executeTest(const TestOptions& opts) {
   result.studentView = opts.student;
   if (opts.student)
     for (grade::ProgramResult& p : result.programs) p = grade::forStudents(std::move(p));
-  for (const std::string& w : result.warnings) say("warning: " + w);
-  for (const std::string& e : result.writeErrors) say(e);
-  bool written = result.writeErrors.empty();
-  if (!opts.feedback.empty()) written = writeFeedback(opts.feedback, result, g.paths) && written;
-  if (!opts.junit.empty()) written = writeReport(opts.junit, grade::junitReport(result)) && written;
-  if (!opts.csv.empty()) written = writeReport(opts.csv, grade::csvReport(result)) && written;
-  if (!opts.html.empty()) {
-    std::string error;
-    if (!grade::writeHtmlReport(result, g.paths, opts.html, error)) {
-      say(error);
-      written = false;
-    }
+  // What tells this grading from another, for rb test --merge (the JSON report carries it).
+  result.origin.paths = g.paths;
+  result.origin.shard = g.shard;
+  result.origin.shards = g.shards;
+  result.origin.rbVersion = RB_VERSION;
+  if (!opts.assignment.empty()) {
+    result.origin.assignmentFile = opts.assignment;
+    if (std::optional<std::string> bytes = readFile(opts.assignment)) result.origin.assignmentDigest = grade::contentDigest(*bytes);
   }
-  std::string out = opts.format == "json" ? grade::jsonReport(result) : grade::textReport(result, !opts.quiet);
-  if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() || std::fflush(stdout) != 0) {
-    std::fprintf(stderr, "rb test: cannot write to standard output\n");
+  // The name each report gives a program, in the JSON too (a missing student's from the roster).
+  for (grade::ProgramResult& p : result.programs)
+    if (p.name.empty()) p.name = grade::reportName(p.program, g.paths);
+  return writeClassReports(opts, result);
+}
+
+/// rb test --merge: the shards' JSON reports read back and merged, then every report written as
+/// one run over the whole class writes it. `grading`: options given that only grading takes.
+int executeMerge(const TestOptions& opts, const std::vector<std::string>& grading) {
+  if (!grading.empty()) {
+    std::string list;
+    for (const std::string& o : grading) list += (list.empty() ? "" : ", ") + o;
+    say("--merge reads the shards' reports and grades nothing: leave out " + list);
+    return exitcode::kUsage;
+  }
+  if (!opts.mergePictures.empty() && opts.mergePictures.size() != opts.merge.size()) {
+    say("--merge-pictures names one folder per report, in the reports' order: " + std::to_string(opts.merge.size()) +
+        " reports, " + std::to_string(opts.mergePictures.size()) + " folders");
+    return exitcode::kUsage;
+  }
+  std::vector<grade::ShardReport> shards;
+  std::vector<grade::MissingPicture> missing;
+  bool shardSimilarity = false;
+  for (size_t i = 0; i < opts.merge.size(); ++i) {
+    int code = 0;
+    std::string error;
+    std::optional<grade::ShardReport> shard = grade::loadShard(opts.merge[i], code, error);
+    if (!shard) {
+      say(error);
+      return code;
+    }
+    grade::findShardPictures(*shard, opts.mergePictures.empty() ? "" : opts.mergePictures[i], missing);
+    shardSimilarity = shardSimilarity || shard->similarity;
+    shards.push_back(std::move(*shard));
+  }
+  grade::MergeOutcome merged = grade::mergeShards(std::move(shards));
+  if (merged.code) {
+    say(merged.error);
+    return merged.code;
+  }
+  grade::ClassResult& result = merged.result;
+  // The pictures go where one run would write them: --pictures DIR, else beside the page.
+  std::string pictures = !opts.pictures.empty() ? opts.pictures
+                         : !opts.html.empty()   ? (std::filesystem::path(opts.html) / "pictures").string()
+                                                : "";
+  if (!missing.empty()) {
+    std::string what = std::to_string(missing.size()) + " picture" + (missing.size() == 1 ? "" : "s") +
+                       " (screens, replays) the reports name " + (missing.size() == 1 ? "is" : "are") +
+                       " not found (the first: '" + missing[0].recorded + "' of " + missing[0].report + ")";
+    if (!pictures.empty()) {
+      say(what + ": give each report's pictures folder with --merge-pictures DIR...");
+      return exitcode::kNoInput;
+    }
+    say("note: " + what + ": the merged reports name none of them");
+  }
+  if (shardSimilarity && !opts.similarity && opts.similarityIgnore.empty())
+    say("note: the shards' similarity lists compare each shard's own programs only and are left out: give "
+        "--similarity to compare the whole class");
+  std::string why;
+  if (!opts.html.empty() && !render::makeFolder(opts.html, why)) {
+    say(why);
     return exitcode::kIoError;
   }
-  if (!written) return exitcode::kIoError;
-  return result.failed + result.errors + result.missing == 0 ? exitcode::kOk : 1;
+  if (!pictures.empty()) {
+    if (!render::makeFolder(pictures, why)) {
+      say(why);
+      return exitcode::kIoError;
+    }
+    grade::copyPictures(result, pictures, result.writeErrors);
+  }
+  if (opts.similarity || !opts.similarityIgnore.empty())
+    result.similarity = grade::classSimilarity(result, opts.similarityIgnore);
+  return writeClassReports(opts, result);
 }
 
 }  // namespace
@@ -246,6 +335,15 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
                    "Grade only every N-th program starting with the K-th (of the sorted list), to "
                    "spread a class over N CI jobs")
       ->type_name("K/N");
+  test->add_option("--merge", opts->merge,
+                   "Grade nothing: merge the JSON reports of a class's shards (rb test --shard K/N "
+                   "--format json, every shard once) and write the class's reports, as one run over the "
+                   "whole class writes them")
+      ->type_name("REPORT.json...");
+  test->add_option("--merge-pictures", opts->mergePictures,
+                   "With --merge: each report's pictures folder, in the reports' order (default: the "
+                   "paths the reports recorded, or beside each report)")
+      ->type_name("DIR...");
   test->add_option("--seed", opts->seed,
                    "Seed of runs whose comments give none (default 1; an assignment lists its own)")
       ->type_name("N");
@@ -311,8 +409,26 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
       "Each program runs in a child process of its own (rb itself), with a time and memory "
       "limit, so a crash or a hang fails that program alone. Exit status: 0 every program "
       "passed, 1 some failed, 64 bad usage or assignment file, 66 a path does not exist or no "
-      "programs, 74 a report cannot be written. Manual: man rb-test.");
-  test->callback([opts, &exitCode] { exitCode = executeTest(*opts); });
+      "programs (with --merge: a report or a shard is missing), 74 a report cannot be written. "
+      "Manual: man rb-test.");
+  test->callback([opts, test, &exitCode] {
+    if (opts->merge.empty()) {
+      if (!opts->mergePictures.empty()) {
+        say("--merge-pictures goes with --merge REPORT.json...");
+        exitCode = exitcode::kUsage;
+        return;
+      }
+      exitCode = executeTest(*opts);
+      return;
+    }
+    // What only grading takes: refused with --merge, which grades nothing.
+    std::vector<std::string> grading;
+    if (!opts->paths.empty()) grading.push_back("the paths to grade (" + opts->paths.front() + ")");
+    for (const char* name : {"--assignment", "--jobs", "--shard", "--seed", "--max-steps", "--timeout", "--replays",
+                             "--include", "--roster", "--trust-comments", "--require-sandbox", "--student"})
+      if (test->count(name)) grading.push_back(name);
+    exitCode = executeMerge(*opts, grading);
+  });
 }
 
 }  // namespace rb::cli

@@ -716,6 +716,7 @@ bool Grader::findClass() {
     r.program = path;
     r.name = nameOf(path);
     r.verdict = "fail";
+    r.isProgram = false;
     r.reason = why;
     // A file that is not a program but is one of the class's (square.bas.txt): its text for the
     // teacher's report. Never through a link, a FIFO or a device.

@@ -92,6 +92,18 @@ struct ProgramResult {
     std::string message;
   };
   std::vector<LineMark> marks;
+  /// False for a file of the class that is not a program (listed with why, never run).
+  bool isProgram = true;
+};
+
+/// What tells gradings apart, so that rb test --merge knows which reports make one class: rb test
+/// sets it, the JSON report carries it.
+struct GradingOrigin {
+  std::vector<std::string> paths;  ///< the files and folders graded, as given
+  int shard = 1, shards = 1;       ///< --shard K/N
+  std::string assignmentFile;      ///< as given; "" against the programs' comments
+  std::string assignmentDigest;    ///< of the assignment file's bytes (FNV-1a, 16 hex digits)
+  std::string rbVersion;           ///< the rb that graded
 };
 
 struct ClassResult {
@@ -115,6 +127,7 @@ struct ClassResult {
   std::string confinement;
   /// Pairs of programs with much code alike (GradeOptions::similarity).
   std::optional<SimilarityReport> similarity;
+  GradingOrigin origin;
   // When grading could not happen at all: the message and rb's exit code (64 usage, 66 no
   // input, 74 I/O). 0 otherwise.
   int fatalCode = 0;

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <re2/re2.h>
 
+#include "merge.h"
 #include "text.h"
 
 namespace rb::grade {
@@ -374,9 +375,25 @@ std::string studentFeedback(const ProgramResult& program, const ClassResult& r) 
 
 std::string jsonReport(const ClassResult& r) {
   json doc;
+  // What rb test --merge reads back (merge.h): the version of this shape, what tells gradings
+  // apart, and below each program's name, source, screen and marks.
+  doc["report_version"] = kJsonReportVersion;
+  if (!r.origin.rbVersion.empty()) doc["rb_version"] = r.origin.rbVersion;
   doc["title"] = line(r.title);
   doc["timestamp"] = r.timestamp;
   if (r.studentView) doc["student_view"] = true;
+  doc["paths"] = json::array();
+  for (const std::string& p : r.origin.paths) doc["paths"].push_back(toUtf8(p));
+  doc["shard"] = {{"index", r.origin.shard}, {"of", r.origin.shards}};
+  if (r.assignment) {
+    doc["assignment"] = {{"max_points", r.maxPoints}};
+    if (!r.origin.assignmentFile.empty()) doc["assignment"]["file"] = toUtf8(r.origin.assignmentFile);
+    if (!r.origin.assignmentDigest.empty()) doc["assignment"]["digest"] = r.origin.assignmentDigest;
+  }
+  if (!r.warnings.empty()) {
+    doc["warnings"] = json::array();
+    for (const std::string& w : r.warnings) doc["warnings"].push_back(line(w));
+  }
   doc["programs"] = json::array();
   for (const ProgramResult& p : r.programs) {
     json j = {{"program", line(p.program)}, {"result", p.verdict}, {"reason", line(reasonOf(p, r.studentView))},
@@ -388,8 +405,19 @@ std::string jsonReport(const ClassResult& r) {
       j["notes"] = json::array();
       for (const std::string& n : p.notes) j["notes"].push_back(line(n));
     }
+    if (!p.name.empty()) j["name"] = toUtf8(p.name);
+    if (!p.isProgram) j["not_a_program"] = true;
+    // The text as graded, byte for byte (merging compares it again for --similarity and shows
+    // it on the program's page): base64 shows nothing of it to whoever reads the report.
+    if (p.sourceRead) j["source_base64"] = base64Encode(p.source);
     if (!p.picture.empty()) j["picture"] = toUtf8(p.picture);
+    if (!p.pictureCaption.empty()) j["picture_caption"] = line(p.pictureCaption);
+    if (!p.screen.empty()) j["screen"] = toUtf8(p.screen);
     if (!p.replay.empty()) j["replay"] = toUtf8(p.replay);
+    if (!p.marks.empty()) {
+      j["marks"] = json::array();
+      for (const ProgramResult::LineMark& m : p.marks) j["marks"].push_back({{"line", m.line}, {"message", block(m.message)}});
+    }
     if (!p.output.empty()) {
       auto [output, marks] = shownOutput(p);
       j["output"] = output;

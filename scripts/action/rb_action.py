@@ -5,7 +5,8 @@ container, and the tests run it here with GITHUB_OUTPUT, GITHUB_STEP_SUMMARY and
 GITHUB_WORKSPACE set to temporary files (testdata/action/).
 
   rb_action.py test      runs `rb test` on the inputs (RB_* variables, below); writes the
-                         reports into RB_REPORTS, a job summary, annotations and the outputs
+                         reports into RB_REPORTS, a job summary, annotations and the outputs;
+                         with RB_MERGE, `rb test --merge` of the shards' reports instead
   rb_action.py check     runs `rb check --format sarif` (for code scanning) and
                          `rb check --format github` (annotations); a summary and the outputs
   rb_action.py classroom REPORT.json
@@ -15,7 +16,8 @@ GITHUB_WORKSPACE set to temporary files (testdata/action/).
 Inputs (environment): RB (the rb to run, default `rb`), RB_PATHS (programs and folders, split
 like a shell's words; default .), RB_ASSIGNMENT, RB_OPTIONS (more options for rb, split like a
 shell's words), RB_REPORTS (folder for the reports, default rb-report), RB_PICTURES (true:
---pictures), RB_FEEDBACK (true: --feedback), RB_CLASSROOM_NAME (a test's name prefix; default
+--pictures), RB_FEEDBACK (true: --feedback), RB_MERGE (shard reports to merge: paths or globs,
+split like a shell's words; RB_PATHS and RB_ASSIGNMENT are then not used), RB_CLASSROOM_NAME (a test's name prefix; default
 none). Outputs (GITHUB_OUTPUT): see action.yml.
 
 Both commands end with status 0 when rb ran (its own status is the exit-code output, which the
@@ -23,6 +25,7 @@ action turns into the job's result after the reports are uploaded), and 2 when t
 do their work (no rb, no report).
 """
 import base64
+import glob
 import html
 import json
 import os
@@ -333,19 +336,39 @@ def rb_command():
     return shlex.split(env("RB", "rb"))
 
 
+def merged_reports(patterns):
+    """The shard reports RB_MERGE names: each word a path or a glob (`shards/*/rb-test.json`),
+    expanded and sorted; a word that matches nothing is passed on as it is, for rb to say so."""
+    found = []
+    for word in shlex.split(patterns):
+        matches = sorted(glob.glob(word, recursive=True)) if glob.has_magic(word) else []
+        for path in matches or [word]:
+            if path not in found:
+                found.append(path)
+    return found
+
+
 def run_test():
     reports = env("RB_REPORTS", "rb-report")
     os.makedirs(reports, exist_ok=True)
+    merging = env("RB_MERGE")
     cmd = rb_command() + ["test", "--format", "json",
                           "--junit", os.path.join(reports, "junit.xml")]
-    if env("RB_ASSIGNMENT"):
-        cmd += ["--assignment", env("RB_ASSIGNMENT"), "--csv", os.path.join(reports, "grades.csv")]
+    if env("RB_ASSIGNMENT") and not merging:
+        cmd += ["--assignment", env("RB_ASSIGNMENT")]
+    if env("RB_ASSIGNMENT") or merging:
+        cmd += ["--csv", os.path.join(reports, "grades.csv")]
     if truthy("RB_PICTURES"):
         cmd += ["--pictures", os.path.join(reports, "pictures")]
     if truthy("RB_FEEDBACK"):
         cmd += ["--feedback", os.path.join(reports, "feedback")]
     cmd += shlex.split(env("RB_OPTIONS"))
-    cmd += shlex.split(env("RB_PATHS", "."))
+    if merging:
+        # The shards' reports (rb test --shard K/N, downloaded from their jobs' artifacts) made
+        # into the class's: nothing is graded, so the paths and the assignment are not used.
+        cmd += ["--merge"] + merged_reports(merging)
+    else:
+        cmd += shlex.split(env("RB_PATHS", "."))
     print("rb_action: " + " ".join(shlex.quote(c) for c in cmd), flush=True)
     try:
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE)

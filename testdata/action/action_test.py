@@ -7,7 +7,7 @@ the Classroom result is read by GitHub Classroom's own reporter (its source, run
 testdata/action/classroom-reporter/).
 
 Usage: action_test.py PATH/TO/rb SOURCE_DIR [--part NAME]  (parts: test, classroom, untrusted,
-check, install, yaml; default all). Exit 77 when a part needs node and it is missing.
+merge, check, install, yaml; default all). Exit 77 when a part needs node and it is missing.
 """
 import base64
 import csv
@@ -398,6 +398,81 @@ def part_untrusted():
         step.close()
 
 
+# --- merge: a matrix of shards, then a job that merges their artifacts
+
+def part_merge():
+    """Three shard jobs (rb test --shard K/3, each in a workspace of its own, uploading its
+    reports folder), then the merge job: the artifacts downloaded as actions/download-artifact
+    lays them out (shards/report-K/, one folder per artifact), the action with `merge`. Its
+    outputs, summary, annotations, grade book, pictures and feedback are those of one job that
+    grades the whole class."""
+    def grade(**inputs):
+        step = Step()
+        square_class(step)
+        p = step.run([sys.executable, os.path.join(ACTION, "rb_action.py"), "test"], RB_PICTURES="true",
+                     RB_FEEDBACK="true", **inputs)
+        check(p.returncode == 0, f"rb_action.py test {inputs}: exit {p.returncode}: {p.stderr[-500:]}")
+        return step, p
+
+    steps = []
+    try:
+        whole, whole_p = grade(RB_PATHS="square/class", RB_ASSIGNMENT="square/assignment.toml")
+        steps.append(whole)
+        merging = Step()
+        steps.append(merging)
+        square_class(merging)  # the merge job checks out the repository too: annotations point into it
+        for k in (1, 2, 3):
+            shard, _ = grade(RB_PATHS="square/class", RB_ASSIGNMENT="square/assignment.toml", RB_OPTIONS=f"--shard {k}/3")
+            steps.append(shard)
+            check(shard.outputs().get("programs") == "2", f"shard {k}/3 grades 2 programs: {shard.outputs()}")
+            shutil.copytree(os.path.join(shard.ws, "rb-report"), os.path.join(merging.ws, "shards", f"report-{k}"))
+        p = merging.run([sys.executable, os.path.join(ACTION, "rb_action.py"), "test"], RB_PICTURES="true",
+                        RB_FEEDBACK="true", RB_MERGE="shards/*/rb-test.json")
+        check(p.returncode == 0, f"rb_action.py test with merge: exit {p.returncode}: {p.stderr[-500:]}")
+        check("--merge shards/report-1/rb-test.json shards/report-2/rb-test.json shards/report-3/rb-test.json" in p.stdout,
+              f"the glob expanded in order:\n{p.stdout}")
+        got, want = merging.outputs(), whole.outputs()
+        for name in ("exit-code", "points", "max-points", "programs", "passed", "failed", "passed-all"):
+            check(got.get(name) == want.get(name), f"merge output {name}: {got.get(name)!r}, one job's {want.get(name)!r}")
+        result = json.loads(base64.b64decode(got.get("result", "")))
+        want_result = json.loads(base64.b64decode(want.get("result", "")))
+        for t in result["tests"] + want_result["tests"]:
+            t.pop("duration")
+        check(result == want_result, "the Classroom result of the merge is one job's")
+        strip = lambda text: re.sub(r'(time|timestamp)="[^"]*"', r'\1="T"', text)
+        check(merging.summary() == whole.summary(), f"the merge's summary is one job's:\n{merging.summary()}\n{whole.summary()}")
+        errors = lambda stdout: [a for a in parse_commands(stdout) if a[0] == "error"]
+        check(errors(p.stdout) == errors(whole_p.stdout) and errors(p.stdout),
+              f"the merge's annotations are one job's:\n{p.stdout}")
+        mine, theirs = os.path.join(merging.ws, "rb-report"), os.path.join(whole.ws, "rb-report")
+        check([{k: v for k, v in r.items() if k != "seconds"} for r in grade_book(os.path.join(mine, "grades.csv"))] ==
+              [{k: v for k, v in r.items() if k != "seconds"} for r in grade_book(os.path.join(theirs, "grades.csv"))],
+              "the merged grade book is one job's")
+        for folder in ("pictures", "feedback"):
+            names = sorted(os.listdir(os.path.join(theirs, folder)))
+            check(sorted(os.listdir(os.path.join(mine, folder))) == names, f"the merge's {folder}/ has one job's files")
+            for n in names:
+                with open(os.path.join(mine, folder, n), "rb") as a, open(os.path.join(theirs, folder, n), "rb") as b:
+                    check(a.read() == b.read(), f"{folder}/{n} is one job's")
+        with open(os.path.join(mine, "junit.xml")) as a, open(os.path.join(theirs, "junit.xml")) as b:
+            check(strip(a.read()) == strip(b.read()), "the merged JUnit report is one job's")
+
+        # A shard's artifact missing: the merge grades nothing and says why.
+        shutil.rmtree(os.path.join(merging.ws, "shards", "report-2"))
+        again = Step()
+        steps.append(again)
+        shutil.copytree(os.path.join(merging.ws, "shards"), os.path.join(again.ws, "shards"))
+        p = again.run([sys.executable, os.path.join(ACTION, "rb_action.py"), "test"], RB_MERGE="shards/*/rb-test.json")
+        out = again.outputs()
+        check(out.get("exit-code") == "66" and out.get("passed-all") == "false",
+              f"a shard missing: exit-code {out.get('exit-code')}")
+        check("shard 2 of 3 is missing" in again.summary() and "could not grade" in again.summary(),
+              f"the summary says which shard is missing:\n{again.summary()}")
+    finally:
+        for step in steps:
+            step.close()
+
+
 # --- mode check
 
 def part_check():
@@ -496,6 +571,8 @@ def main():
             skipped.append("classroom")
     if PART in ("all", "untrusted"):
         part_untrusted()
+    if PART in ("all", "merge"):
+        part_merge()
     if PART in ("all", "check"):
         part_check()
     if PART in ("all", "install"):

@@ -850,6 +850,250 @@ def case_similarity(env):
     expect("Similar code" not in s.stdout, "not in a student's report", s.stdout)
 
 
+# --- rb test --merge: the shards' JSON reports of a CI matrix made into the class's reports
+
+MERGE_REPORTS = ["--junit", "report.xml", "--csv", "grades.csv", "--html", "report", "--feedback", "feedback"]
+
+
+def normalised(kind, text):
+    """A report with what differs between two gradings of one class taken out: the times, the
+    timestamps, the page's nonce."""
+    if kind == "json":
+        doc = json.loads(text)
+        for p in doc["programs"]:
+            p.pop("seconds")
+        doc["summary"].pop("seconds")
+        doc.pop("timestamp")
+        return json.dumps(doc, indent=1, sort_keys=True)
+    if kind == "text":
+        text = re.sub(r" +\d+\.\d\ds(?=  |$)", " T", text, flags=re.M)
+        return re.sub(r" in \d+\.\d\d s$", " in T s", text, flags=re.M)
+    if kind == "csv":
+        rows = list(csv.reader(io.StringIO(text)))
+        col = rows[0].index("seconds")
+        return [r[:col] + r[col + 1:] for r in rows]
+    if kind == "junit":
+        return re.sub(r'(time|timestamp)="[^"]*"', r'\1="T"', text)
+    if kind == "html":
+        text = re.sub(r"nonce-[0-9a-f]+'", "nonce-N'", text)
+        text = re.sub(r'nonce="[0-9a-f]+"', 'nonce="N"', text)
+        text = re.sub(r"Graded [0-9T:-]+ by rb test", "Graded T by rb test", text)
+        return re.sub(r"steps, \d+\.\d\d s", "steps, T s", text)
+    return text
+
+
+def read(path, mode="r"):
+    with open(path, mode) as f:
+        return f.read()
+
+
+def folder_files(path):
+    return sorted(os.path.relpath(os.path.join(d, f), path) for d, _, fs in os.walk(path) for f in fs)
+
+
+def same_reports(whole, merged, what):
+    """Every report file of the merge in folder `merged` is the one run's in `whole`: the JSON
+    and text on standard output (whole.json, whole.txt), the CSV, the JUnit report (valid for
+    both schemas), the HTML pages, the feedback files, and the pictures, byte for byte."""
+    for name, kind in (("out.json", "json"), ("out.txt", "text"), ("grades.csv", "csv"), ("report.xml", "junit")):
+        a, b = normalised(kind, read(os.path.join(whole, name))), normalised(kind, read(os.path.join(merged, name)))
+        if a != b:
+            import difflib
+            diff = "\n".join(difflib.unified_diff(str(a).splitlines(), str(b).splitlines(), "one run", "merged", lineterm=""))
+            raise Failure(f"{what}: the merged {name} is not the one run's\n{diff[:6000]}")
+    xmllint = shutil.which("xmllint")
+    for schema in (SCHEMA, JENKINS_SCHEMA):
+        v = subprocess.run([xmllint, "--noout", "--schema", schema, os.path.join(merged, "report.xml")],
+                           capture_output=True, text=True)
+        expect(v.returncode == 0, f"{what}: the merged JUnit report does not validate against {schema}", v.stderr)
+    for folder in ("report", "feedback"):
+        files = folder_files(os.path.join(whole, folder))
+        expect(files == folder_files(os.path.join(merged, folder)), f"{what}: the merged {folder}/ has other files",
+               files, folder_files(os.path.join(merged, folder)))
+        for f in files:
+            a, b = os.path.join(whole, folder, f), os.path.join(merged, folder, f)
+            if f.endswith(".png") or "/pictures/" in "/" + f:
+                expect(read(a, "rb") == read(b, "rb"), f"{what}: {folder}/{f} differs")
+            else:
+                expect(normalised("html", read(a)) == normalised("html", read(b)), f"{what}: {folder}/{f} differs",
+                       read(b)[:3000])
+    expect(len(folder_files(os.path.join(whole, "report", "pictures"))) > 0, f"{what}: the one run drew no picture")
+
+
+def grade_whole(env, folder, common, paths):
+    """One run over the whole class in `folder`: every report, the JSON and the text."""
+    os.makedirs(folder)
+    r = env.rb_run("test", *common, *MERGE_REPORTS, "--format", "json", *paths, cwd=folder)
+    expect(r.returncode in (0, 1), f"one run: exit {r.returncode}", r.stderr)
+    with open(os.path.join(folder, "out.json"), "w") as f:
+        f.write(r.stdout)
+    t = env.rb_run("test", *common, "-q", *paths, cwd=folder)
+    with open(os.path.join(folder, "out.txt"), "w") as f:
+        f.write(t.stdout)
+    return r
+
+
+def grade_shards(env, folder, common, paths, n):
+    """The class as n shards in `folder`, each with its own JSON report and --html folder."""
+    os.makedirs(folder)
+    for k in range(1, n + 1):
+        r = env.rb_run("test", *common, "--shard", f"{k}/{n}", "--format", "json", "--html", f"shard{k}", *paths,
+                       cwd=folder)
+        expect(r.returncode in (0, 1), f"shard {k}/{n}: exit {r.returncode}", r.stderr)
+        with open(os.path.join(folder, f"shard{k}.json"), "w") as f:
+            f.write(r.stdout)
+
+
+def merge(env, folder, reports, *options):
+    """rb test --merge in `folder`: every report, the JSON and the text."""
+    r = env.rb_run("test", "--merge", *reports, *options, *MERGE_REPORTS, "--format", "json", cwd=folder)
+    if r.returncode in (0, 1):
+        with open(os.path.join(folder, "out.json"), "w") as f:
+            f.write(r.stdout)
+        t = env.rb_run("test", "--merge", *reports, *options, "-q", cwd=folder)
+        with open(os.path.join(folder, "out.txt"), "w") as f:
+            f.write(t.stdout)
+    return r
+
+
+def case_merge(env):
+    if not shutil.which("xmllint"):
+        raise Skip("xmllint is not installed (Debian: libxml2-utils)")
+    # The square: one run over the class, and three shards merged; in folders of the same name,
+    # so that the pictures' paths read alike.
+    common = ["-j", "2", "-a", ASSIGNMENT]
+    whole = grade_whole(env, env.path("whole"), common, [CLASS])
+    grade_shards(env, env.path("split"), common, [CLASS], 3)
+    shards = ["shard1.json", "shard2.json", "shard3.json"]
+    m = merge(env, env.path("split"), shards)
+    expect(m.returncode == whole.returncode == 1, f"merge: exit {m.returncode}, the one run's {whole.returncode}", m.stderr)
+    expect(m.stderr == "", "the merge says nothing on standard error", m.stderr)
+    same_reports(env.path("whole"), env.path("split"), "the square in 3 shards")
+    doc = json.loads(m.stdout)
+    expect(doc["summary"]["programs"] == 6 and doc["shard"] == {"index": 1, "of": 1}, "merged summary", doc["summary"])
+    # The class took as long as its shards, from the first one's start to the last one's end.
+    longest = max(json.loads(read(env.path(f"split/{s}")))["summary"]["seconds"] for s in shards)
+    expect(doc["summary"]["seconds"] >= longest, f"merged seconds {doc['summary']['seconds']} < the longest shard's {longest}")
+
+    # In any order, and from artifacts downloaded elsewhere (each report with its pictures folder
+    # beside it, as the action uploads them), found beside the reports or where --merge-pictures says.
+    art = env.path("artifacts")
+    for k in (1, 2, 3):
+        os.makedirs(os.path.join(art, f"report-{k}"))
+        shutil.copy(env.path(f"split/shard{k}.json"), os.path.join(art, f"report-{k}", "rb-test.json"))
+        shutil.copytree(env.path(f"split/shard{k}/pictures"), os.path.join(art, f"report-{k}", "pictures"))
+    os.makedirs(env.path("elsewhere"))
+    reports = [os.path.join(art, f"report-{k}", "rb-test.json") for k in (3, 1, 2)]
+    m = merge(env, env.path("elsewhere"), reports)
+    expect(m.returncode == 1, f"merge of artifacts: exit {m.returncode}", m.stderr)
+    same_reports(env.path("whole"), env.path("elsewhere"), "the square's artifacts")
+    pics = env.path("pics")
+    for k in (1, 2, 3):
+        shutil.copytree(os.path.join(art, f"report-{k}", "pictures"), os.path.join(pics, str(k)))
+        shutil.rmtree(os.path.join(art, f"report-{k}", "pictures"))
+    os.makedirs(env.path("given"))
+    m = merge(env, env.path("given"), reports, "--merge-pictures", *[os.path.join(pics, str(k)) for k in (3, 1, 2)])
+    expect(m.returncode == 1, f"merge with --merge-pictures: exit {m.returncode}", m.stderr)
+    same_reports(env.path("whole"), env.path("given"), "the square with --merge-pictures")
+    # Pictures nowhere to be found: an error when the merge must copy them, else a note.
+    r = env.rb_run("test", "--merge", *reports, "--html", "page", cwd=env.path("given"))
+    expect(r.returncode == 66 and "--merge-pictures" in r.stderr and "not found" in r.stderr,
+           f"pictures not found for --html: exit {r.returncode}", r.stderr)
+    r = env.rb_run("test", "--merge", *reports, "--format", "json", cwd=env.path("given"))
+    named = sum(k in p for s in shards for p in json.loads(read(env.path(f"split/{s}")))["programs"]
+                for k in ("picture", "screen", "replay"))
+    expect(r.returncode == 1 and f"note: {named} pictures" in r.stderr, f"pictures not found, no --html: exit {r.returncode}",
+           r.stderr)
+    expect(not any("picture" in p for p in json.loads(r.stdout)["programs"]), "the merged JSON names no picture not found")
+
+    # Reports that are not one class's shards.
+    split = env.path("split")
+    refusals = [
+        (["shard1.json", "shard3.json"], 66, "shard 2 of 3 is missing"),
+        (["shard1.json", "shard2.json", "shard2.json", "shard3.json"], 64, "are both shard 2 of 3"),
+        (["shard1.json", "nothing.json"], 66, "cannot read the report nothing.json: no such file"),
+        (["shard1.json", "grades.csv"], 64, "grades.csv: not JSON"),
+    ]
+    doc = json.loads(read(os.path.join(split, "shard2.json")))
+    doc.pop("report_version")
+    env.write("split/old.json", json.dumps(doc))
+    refusals.append((["shard1.json", "old.json", "shard3.json"], 64, "older rb test"))
+    doc = json.loads(read(os.path.join(split, "shard2.json")))
+    doc["title"] = "circle"
+    env.write("split/other.json", json.dumps(doc))
+    refusals.append((["shard1.json", "other.json", "shard3.json"], 64, "of 'square', other.json (shard 2 of 3) of 'circle'"))
+    shutil.copytree(SQUARE, env.path("square"), ignore=shutil.ignore_patterns("class"))
+    changed = env.write("square/assignment.toml", read(ASSIGNMENT) + "\n# changed\n")
+    r = env.rb_run("test", "-j", "2", "-a", changed, "--shard", "2/3", "--format", "json", CLASS)
+    env.write("split/changed.json", r.stdout)
+    refusals.append((["shard1.json", "changed.json", "shard3.json"], 64, "graded against one assignment"))
+    r = env.rb_run("test", "-j", "2", "-a", ASSIGNMENT, "--shard", "2/4", "--format", "json", CLASS)
+    env.write("split/four.json", r.stdout)
+    refusals.append((["shard1.json", "four.json", "shard3.json"], 64, "split the class differently"))
+    for reports, code, message in refusals:
+        r = env.rb_run("test", "--merge", *reports, cwd=split)
+        expect(r.returncode == code and message in r.stderr and r.stdout == "",
+               f"--merge {' '.join(reports)}: exit {r.returncode} (expected {code}, saying {message!r})", r.stderr)
+    # A warning (the solution fails one of its own checks) that every shard gives: said once.
+    shutil.copytree(SQUARE, env.path("warned"), ignore=shutil.ignore_patterns("class"))
+    warned = env.write("warned/assignment.toml", read(ASSIGNMENT) +
+                       '[[check]]\nname = "far corner"\nkind = "visits"\nwaypoints = [[10, 10]]\n')
+    os.makedirs(env.path("warned/shards"))
+    for k in (1, 2):
+        r = env.rb_run("test", "-j", "2", "-a", warned, "--shard", f"{k}/2", "--format", "json", CLASS)
+        env.write(f"warned/shards/{k}.json", r.stdout)
+    one = env.rb_run("test", "-j", "2", "-a", warned, "--format", "json", CLASS)
+    r = env.rb_run("test", "--merge", "1.json", "2.json", "--format", "json", cwd=env.path("warned/shards"))
+    warning = "rb test: warning: the solution fails its own check 'far corner'"
+    expect(one.stderr.count(warning) == 1 and r.stderr.count(warning) == 1, "the warning, once", one.stderr, r.stderr)
+    expect(json.loads(r.stdout)["warnings"] == json.loads(one.stdout)["warnings"], "the merged JSON's warnings are one run's",
+           r.stdout[:2000])
+    for args, message in ((["--merge", "shard1.json", "-a", ASSIGNMENT], "leave out --assignment"),
+                          (["shard1.json", "--merge", "shard2.json"], "leave out the paths to grade"),
+                          (["--merge", "shard1.json", "--student"], "leave out --student"),
+                          (["--merge", "shard1.json", "shard2.json", "--merge-pictures", "x"], "one folder per report"),
+                          (["--merge-pictures", "x", CLASS], "goes with --merge")):
+        r = env.rb_run("test", *args, cwd=split)
+        expect(r.returncode == 64 and message in r.stderr, f"rb test {' '.join(args)}: exit {r.returncode}", r.stderr)
+
+
+def case_merge_roster(env):
+    if not shutil.which("xmllint"):
+        raise Skip("xmllint is not installed (Debian: libxml2-utils)")
+    # The yard with its roster, without forever.bas (stopped by the clock, so never quite the same
+    # twice): Hana and Mo have no submission, square.bas.txt is not a program, input is marked,
+    # a check is hidden, the post program writes feedback; with --similarity, and a copy of
+    # detour.bas that lands in another shard: only the merge can find the pair.
+    yard = env.path("yard")
+    shutil.copytree(YARD, yard)
+    os.remove(os.path.join(yard, "class", "forever.bas"))
+    shutil.copy(os.path.join(yard, "class", "detour.bas"), os.path.join(yard, "class", "zz_copy.bas"))
+    common = ["-j", "2", "-a", os.path.join(yard, "assignment.toml"), "--similarity"]
+    paths = [os.path.join(yard, "class")]
+    grade_whole(env, env.path("whole"), common, paths)
+    grade_shards(env, env.path("split"), common, paths, 3)
+    shards = ["shard1.json", "shard2.json", "shard3.json"]
+    missing = [[p["student"] for p in json.loads(read(env.path(f"split/{s}")))["programs"] if p["result"] == "missing"]
+               for s in shards]
+    expect(missing == [["Hana", "Mo"], [], []], "shard 1 lists the missing students", missing)
+    # Without --similarity the shards' lists (each of its own programs) are left out, and said so.
+    r = env.rb_run("test", "--merge", *shards, "--format", "json", cwd=env.path("split"))
+    expect(r.returncode == 1 and "similarity" not in json.loads(r.stdout) and "give --similarity" in r.stderr,
+           f"merge without --similarity: exit {r.returncode}", r.stderr)
+    m = merge(env, env.path("split"), shards, "--similarity")
+    expect(m.returncode == 1, f"merge: exit {m.returncode}", m.stderr)
+    same_reports(env.path("whole"), env.path("split"), "the yard in 3 shards")
+    doc = json.loads(m.stdout)
+    expect([p["student"] for p in doc["programs"] if p["result"] == "missing"] == ["Hana", "Mo"],
+           "the missing students once, last", doc["programs"])
+    expect(doc["summary"]["missing"] == 2 and doc["summary"]["programs"] == 12, "merged summary", doc["summary"])
+    pairs = [(os.path.basename(p["a"]), os.path.basename(p["b"])) for p in doc.get("similarity", [])]
+    expect(pairs == [("detour.bas", "zz_copy.bas")], "the merge compares the whole class", pairs)
+    for s in shards:  # a shard compares its own programs only (and so finds other pairs)
+        found = [(os.path.basename(p["a"]), os.path.basename(p["b"])) for p in json.loads(read(env.path(f"split/{s}")))["similarity"]]
+        expect(("detour.bas", "zz_copy.bas") not in found, f"{s} found the pair across shards", found)
+
+
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 
