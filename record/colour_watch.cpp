@@ -23,6 +23,9 @@ constexpr double kMinReach = 16, kMaxReach = 256;
 /// any distance here, far less than a pixel.
 constexpr double kSlack = 1e-6;
 
+/// The squared distance between two points.
+double distance2(P2 a, P2 b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); }
+
 /// The squared distance from `c` to the nearest point of the box x0..x1, y0..y1.
 double boxDistance2(P2 c, double x0, double y0, double x1, double y1) {
   const double dx = std::max({x0 - c.x, 0.0, c.x - x1}), dy = std::max({y0 - c.y, 0.0, c.y - y1});
@@ -51,7 +54,11 @@ ColourWatch::ColourWatch(Canvas& canvas, const std::vector<uint32_t>& colours) :
   unread_.assign(static_cast<size_t>(kCellsX) * kCellsY, 0);
   unreadInBlock_.assign(static_cast<size_t>(kBlocksX) * kBlocksY, 0);
   markAllUnread();
-  if (active_ > 0) canvas_.trackChanges(true);
+  if (active_ > 0) {
+    canvas_.trackChanges(true);
+    canvas_.takeChanges(changes_);  // everything: every cell is unread already
+    seenVersion_ = canvas_.version();
+  }
 }
 
 ColourWatch::~ColourWatch() {
@@ -78,12 +85,14 @@ void ColourWatch::robotEvent(const RobotEvent& e, double radius) {
 void ColourWatch::sweep(P2 from, P2 to, double radius, std::optional<uint32_t> ownRgb, uint32_t line) {
   if (active_ == 0) return;
   takeChanges();
-  const int n = std::max(1, static_cast<int>(std::ceil(distance(from, to))));
+  int n = 0;  // the points are 0..n (worked out when needed)
   for (size_t i = 0; i < watched_.size(); ++i) {
     Watched& w = watched_[i];
     if (w.done || (ownRgb && *ownRgb == w.rgb)) continue;
     // Both ends' discs inside the clear disc: so is every point's between them.
-    if (distance(from, w.at) + radius + kSlack < w.clear && distance(to, w.at) + radius + kSlack < w.clear) continue;
+    const double room = w.clear - radius - kSlack;
+    if (room > 0 && distance2(from, w.at) < room * room && distance2(to, w.at) < room * room) continue;
+    if (n == 0) n = std::max(1, static_cast<int>(std::ceil(distance(from, to))));
     const long k = firstCover(w, from, to, n, radius);
     if (k < 0) continue;
     const double t = static_cast<double>(k) / n;
@@ -107,7 +116,7 @@ long ColourWatch::firstCover(Watched& w, P2 from, P2 to, int n, double radius) {
   for (long k = 0; k <= n;) {
     const double t = static_cast<double>(k) / n;
     const P2 c{from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t};
-    const double room = w.clear - radius - kSlack - distance(c, w.at);
+    const double room = w.clear - radius - kSlack - std::sqrt(distance2(c, w.at));
     if (room > 0) {
       // This point's disc is inside the clear disc, and so is that of every point less than
       // `room` farther on.
@@ -194,6 +203,8 @@ double ColourWatch::nearest(Watched& w, P2 c, double radius) {
 }
 
 void ColourWatch::takeChanges() {
+  if (canvas_.version() == seenVersion_) return;  // not a pixel changed
+  seenVersion_ = canvas_.version();
   canvas_.takeChanges(changes_);
   if (changes_.all) {
     markAllUnread();

@@ -126,6 +126,7 @@ class ColourWatch {
   std::vector<uint8_t> unread_;         ///< per cell: changed since it was read
   std::vector<uint16_t> unreadInBlock_;  ///< per block: its unread cells
   ChangeBoxes changes_;                 ///< scratch: the screen's change boxes
+  uint64_t seenVersion_ = 0;            ///< the screen's version when its changes were last taken
   std::vector<uint64_t> cellBits_;      ///< scratch: one cell's bits per colour
   struct Near {
     double d2;
