@@ -12,8 +12,9 @@
 //   first touch is kept, with the line of the statement (0: another file).
 //
 // Checking that rule pixel by pixel reads the whole disc (1,257 pixels at radius 20) at every
-// point, 8 to 20 times the work of a run that only moves. The watch gets the same answers from
-// far less:
+// point: grading took 6 to 16 times the processor time of a region check (bench/grade/colour.sh),
+// enough for the time limit rather than the step limit to stop an endless program. The watch
+// gets the same answers from far less:
 //
 // - It keeps, for each colour, which pixels have it: a bit per pixel, 64 to a cell of 8 x 8, and
 //   for each block of 4 x 4 cells the count of those bits. The screen tells it where pixels
