@@ -5,12 +5,12 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <string>
 
 #include "animation.h"
+#include "colour_watch.h"
 #include "run_command.h"
 #include "exit_codes.h"
 #include "files.h"
@@ -195,18 +195,16 @@ std::pair<uint32_t, uint32_t> loopAround(const LoadedProgram& program, SourceLoc
   return best;
 }
 
-/// Watches what the robot's disc covers as it moves, for the colours a grader asks about, and
-/// passes every event on to the path recorder.
+/// Passes every robot event on to the path recorder, the colour watch (when the grader watches
+/// colours) and the replay's recording.
 class JobObserver : public RobotObserver {
  public:
-  JobObserver(const std::vector<uint32_t>& colours, const Machine& machine) : machine_(machine) {
-    for (uint32_t rgb : colours) touches.push_back({rgb, false, {}, 0});
+  JobObserver(const std::vector<uint32_t>& colours, Machine& machine) : machine_(machine) {
+    if (!colours.empty()) watch.emplace(machine.canvas(), colours);
   }
 
   void robotEvent(const RobotEvent& e) override {
-    if (!touches.empty() && (e.kind == RobotEvent::Locate || e.kind == RobotEvent::Move ||
-                             e.kind == RobotEvent::Crash))
-      sweep(e);
+    if (watch) watch->robotEvent(e, machine_.robot().radius());
     recorder.robotEvent(e);
     if (recording) recording->robotEvent(e);
   }
@@ -221,51 +219,14 @@ class JobObserver : public RobotObserver {
     RobotEvent e{RobotEvent::Locate, "rLocate", {}, "", robot.pose(), robot.penDown(), std::nullopt};
     recorder.robotEvent(e);
     recorder.moves = 0;
-    last_ = {e.pose.pos.x(), e.pose.pos.y()};
-    placed_ = true;
+    if (watch) watch->startAt({e.pose.pos.x(), e.pose.pos.y()});
   }
 
   grade::PathRecorder recorder;
-  std::vector<grade::RunRecord::Touch> touches;
+  std::optional<grade::ColourWatch> watch;
 
  private:
-  /// The disc from the last position to this one, on points at most 1 px apart.
-  void sweep(const RobotEvent& e) {
-    grade::P2 to{e.pose.pos.x(), e.pose.pos.y()};
-    grade::P2 from = e.kind == RobotEvent::Locate || !placed_ ? to : last_;
-    last_ = to;
-    placed_ = true;
-    const Canvas& canvas = machine_.canvas();
-    double r = machine_.robot().radius();
-    // The robot's own trail under it is not something it touched.
-    std::optional<uint32_t> own;
-    if (e.pen) own = colourToRgb(canvas.trailColour());
-    double len = grade::distance(from, to);
-    int n = std::max(1, static_cast<int>(std::ceil(len)));
-    uint32_t line = e.loc.file == 0 ? e.loc.line : 0;
-    for (int k = 0; k <= n; ++k) {
-      double t = static_cast<double>(k) / n;
-      grade::P2 c{from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t};
-      int x0 = static_cast<int>(std::floor(c.x - r)), x1 = static_cast<int>(std::ceil(c.x + r));
-      int y0 = static_cast<int>(std::floor(c.y - r)), y1 = static_cast<int>(std::ceil(c.y + r));
-      for (int y = std::max(0, y0); y <= std::min(Canvas::kHeight - 1, y1); ++y)
-        for (int x = std::max(0, x0); x <= std::min(Canvas::kWidth - 1, x1); ++x) {
-          if ((x - c.x) * (x - c.x) + (y - c.y) * (y - c.y) > r * r) continue;
-          uint32_t rgb = colourToRgb(canvas.at(x, y));
-          if (own && rgb == *own) continue;
-          for (grade::RunRecord::Touch& t2 : touches)
-            if (!t2.touched && t2.rgb == rgb) {
-              t2.touched = true;
-              t2.at = c;
-              t2.line = line;
-            }
-        }
-    }
-  }
-
-  const Machine& machine_;
-  grade::P2 last_;
-  bool placed_ = false;
+  Machine& machine_;
 };
 
 /// A teacher's program (world or post) compiled for running on the student's machine.
@@ -462,7 +423,7 @@ int executeJob(JobOptions opts) {
         rec.pathLines = std::move(recorder.pathLines);
         rec.trail = std::move(recorder.trail);
         rec.truncated = recorder.truncated;
-        rec.touches = observer->touches;
+        if (observer->watch) rec.touches = observer->watch->touches();
       }
       if (recording && recording->finished()) {
         const SourceFile& main = run.loaded.program->sources.file(0);

@@ -78,7 +78,7 @@ struct RunRecord {
   /// A run stopped by a limit inside a loop: the loop's first and last line (0 when none).
   uint32_t loopFirst = 0, loopLast = 0;
   /// The colours a grader watches (avoid/touch): whether the robot's disc ever covered a pixel
-  /// of each (0xRRGGBB), first where and on which line.
+  /// of each (0xRRGGBB), first where and on which line (the rule: colour_watch.h).
   struct Touch {
     uint32_t rgb = 0;
     bool touched = false;

@@ -89,7 +89,7 @@ void ObstacleField::rebuild() {
 }
 
 void ObstacleField::takeChanges() {
-  ObstacleChanges changes = canvas_.takeObstacleChanges();
+  ChangeBoxes changes = canvas_.takeObstacleChanges();
   builtFor_ = canvas_.obstacleVersion();
   long area = 0;
   for (const PixelBox& b : changes.boxes) area += b.area();
@@ -102,7 +102,7 @@ void ObstacleField::takeChanges() {
     // A box that meets a waiting one (the same status line redrawn) joins it.
     bool joined = false;
     for (PixelBox& p : pending_) {
-      const int j = ObstacleChanges::kJoin;
+      const int j = ChangeBoxes::kJoin;
       if (box.x0 <= p.x1 + j && box.x1 >= p.x0 - j && box.y0 <= p.y1 + j && box.y1 >= p.y0 - j) {
         p.add(box);
         joined = true;
@@ -161,7 +161,7 @@ void ObstacleField::apply(const PixelBox& changed) {
     addedBox.add(static_cast<int>(p & 0xffff), static_cast<int>(p >> 16));
   }
   // Join the group it meets (the trail goes on from the last step), or start one.
-  const int j = ObstacleChanges::kJoin;
+  const int j = ChangeBoxes::kJoin;
   Fresh* group = nullptr;
   for (Fresh& f : fresh_)
     if (addedBox.x0 <= f.box.x1 + j && addedBox.x1 >= f.box.x0 - j && addedBox.y0 <= f.box.y1 + j &&

@@ -47,7 +47,7 @@ Colour rgbColour(int r, int g, int b) {
   return clamp(r) | clamp(g) << 8 | clamp(b) << 16;
 }
 
-PixelBox& ObstacleChanges::boxForFar(int x, int y) {
+PixelBox& ChangeBoxes::boxForFar(int x, int y) {
   for (PixelBox& b : boxes)
     if (x >= b.x0 - kJoin && x <= b.x1 + kJoin && y >= b.y0 - kJoin && y <= b.y1 + kJoin) return b;
   if (boxes.size() < kMaxBoxes) return boxes.emplace_back();
@@ -233,10 +233,7 @@ void Canvas::span(int y, int x1, int x2, Colour c) {
 
 void Canvas::rowChanged(int y, int first, int last, int firstFlip, int lastFlip) {
   ++version_;
-  if (damageOn_) {
-    damage_.add(first, y);
-    damage_.add(last, y);
-  }
+  if (tracking_) changed(y, first, last);
   if (firstFlip >= 0) {
     ++obstacleVersion_;
     obstacleChanges_.addRow(y, firstFlip, lastFlip);

@@ -59,15 +59,17 @@ struct PixelBox {
   long area() const { return empty() ? 0 : long(x1 - x0 + 1) * long(y1 - y0 + 1); }
 };
 
-/// Where obstacles changed since the last time they were taken (Canvas::takeObstacleChanges):
-/// the obstacle index of the simulator updates only those regions, lazily. Changes far apart
-/// (a status line in a corner, the pen trail under the robot) stay in separate boxes.
-struct ObstacleChanges {
+/// Where pixels changed since the last time the changes were taken: where obstacles changed
+/// (Canvas::takeObstacleChanges), for the obstacle index of the simulator, which updates only
+/// those regions, lazily; where any pixel changed (Canvas::takeChanges), for a grader's colour
+/// watch. Changes far apart (a status line in a corner, the pen trail under the robot) stay in
+/// separate boxes.
+struct ChangeBoxes {
   static constexpr size_t kMaxBoxes = 8;
   /// Pixels this close to a box join it rather than start another.
   static constexpr int kJoin = 16;
-  std::vector<PixelBox> boxes;  ///< every pixel that became or stopped being an obstacle
-  bool all = false;             ///< something changed everywhere (clearScr, rInvisible, scrolling)
+  std::vector<PixelBox> boxes;  ///< every pixel that changed (became or stopped being an obstacle)
+  bool all = false;             ///< something changed everywhere (clearScr, scrolling; rInvisible for obstacles)
 
   void add(int x, int y) { boxFor(x, y).add(x, y); }
   /// Pixels x1..x2 of row y: one box takes them all.
@@ -206,8 +208,8 @@ class Canvas {
   /// Changes whenever some pixel may have become, or stopped being, an obstacle.
   uint64_t obstacleVersion() const { return obstacleVersion_; }
   /// The obstacle changes since the last call, which forgets them.
-  ObstacleChanges takeObstacleChanges() {
-    ObstacleChanges c = obstacleChanges_;
+  ChangeBoxes takeObstacleChanges() {
+    ChangeBoxes c = obstacleChanges_;
     obstacleChanges_ = {};
     return c;
   }
@@ -218,11 +220,28 @@ class Canvas {
   void trackDamage(bool on) {
     damageOn_ = on;
     damage_ = {};
+    tracking_ = damageOn_ || changesOn_;
   }
   PixelBox takeDamage() {
     PixelBox d = damage_;
     damage_ = {};
     return d;
+  }
+  /// Where pixels changed, box by box, since trackChanges(true) (everything, at first) or the
+  /// last takeChanges(): a grader's colour watch (record/colour_watch.h) looks again only
+  /// there. Not kept unless asked for.
+  void trackChanges(bool on) {
+    changesOn_ = on;
+    changes_ = {};
+    changes_.all = on;
+    tracking_ = damageOn_ || changesOn_;
+  }
+  /// Moves the changes into `into` (its boxes' memory is reused) and forgets them.
+  void takeChanges(ChangeBoxes& into) {
+    into.boxes.swap(changes_.boxes);
+    changes_.boxes.clear();
+    into.all = changes_.all;
+    changes_.all = false;
   }
 
   /// The display list: what was drawn since the last clearScr, for the SVG writer. Kept only
@@ -252,7 +271,7 @@ class Canvas {
     }
     p = c;
     ++version_;
-    if (damageOn_) [[unlikely]] damage_.add(x, y);
+    if (tracking_) [[unlikely]] changed(y, x, x);
     if (liveTraces_ != 0) [[unlikely]] forgetTraces(y, x, x);
   }
   void brush(int x, int y, int width, Colour c);
@@ -329,16 +348,26 @@ class Canvas {
   Colour background_ = colours::kWhite;
   std::vector<Colour> invisible_;
   uint64_t obstacleVersion_ = 1;
-  ObstacleChanges obstacleChanges_{{}, true};  // at first, everything is new
+  ChangeBoxes obstacleChanges_{{}, true};  // at first, everything is new
   void obstaclesChangedEverywhere() {
     ++obstacleVersion_;
     obstacleChanges_.all = true;
   }
   uint64_t version_ = 1;
+  bool tracking_ = false;  ///< damageOn_ or changesOn_
   bool damageOn_ = false;
   PixelBox damage_;
+  bool changesOn_ = false;
+  ChangeBoxes changes_;
+  /// Pixels x1..x2 of row y changed: the damage and the change boxes, when kept.
+  void changed(int y, int x1, int x2) {
+    if (damageOn_) damage_.add(x1, y), damage_.add(x2, y);
+    if (changesOn_) changes_.addRow(y, x1, x2);
+  }
+  /// Every pixel may have changed.
   void damageAll() {
     if (damageOn_) damage_.add(0, 0), damage_.add(kWidth - 1, kHeight - 1);
+    if (changesOn_) changes_.all = true;
   }
   Point cursor_;  ///< text cursor in pixels (top-left of the next character)
   bool keepOps_ = false;

@@ -496,7 +496,7 @@ TEST_CASE("canvas: a filled row reports every pixel that became or stopped being
       for (int x = 0; x < Canvas::kWidth; ++x) before[static_cast<size_t>(x)] = canvas.isObstacle(x, y);
       (void)canvas.takeObstacleChanges();
       canvas.rectangle({x1, y}, {x2, y}, 1, c, c);
-      ObstacleChanges changes = canvas.takeObstacleChanges();
+      ChangeBoxes changes = canvas.takeObstacleChanges();
       for (int x = 0; x < Canvas::kWidth; ++x) {
         INFO("round " << round << ", pixel " << x << "," << y);
         if (x >= x1 && x <= x2) REQUIRE(canvas.at(x, y) == c);
@@ -508,4 +508,76 @@ TEST_CASE("canvas: a filled row reports every pixel that became or stopped being
       }
     }
   }
+}
+
+TEST_CASE("canvas: the change boxes hold every pixel that changed, whatever drew it", "[canvas]") {
+  // Random drawing of every kind, the screen compared before and after each command: every pixel
+  // that differs lies in a box takeChanges() reports (or it reports a change everywhere).
+  const Colour palette[] = {colours::kWhite, colours::kBlack, colours::kRed, colours::kGreen, rgbColour(1, 2, 3)};
+  Canvas canvas;
+  ChangeBoxes changes;
+  canvas.takeChanges(changes);
+  CHECK((changes.boxes.empty() && !changes.all));  // not kept unless asked for
+  canvas.trackChanges(true);
+  canvas.takeChanges(changes);
+  CHECK(changes.all);  // at first, everything is new
+  uint32_t seed = 11;
+  auto next = [&](int n) {
+    seed = seed * 1103515245u + 12345u;
+    return static_cast<int>((seed >> 8) % static_cast<uint32_t>(n));
+  };
+  int reported = 0, everywhere = 0;
+  for (int round = 0; round < 300; ++round) {
+    const Pixels before = canvas.pixels();
+    const Colour c = palette[next(5)];
+    const Point a{next(900) - 50, next(700) - 50}, b{a.x + next(200) - 100, a.y + next(200) - 100};
+    const int what = next(12);
+    switch (what) {
+      case 0: canvas.setPixel(a.x, a.y, c); break;
+      case 1: canvas.line(a, b, 1 + next(5), c); break;
+      case 2: canvas.rectangle(a, b, 1 + next(3), c, next(2) ? std::optional<Colour>(c) : std::nullopt); break;
+      case 3: canvas.ellipse(a, b, 1 + next(3), c, next(2) ? std::optional<Colour>(palette[next(5)]) : std::nullopt); break;
+      case 4: canvas.polygon({a, b, {a.x, b.y}}, 1 + next(3), c, std::nullopt); break;
+      case 5: canvas.text(a.x, a.y, "Ag " + std::to_string(round), TextStyle{}, c); break;
+      case 6: canvas.floodFill(a.x, a.y, c); break;
+      case 7: canvas.print("line " + std::to_string(round), next(2) != 0); break;
+      case 8:
+        if (!canvas.trailOpen()) canvas.trailStart(a.x, a.y, 1 + next(3), c);
+        canvas.trailTo(b.x, b.y);
+        break;
+      case 9:
+        if (next(8) == 0) canvas.clear(c);
+        else canvas.save();
+        break;
+      case 10:
+        if (next(4) == 0) canvas.restore();
+        break;
+      default: canvas.trailEnd(); break;
+    }
+    canvas.takeChanges(changes);
+    everywhere += changes.all;
+    if (changes.all) continue;
+    const Pixels& after = canvas.pixels();
+    std::string missed;  // the first changed pixel no box holds
+    for (int y = 0; y < Canvas::kHeight && missed.empty(); ++y)
+      for (int x = 0; x < Canvas::kWidth; ++x) {
+        const size_t i = static_cast<size_t>(y) * Canvas::kWidth + static_cast<size_t>(x);
+        if (before[i] == after[i]) continue;
+        ++reported;
+        if (std::none_of(changes.boxes.begin(), changes.boxes.end(), [&](const PixelBox& box) {
+              return x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1;
+            })) {
+          missed = std::to_string(x) + "," + std::to_string(y);
+          break;
+        }
+      }
+    INFO("round " << round << ", command " << what);
+    REQUIRE(missed == "");
+  }
+  CHECK(reported > 10000);
+  CHECK(everywhere < 45);  // boxes, mostly: only clearScr and scrolling change everything
+  canvas.trackChanges(false);
+  canvas.setPixel(1, 1, canvas.at(1, 1) == colours::kRed ? colours::kBlue : colours::kRed);
+  canvas.takeChanges(changes);
+  CHECK((changes.boxes.empty() && !changes.all));
 }

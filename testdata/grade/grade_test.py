@@ -245,6 +245,34 @@ def case_deterministic(env):
     expect(strip_times(one) == strip_times(two), "-j 1 and -j 2 grade differently")
 
 
+def case_colour_steps(env):
+    # A program that never ends, graded against a colour check: the step limit stops it, not the
+    # time limit, so it is graded the same each time. Looking at every pixel of the disc (radius
+    # 50: 7,854 of them) at 11 points of each move, as rb did before, would have taken some 25 s
+    # of processor time for these 200,000 steps (the time limit stopped it after about 50,000);
+    # following the colour along the path takes a fraction of a second.
+    env.write("circling.bas", "// Drives in circles for ever, far from the black square it must avoid.\n"
+              "rectangle 20, 20, 80, 80, black, black\nrLocate 400, 300, 0, 50\n"
+              "while 1\n  rForward 10\n  rTurn 7\nwend\n")
+    a = env.write("colour.toml", '[run]\nmax-steps = 200000\ntimeout = 10\n'
+                  '[[check]]\nname = "square"\nkind = "avoid"\ncolour = "black"\n'
+                  '[[check]]\nname = "ends"\nkind = "no-error"\n')
+    runs = []
+    for _ in range(2):
+        r = env.rb_run("test", "--format", "json", "-a", a, env.path("circling.bas"))
+        try:
+            p = json.loads(r.stdout)["programs"][0]
+        except (json.JSONDecodeError, IndexError, KeyError):
+            raise Failure(f"rb test printed no JSON (exit {r.returncode})", r.stdout, r.stderr)
+        checks = {c["name"]: c for c in p["checks"]}
+        expect(checks["square"]["passed"], "the robot keeps out of the black square", checks["square"])
+        expect(p["steps"] == 200000 and "the step limit (max-steps = 200000 in colour.toml)" in p["reason"],
+               "stopped by the step limit", p)
+        p.pop("seconds")
+        runs.append(p)
+    expect(runs[0] == runs[1], "graded alike twice", *runs)
+
+
 def case_comments(env):
     # Without an assignment, each program's own // expect comments decide: correct.bas has one.
     r = env.rb_run("test", os.path.join(CLASS, "correct.bas"))
