@@ -2,6 +2,7 @@
 # Installs rb's dependencies from Debian packages. Idempotent: packages already present are left
 # alone. Run as root or with sudo available.
 #   scripts/setup.sh           what building and running rb needs (the demo calls this)
+#   scripts/setup.sh --test-build  also what building the tests needs (Catch2)
 #   scripts/setup.sh --test    also the test tools (scripts/test.sh and .ci/run call this), and
 #                              the npm packages testdata/action/classroom-reporter needs (npm ci)
 #   scripts/setup.sh --bench   also the benchmark peers (bench/*.sh call this)
@@ -20,8 +21,12 @@ packages=(
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
   dpkg-dev file         # cpack's Debian package (scripts/package.sh): dpkg-shlibdeps finds what rb links
 )
-test_packages=(
+# What building the tests needs (scripts/test.sh installs it first, then builds while the rest
+# of the test tools install).
+test_build_packages=(
   catch2                # unit tests
+)
+test_packages=(
   libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
   cmark-gfm             # GitHub's Markdown renderer: the action's job summary rendered as GitHub does (testdata/action)
   clang libclang-rt-14-dev   # libFuzzer target and sanitizer runtime
@@ -42,9 +47,10 @@ bench_packages=(
 with_tools=0
 for arg in "$@"; do
   case "$arg" in
-    --test) packages+=("${test_packages[@]}"); with_tools=1 ;;
-    --bench) packages+=("${test_packages[@]}" "${bench_packages[@]}"); with_tools=1 ;;
-    *) echo "usage: scripts/setup.sh [--test] [--bench]" >&2; exit 64 ;;
+    --test-build) packages+=("${test_build_packages[@]}") ;;
+    --test) packages+=("${test_build_packages[@]}" "${test_packages[@]}"); with_tools=1 ;;
+    --bench) packages+=("${test_build_packages[@]}" "${test_packages[@]}" "${bench_packages[@]}"); with_tools=1 ;;
+    *) echo "usage: scripts/setup.sh [--test-build] [--test] [--bench]" >&2; exit 64 ;;
   esac
 done
 
