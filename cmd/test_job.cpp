@@ -13,7 +13,6 @@
 #include "colour_watch.h"
 #include "run_command.h"
 #include "exit_codes.h"
-#include "files.h"
 #include "headless_run.h"
 #include "lang/checker.h"
 #include "png_writer.h"
@@ -84,26 +83,12 @@ class HandedFile {
   std::string path_;
 };
 
-/// The kernel's rules for the job (kernel_confine.h): in its scratch folder, that folder alone
-/// to change and the library folders to read; in place, what rb run allows. Never root's
-/// capabilities.
+/// The kernel's rules for the job (kernel_confine.h): rb run's, but in its scratch folder that
+/// folder alone to change; never root's capabilities.
 KernelRules jobRules(const JobOptions& opts) {
-  namespace fs = std::filesystem;
-  KernelRules rules;
+  KernelRules rules = runKernelRules(opts.run);
   std::error_code ec;
-  if (opts.box.empty()) {
-    rules = runKernelRules(opts.run);
-  } else {
-    rules.writeDirs = {fs::absolute(opts.box, ec).string()};
-    rules.readPaths = libraryDirs();
-    if (!opts.run.eventsFile.empty()) rules.readPaths.push_back(fs::absolute(opts.run.eventsFile, ec).string());
-    if (!opts.run.noPorts) {
-      rules.devices = serialDevicePaths();
-      if (!opts.run.port.empty()) rules.devices.push_back(opts.run.port);
-    }
-    rules.allowSpawn = opts.run.allowSpawn;
-    rules.dataBytes = dataLimitBytes(opts.run.maxMemoryMiB);
-  }
+  if (!opts.box.empty()) rules.writeDirs = {std::filesystem::absolute(opts.box, ec).string()};
   rules.dropCapabilities = true;
   return rules;
 }
