@@ -9,6 +9,7 @@
 #include "machine/builtins.h"
 #include "lang/checker.h"
 #include "lang/code_dump.h"
+#include "lang/portable_check.h"
 #include "diagnostic_output.h"
 #include "exit_codes.h"
 #include "files.h"
@@ -28,6 +29,7 @@ struct CheckOptions {
   bool listRules = false;
   bool dumpCode = false;  ///< also print each program's compiled code
   std::string target;  ///< "rb9": also warn about what the RB-9 robot cannot do
+  bool portable = false;  ///< also warn about what no public RobotBASIC source shows
 };
 
 const char* kindName(BuiltinKind k) {
@@ -45,7 +47,8 @@ void listBuiltins(bool json) {
     std::string usage = b.usage();
     if (json) {
       rows.push_back({{"name", b.name}, {"kind", kindName(b.kind)}, {"group", b.group},
-                      {"usage", usage}, {"help", b.help}});
+                      {"usage", usage}, {"help", b.help}, {"source", b.evidence.source},
+                      {"own", b.evidence.reason}, {"instead", b.evidence.instead}});
     } else if (b.kind == BuiltinKind::Constant) {
       std::printf("%-9s %-9s %-40s = %lld\n", std::string(b.group).c_str(), kindName(b.kind),
                   usage.c_str(), static_cast<long long>(b.constant));
@@ -109,10 +112,9 @@ int executeCheck(const CheckOptions& opts) {
     LintOptions lint;
     lint.realRobot = opts.target == "rb9";  // a real robot needs no rLocate
     LoadedFile loaded = loadFile(file, compile, true, true, {}, lint);
-    if (opts.target == "rb9" && loaded.program) {
-      checkRb9Target(*loaded.program, loaded.diags);
-      loaded.diags.sort();
-    }
+    if (opts.target == "rb9" && loaded.program) checkRb9Target(*loaded.program, loaded.diags);
+    if (opts.portable && loaded.program) checkPortable(*loaded.program, loaded.diags);
+    if ((opts.target == "rb9" || opts.portable) && loaded.program) loaded.diags.sort();
     if (loaded.exitCode == exitcode::kNoInput) {
       ++unreadable;
       report.addUnreadable(file, loaded.readError);
@@ -153,6 +155,10 @@ void addCheckCommand(CLI::App& app, int& exitCode, bool withOptions) {
                     "Also warn about what this robot cannot do: rb9 (forward moves above 250, "
                     "rLook, rGPSX/rGPSY, rChargeLevel)")
       ->check(CLI::IsMember({"rb9"}));
+  check->add_flag("--portable", opts->portable,
+                  "Also warn wherever the program uses what no public RobotBASIC source shows: "
+                  "rb's own built-ins (trimL, contains, ...) and statement forms (else if, end if, "
+                  "step, ' comments, ...), with what RobotBASIC is known to have instead");
   check->add_flag("--list-builtins", opts->listBuiltins,
                   "List every built-in command, function and constant, then exit");
   check->add_flag("--list-rules", opts->listRules,

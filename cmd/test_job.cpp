@@ -15,6 +15,7 @@
 #include "exit_codes.h"
 #include "headless_run.h"
 #include "lang/checker.h"
+#include "lang/portable_check.h"
 #include "png_writer.h"
 #include "record.h"
 #include "robot_view.h"
@@ -29,6 +30,7 @@ struct JobOptions {
   std::string record;       ///< where the JSON record goes
   std::string screen;       ///< where the final screen goes ("": not wanted)
   std::string checkTarget;  ///< "rb9": also rb check --target rb9's warnings
+  bool checkPortable = false;  ///< also rb check --portable's warnings
   std::string world;        ///< a program run before the student's, on the same screen
   std::vector<std::string> posts;      ///< programs run after it, on the final state
   std::vector<std::string> watch;      ///< colours (RRGGBB hex) the robot must avoid or touch
@@ -103,7 +105,8 @@ grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
   return r;
 }
 
-/// rb check's view of the program, as `rb check [--target rb9] FILE` reports it; `placed`:
+/// rb check's view of the program, as `rb check [--target rb9] [--portable] FILE` reports it
+/// (the warnings of those options as the record's target warnings); `placed`:
 /// as it runs, after a world program that placed the robot.
 void recordCheck(const JobOptions& opts, grade::RunRecord& rec, bool placed = false) {
   LintOptions lint;
@@ -118,9 +121,10 @@ void recordCheck(const JobOptions& opts, grade::RunRecord& rec, bool placed = fa
   }
   const SourceSet* sources = &checked.program->sources;
   for (const Diagnostic& d : checked.diags.all()) rec.checkDiags.push_back(diagRecord(sources, d));
-  if (opts.checkTarget == "rb9") {
+  if (opts.checkTarget == "rb9" || opts.checkPortable) {
     DiagnosticList extra;
-    checkRb9Target(*checked.program, extra);
+    if (opts.checkTarget == "rb9") checkRb9Target(*checked.program, extra);
+    if (opts.checkPortable) checkPortable(*checked.program, extra);
     extra.sort();
     for (const Diagnostic& d : extra.all()) rec.targetDiags.push_back(diagRecord(sources, d));
   }
@@ -450,6 +454,7 @@ void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
   job->add_option("--screen", opts->screen, "Where to write the final screen (binary PPM)");
   job->add_option("--check-target", opts->checkTarget, "Also record rb check --target's warnings")
       ->check(CLI::IsMember({"rb9"}));
+  job->add_flag("--check-portable", opts->checkPortable, "Also record rb check --portable's warnings");
   job->add_option("--world", opts->world, "A program run first, on the same screen");
   job->add_option("--post", opts->posts, "A program run after, on the final state; repeatable");
   job->add_option("--watch-colour", opts->watch, "A colour (RRGGBB) to record touches of; repeatable");

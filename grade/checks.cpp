@@ -85,9 +85,11 @@ std::set<Expected> utf8(const std::set<Expected>& set) {
 
 std::string expectedText(const Expected& e) { return e.file + ":" + std::to_string(e.line) + ": " + e.message; }
 
+/// The comments ask for rb check's extra warnings (--target rb9, --portable): the record's
+/// target warnings count.
 bool checkArgsTarget(const CommentSpec& spec) {
   for (size_t i = 0; i < spec.checkArgs.size(); ++i) {
-    if (spec.checkArgs[i] == "--target=rb9") return true;
+    if (spec.checkArgs[i] == "--target=rb9" || spec.checkArgs[i] == "--portable") return true;
     if (spec.checkArgs[i] == "--target" && i + 1 < spec.checkArgs.size() && spec.checkArgs[i + 1] == "rb9")
       return true;
   }

@@ -520,6 +520,8 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
       if (spec->checkArgs[i] == "--target=rb9" ||
           (spec->checkArgs[i] == "--target" && i + 1 < spec->checkArgs.size() && spec->checkArgs[i + 1] == "rb9"))
         job.argv.insert(job.argv.end(), {"--check-target", "rb9"});
+    for (const std::string& a : spec->checkArgs)
+      if (a == "--portable") job.argv.push_back("--check-portable");
     std::vector<std::string> args = commentArgs(*spec, file).args;
     // The events file a comment names lies in the program's folder: it goes along.
     if (!inPlace)

@@ -6,6 +6,7 @@
 #include "lang/checker.h"
 #include "lang/compiler.h"
 #include "lang/lexer.h"
+#include "lang/portable_check.h"
 
 namespace rb::lsp {
 
@@ -92,10 +93,14 @@ std::string Symbol::signature() const {
 
 std::unique_ptr<Analysis> analyze(const std::string& name, const std::string& text,
                                   SourceReader& reader, const BuiltinTable& builtins,
-                                  const LoadOptions& options) {
+                                  const LoadOptions& options, bool portable) {
   auto a = std::make_unique<Analysis>();
   a->program = loadProgram(name, text, reader, builtins, options, a->diags);
   compileChecked(*a->program, CompileOptions{}, true, a->diags);  // as rb check does
+  if (portable) {  // as rb check --portable does
+    checkPortable(*a->program, a->diags);
+    a->diags.sort();
+  }
 
   const LoadedProgram& p = *a->program;
   for (size_t k = 1; k < p.sources.size(); ++k) {

@@ -52,9 +52,10 @@ struct Analysis {
 };
 
 /// Checks the document `name` with `text` against `builtins`; includes are found through
-/// `reader` (which serves open documents before the disk).
+/// `reader` (which serves open documents before the disk). `portable`: also the warnings of
+/// `rb check --portable`.
 std::unique_ptr<Analysis> analyze(const std::string& name, const std::string& text,
                                   SourceReader& reader, const BuiltinTable& builtins,
-                                  const LoadOptions& options);
+                                  const LoadOptions& options, bool portable = false);
 
 }  // namespace rb::lsp

@@ -360,6 +360,9 @@ void Server::dispatch(const json& msg) {
     else if (method == "textDocument/didClose") didClose(params);
     else if (method == "textDocument/didSave") {
       if (Document* doc = document(params)) fileChanged(doc->path);
+    } else if (method == "workspace/didChangeConfiguration") {
+      if (configure(params.value("settings", json::object())))
+        for (auto& [uri, doc] : docs_) check(doc);
     } else if (method == "workspace/didChangeWatchedFiles") {
       for (const json& change : params.at("changes")) fileChanged(uriToPath(change.at("uri").get<std::string>()));
     }
@@ -394,6 +397,7 @@ json Server::initialize(const json& params) {
     for (const json& e : caps["general"]["positionEncodings"])
       if (e == "utf-8") encoding_ = Encoding::Utf8;
   }
+  configure(params.value("initializationOptions", json::object()));
   if (caps.contains("textDocument") && caps["textDocument"].contains("documentSymbol"))
     hierarchicalSymbols_ =
         caps["textDocument"]["documentSymbol"].value("hierarchicalDocumentSymbolSupport", false);
@@ -409,6 +413,17 @@ json Server::initialize(const json& params) {
   };
   initialized_ = true;  // only once the parameters were understood: a client may try again
   return {{"capabilities", capabilities}, {"serverInfo", {{"name", "rb"}, {"version", options_.version}}}};
+}
+
+bool Server::configure(const json& settings) {
+  // {"rb": {"portable": true}} as VS Code sends its section, or {"portable": true}.
+  const json* rb = &settings;
+  if (settings.is_object() && settings.contains("rb") && settings["rb"].is_object()) rb = &settings["rb"];
+  if (!rb->is_object() || !rb->contains("portable") || !(*rb)["portable"].is_boolean()) return false;
+  bool portable = (*rb)["portable"].get<bool>();
+  if (portable == portable_) return false;
+  portable_ = portable;
+  return true;
 }
 
 // ---- documents
@@ -470,7 +485,7 @@ void Server::fileChanged(const std::string& path) {
 }
 
 void Server::check(Document& doc) {
-  doc.analysis = analyze(doc.path, doc.text, *reader_, builtins_, options_.load);
+  doc.analysis = analyze(doc.path, doc.text, *reader_, builtins_, options_.load, portable_);
   publish(doc);
 }
 

@@ -65,6 +65,9 @@ class Server {
   void notify(const std::string& method, nlohmann::json params);
 
   nlohmann::json initialize(const nlohmann::json& params);
+  /// Takes the settings rb knows from initializationOptions or workspace/didChangeConfiguration
+  /// (`rb.portable`: also rb check --portable's warnings); true when they changed.
+  bool configure(const nlohmann::json& settings);
   void didOpen(const nlohmann::json& params);
   void didChange(const nlohmann::json& params);
   void didClose(const nlohmann::json& params);
@@ -93,6 +96,7 @@ class Server {
   std::map<std::string, Document> docs_;  ///< by URI
   Encoding encoding_ = Encoding::Utf16;
   bool hierarchicalSymbols_ = false;
+  bool portable_ = false;  ///< rb.portable: documents are also checked as rb check --portable does
   bool initialized_ = false;
   bool shutdown_ = false;
   bool exited_ = false;

@@ -507,3 +507,38 @@ TEST_CASE("lsp: mutated sessions never crash or hang the server (fuzz-ish)", "[l
     CHECK((code == 0 || code == 1));
   }
 }
+
+TEST_CASE("lsp: rb.portable adds rb check --portable's warnings, from initializationOptions or settings", "[lsp]") {
+  const std::string program = "x = trimL(\" a\")\nprint x\n";
+  auto portable = [](const json& diags) {
+    int n = 0;
+    for (const json& d : diags)
+      if (d.value("code", "") == "rb-not-portable") {
+        CHECK(d["message"].get<std::string>().find("'trimL' is rb's own") == 0);
+        ++n;
+      }
+    return n;
+  };
+  {
+    Session s;
+    s.initialize();
+    CHECK(portable(s.open(kUri, program)) == 0);  // off unless asked for
+    // Turned on by the settings (as VS Code sends its "rb" section): the open document again.
+    json again;
+    for (json& m : s.notify("workspace/didChangeConfiguration", {{"settings", {{"rb", {{"portable", true}}}}}}))
+      if (m["method"] == "textDocument/publishDiagnostics") again = m["params"]["diagnostics"];
+    CHECK(portable(again) == 1);
+    // Settings that say nothing about it change nothing, and publish nothing.
+    CHECK(s.notify("workspace/didChangeConfiguration", {{"settings", nullptr}}).empty());
+  }
+  {
+    Session s;
+    s.request("initialize", {{"capabilities", json::object()}, {"initializationOptions", {{"portable", true}}}});
+    s.notify("initialized", json::object());
+    json diags = s.open(kUri, "y = rtod(1)\nprint y\n");
+    REQUIRE(diags.size() == 1);
+    CHECK(diags[0]["code"] == "rb-not-portable");
+    CHECK(diags[0]["message"] == "'rtod' is rb's own: no public RobotBASIC source names it\n"
+                                 "note: what RobotBASIC is known to have instead: x * 180 / pi()");
+  }
+}

@@ -38,7 +38,7 @@ struct RunRecord {
   // exit status rb check would give (0, 65 errors, 66 no such file).
   int checkExit = 0;
   std::vector<DiagRecord> checkDiags;
-  std::vector<DiagRecord> targetDiags;  ///< the extra warnings of --target rb9, when asked for
+  std::vector<DiagRecord> targetDiags;  ///< the extra warnings of --target rb9 and --portable, when asked for
 
   // The run, as `rb run` with the same options would do it.
   int exitCode = 0;                  ///< rb run's exit status

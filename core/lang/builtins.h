@@ -45,6 +45,22 @@ constexpr uint8_t kPlacesRobot = 4;
 constexpr uint8_t kRealRobot = 8;
 }  // namespace trait
 
+/// Where a built-in comes from: the public RobotBASIC source that names it, or, for a name no
+/// source shows, why rb has it and what RobotBASIC is known to have instead. The standard
+/// table's evidence is one table keyed by name (machine/builtins_evidence.cpp); docs/builtins.md
+/// shows it, docs/compatibility.md counts it and `rb check --portable` warns from it.
+struct Evidence {
+  /// The sources that name it, in the style docs/compatibility.md cites them ("seed, Figure
+  /// 1.5; course cheat sheet"); empty: rb's own.
+  std::string_view source;
+  /// rb's own: why rb has it.
+  std::string_view reason;
+  /// rb's own: what RobotBASIC is known to have instead ("x * 180 / pi()"); empty when nothing.
+  std::string_view instead;
+
+  bool confirmed() const { return !source.empty(); }
+};
+
 /// One row of a built-in table.
 struct Builtin {
   Builtin(std::string_view name_, BuiltinKind kind_, std::string_view group_,
@@ -64,6 +80,7 @@ struct Builtin {
   int64_t constant;            ///< constants
   std::string_view help;       ///< one line
   uint8_t traits = 0;          ///< trait:: flags
+  Evidence evidence;           ///< set by the table's owner (the standard table: its evidence table)
 
   // Derived from the signature when the table is built:
   int minArgs = 0;

@@ -122,6 +122,7 @@ std::vector<Builtin> makeTable() {
     if (b.kind == K::Function && family && b.name != "random" && b.name != "rRandom")
       b.traits |= trait::kPure;
   }
+  applyEvidence(t);
   return t;
 }
 

@@ -79,6 +79,11 @@ void appendGraphicsBuiltins(std::vector<Builtin>& table);
 void appendInputBuiltins(std::vector<Builtin>& table);
 void appendSystemBuiltins(std::vector<Builtin>& table);
 
+/// Gives every row of the standard table its evidence (builtins_evidence.cpp): the public
+/// source that names it, or why it is rb's own. A built-in without an evidence row, or an
+/// evidence row that names no built-in, is a programming error: std::logic_error.
+void applyEvidence(std::vector<Builtin>& table);
+
 /// The longest string a built-in makes.
 constexpr int64_t kMaxString = 64 << 20;
 

@@ -6,6 +6,7 @@
 #include "base/runtime_error.h"
 #include "lang/suggest.h"
 #include "machine/builtins.h"
+#include "machine/builtins_impl.h"
 #include "machine/machine.h"
 #include "machine/test_support.h"
 
@@ -52,6 +53,38 @@ TEST_CASE("every built-in has a unique name per kind, a group and help", "[built
     CHECK_FALSE(b.group.empty());
     if (b.kind != BuiltinKind::Constant) CHECK(b.fn != nullptr);
   }
+}
+
+TEST_CASE("every built-in has its evidence: a source that names it, or why it is rb's own", "[builtins]") {
+  size_t confirmed = 0, own = 0;
+  for (const Builtin& b : standardBuiltins().rows()) {
+    INFO(b.name);
+    CHECK(b.evidence.confirmed() != !b.evidence.reason.empty());
+    if (b.evidence.confirmed()) CHECK(b.evidence.instead.empty());
+    (b.evidence.confirmed() ? confirmed : own)++;
+  }
+  // The seed's own names are confirmed; names no source shows are rb's own.
+  CHECK(standardBuiltins().find("rSlip", BuiltinKind::Command)->evidence.source == "seed, Figure 1.10");
+  const Builtin* trimL = standardBuiltins().find("trimL", BuiltinKind::Function);
+  CHECK_FALSE(trimL->evidence.confirmed());
+  CHECK(standardBuiltins().find("rtod", BuiltinKind::Function)->evidence.instead == "x * 180 / pi()");
+  CHECK(confirmed > 50);
+  CHECK(own > 100);
+}
+
+TEST_CASE("the evidence table and the built-in table name the same built-ins", "[builtins]") {
+  std::vector<Builtin> rows(standardBuiltins().rows().begin(), standardBuiltins().rows().end());
+  CHECK_NOTHROW(builtins::applyEvidence(rows));
+  // A built-in added without its evidence row is refused...
+  std::vector<Builtin> more = rows;
+  more.emplace_back("noSuchThing", BuiltinKind::Function, "math", "x", nullptr, 0, "help");
+  CHECK_THROWS_WITH(builtins::applyEvidence(more),
+                    Catch::Contains("'noSuchThing' has no evidence row"));
+  // ...and so is a row left behind when its built-in goes.
+  std::vector<Builtin> fewer;
+  for (const Builtin& b : rows)
+    if (b.name != "trimL") fewer.push_back(b);
+  CHECK_THROWS_WITH(builtins::applyEvidence(fewer), Catch::Contains("the row 'trimL' names no built-in"));
 }
 
 TEST_CASE("edit distance and suggestions", "[suggest]") {

@@ -15,7 +15,13 @@ function startClient() {
       { scheme: 'file', language: 'robotbasic' },
       { scheme: 'untitled', language: 'robotbasic' },
     ],
-    synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher('**/*.bas') },
+    // rb.portable: rb check --portable's warnings too; a change of the "rb" settings is sent
+    // to the server (workspace/didChangeConfiguration), which checks the open programs again.
+    initializationOptions: { portable: config.get('portable', false) },
+    synchronize: {
+      configurationSection: 'rb',
+      fileEvents: vscode.workspace.createFileSystemWatcher('**/*.bas'),
+    },
   };
   client = new LanguageClient('rb', 'rb', serverOptions, clientOptions);
   return client.start();
