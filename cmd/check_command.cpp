@@ -48,7 +48,8 @@ void listBuiltins(bool json) {
     if (json) {
       rows.push_back({{"name", b.name}, {"kind", kindName(b.kind)}, {"group", b.group},
                       {"usage", usage}, {"help", b.help}, {"source", b.evidence.source},
-                      {"own", b.evidence.reason}, {"instead", b.evidence.instead}});
+                      {"recalled", b.evidence.recalled}, {"own", b.evidence.own() ? b.evidence.reason : ""},
+                      {"why", b.evidence.reason}, {"instead", b.evidence.instead}});
     } else if (b.kind == BuiltinKind::Constant) {
       std::printf("%-9s %-9s %-40s = %lld\n", std::string(b.group).c_str(), kindName(b.kind),
                   usage.c_str(), static_cast<long long>(b.constant));

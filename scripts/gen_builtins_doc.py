@@ -48,6 +48,11 @@ def cell(text):
 def evidence(b):
     if b["source"]:
         return cell(b["source"])
+    if b["recalled"]:
+        text = "**recalled**: " + b["recalled"] + "; rb has it for " + b["why"]
+        if b["instead"]:
+            text += "; the sources show instead: " + b["instead"]
+        return cell(text)
     text = "**rb's own**: " + b["own"]
     if b["instead"]:
         text += "; RobotBASIC has instead: " + b["instead"]
@@ -62,8 +67,10 @@ def render(table):
            "`name...` may repeat, and `&name` must be a variable that receives a result.", "",
            "The last column is the evidence: the public RobotBASIC source that names the built-in",
            "(the sources are listed in [compatibility.md](compatibility.md#where-the-names-come-from)),",
-           "or **rb's own** with why rb has it and, where there is one, what RobotBASIC is known to",
-           "have instead. `rb check --portable` warns at every use of a name that is rb's own.", ""]
+           "or **recalled** where no source that could be reached names it but the project's research",
+           "notes recall it from RobotBASIC's manual (with how sure they are), or **rb's own** with why",
+           "rb has it and, where there is one, what RobotBASIC is known to have instead.",
+           "`rb check --portable` warns at every use of a name that is rb's own, not at a recalled one.", ""]
     order = [g for g, _ in GROUPS] + sorted({b["group"] for b in table} - {g for g, _ in GROUPS})
     titles = dict(GROUPS)
     for group in order:
@@ -94,25 +101,30 @@ def names(table):
 def compat_section(table):
     rows = names(table)
     confirmed = [b for b in rows if b["source"]]
-    own = [b for b in rows if not b["source"]]
+    recalled = [b for b in rows if not b["source"] and b["recalled"]]
+    own = [b for b in rows if not b["source"] and not b["recalled"]]
     out = [BEGIN, "",
            f"rb has **{len(rows)}** built-in names ({len(table)} rows of its table: `MsgBox` is a "
            f"command and a function). **{len(confirmed)}** are named by a public RobotBASIC source; "
-           f"**{len(own)}** are **rb's own**: no source that could be reached names them. "
+           f"**{len(recalled)}** are **recalled**: no source that could be reached names them, but the "
+           "research notes recall them from RobotBASIC's manual; "
+           f"**{len(own)}** are **rb's own**: neither a source nor the notes name them. "
            "[builtins.md](builtins.md) gives each name its evidence.", "",
            "| source | names it shows |", "|---|---|"]
     for prefix, title in SOURCES:
         shown = [b for b in confirmed
                  if any(part.strip().startswith(prefix) for part in b["source"].split(";"))]
         out.append(f"| {title} | {len(shown)} |")
-    out += ["", "rb's own names (`rb check --portable` warns at each use):", ""]
-    by_group = {}
-    for b in own:
-        by_group.setdefault(b["group"], []).append(b)
     titles = dict(GROUPS)
-    for group, items in by_group.items():
-        listed = ", ".join(f"`{b['name']}`" for b in items)
-        out.append(f"- {titles.get(group, group.capitalize())}: {listed}")
+    for heading, items in (("Recalled names (`rb check --portable` stays quiet):", recalled),
+                           ("rb's own names (`rb check --portable` warns at each use):", own)):
+        out += ["", heading, ""]
+        by_group = {}
+        for b in items:
+            by_group.setdefault(b["group"], []).append(b)
+        for group, members in by_group.items():
+            listed = ", ".join(f"`{b['name']}`" for b in members)
+            out.append(f"- {titles.get(group, group.capitalize())}: {listed}")
     out += ["", END]
     return "\n".join(out)
 

@@ -57,8 +57,13 @@ struct Evidence {
   std::string_view reason;
   /// rb's own: what RobotBASIC is known to have instead ("x * 180 / pi()"); empty when nothing.
   std::string_view instead;
+  /// Not confirmed, but named by the project's research notes as recalled from RobotBASIC's
+  /// documentation (tag [R], "language.md 5.2 ([R] low)"); empty otherwise.
+  std::string_view recalled;
 
   bool confirmed() const { return !source.empty(); }
+  /// Neither named by a source nor recalled: rb's own (rb check --portable warns about it).
+  bool own() const { return source.empty() && recalled.empty(); }
 };
 
 /// One row of a built-in table.

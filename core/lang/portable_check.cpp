@@ -13,8 +13,11 @@ namespace {
 
 constexpr const char* kRule = "rb-not-portable";
 
-/// A form of rb's syntax that no public RobotBASIC source shows, and what the sources show
-/// instead (with where), or nullptr when they show nothing that does the same.
+/// A form of rb's syntax that no public RobotBASIC source shows and the research notes do not
+/// recall either, and what the sources show instead (with where), or nullptr when they show
+/// nothing that does the same. Forms the notes recall from RobotBASIC's documentation (tag [R]:
+/// `step`, `continue`, `'`, `rem` and `/* */` comments, language.md 1.2, 4.5, 4.8) are not
+/// warned about, as recalled names are not.
 struct Form {
   const char* what;
   const char* instead;
@@ -32,15 +35,10 @@ constexpr Form kLineElse{"'else' in a single-line if",
 constexpr Form kAfterLabel{"a statement on a label's line", "the label alone on its line (seed, Figure 1.9)"};
 constexpr Form kNextName{"a variable after next", "next alone (seed, Figure 1.6; course lab 2)"};
 constexpr Form kDimScalar{"dim of a name without brackets", "an assignment: name = 0"};
-constexpr Form kContinue{"'continue'", nullptr};
-constexpr Form kStep{"'step' in a for loop", nullptr};
 constexpr Form kMod{"the 'mod' operator", "% (C-style operators)"};
 constexpr Form kNoCall{"calling a sub without 'call'", "call Name(arguments) (SERVO, December 2013)"};
 constexpr Form kSubValue{"a sub's value in an expression", nullptr};
 constexpr Form kReturnValue{"'return' with a value", nullptr};
-constexpr Form kApostrophe{"a ' comment", "// comments (seed, Figure 1.10; course lab 2)"};
-constexpr Form kRem{"a rem comment", "// comments (seed, Figure 1.10; course lab 2)"};
-constexpr Form kBlockComment{"a /* */ comment", "// comments (seed, Figure 1.10; course lab 2)"};
 
 bool wordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
 
@@ -76,7 +74,6 @@ class Checker {
         label_ = {};
       }
     }
-    for (size_t f = 0; f < program_.sources.size(); ++f) comments(static_cast<uint32_t>(f));
   }
 
  private:
@@ -88,7 +85,7 @@ class Checker {
     warn(loc, join({f.what, " is rb's own: no public RobotBASIC source shows it"}), f.instead);
   }
   void name(SourceLoc loc, const Builtin* b) {
-    if (!b || b->evidence.confirmed()) return;
+    if (!b || !b->evidence.own()) return;
     std::string instead(b->evidence.instead);
     warn(loc, join({"'", b->name, "' is rb's own: no public RobotBASIC source names it"}),
          instead.empty() ? nullptr : instead.c_str());
@@ -148,15 +145,6 @@ class Checker {
       case K::Next:
         if (!s.name.empty()) form(s.nameLoc.valid() ? s.nameLoc : s.loc, kNextName);
         break;
-      case K::For:
-        if (s.exprs.size() > 2) {
-          auto [at, word] = wordAfter(s.exprs[1]->end);
-          form(word == "step" ? at : s.exprs[2]->loc, kStep);
-        }
-        break;
-      case K::Continue:
-        form(s.loc, kContinue);
-        break;
       case K::Call:
         if (wordAt(s.loc) != "call") form(s.loc, kNoCall);
         break;
@@ -195,52 +183,6 @@ class Checker {
         break;
     }
     for (const ast::Expr* a : e->args) expr(a);
-  }
-
-  /// The comments of one file that are not `//`: `'`, `rem` and `/* */`, found as the lexer
-  /// finds them (outside strings; `rem` as a word).
-  void comments(uint32_t file) {
-    const SourceFile& f = program_.sources.file(file);
-    bool block = false;
-    for (uint32_t n = 1; n <= f.lineCount(); ++n) {
-      std::string_view line = f.lineText(n);
-      size_t i = 0;
-      while (i < line.size()) {
-        if (block) {
-          size_t close = line.find("*/", i);
-          if (close == std::string_view::npos) break;
-          block = false;
-          i = close + 2;
-          continue;
-        }
-        char c = line[i];
-        SourceLoc at{file, n, static_cast<uint32_t>(i + 1)};
-        if (c == '"') {
-          size_t close = line.find('"', i + 1);
-          if (close == std::string_view::npos) break;
-          i = close + 1;
-        } else if (c == '/' && i + 1 < line.size() && line[i + 1] == '/') {
-          break;
-        } else if (c == '/' && i + 1 < line.size() && line[i + 1] == '*') {
-          form(at, kBlockComment);
-          block = true;
-          i += 2;
-        } else if (c == '\'') {
-          form(at, kApostrophe);
-          break;
-        } else if (wordChar(c)) {
-          size_t j = i;
-          while (j < line.size() && (wordChar(line[j]) || line[j] == '.')) ++j;
-          if (!std::isdigit(static_cast<unsigned char>(c)) && lower(line.substr(i, j - i)) == "rem") {
-            form(at, kRem);
-            break;
-          }
-          i = j;
-        } else {
-          ++i;
-        }
-      }
-    }
   }
 
   const LoadedProgram& program_;

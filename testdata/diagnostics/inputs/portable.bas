@@ -1,6 +1,6 @@
 // nontest: rb check --portable's warnings and their notes (portable.t)
-x = rtod(1)
-s = trimL(" a")
-if s = "a" then print x else print s
+x = kc_Enter + rtod(1)
+line 1, 2, 3, 4
+if x > 1 then print x else print 0
 for i = 1 to 3 step 2
 next
