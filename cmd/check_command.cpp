@@ -75,20 +75,20 @@ void listRules(bool json) {
 }
 
 int executeCheck(const CheckOptions& opts) {
-  DiagFormat format = parseDiagFormat(opts.format);
+  diagnostics::DiagFormat format = diagnostics::parseDiagFormat(opts.format);
   if (opts.listBuiltins) {
-    listBuiltins(format == DiagFormat::Json);
+    listBuiltins(format == diagnostics::DiagFormat::Json);
     return exitcode::kOk;
   }
   if (opts.listRules) {
-    listRules(format == DiagFormat::Json);
+    listRules(format == diagnostics::DiagFormat::Json);
     return exitcode::kOk;
   }
   if (opts.files.empty()) {
     std::fprintf(stderr, "rb check: no files given (see rb check --help)\n");
     return exitcode::kUsage;
   }
-  if (opts.dumpCode && format != DiagFormat::Text) {
+  if (opts.dumpCode && format != diagnostics::DiagFormat::Text) {
     std::fprintf(stderr, "rb check: --dump-code prints text; leave out --format %s\n", opts.format.c_str());
     return exitcode::kUsage;
   }
@@ -97,11 +97,11 @@ int executeCheck(const CheckOptions& opts) {
     std::fprintf(stderr, "rb check: error: no .bas files in %s\n", opts.files.front().c_str());
     return exitcode::kNoInput;
   }
-  DiagOutputOptions out;
+  diagnostics::DiagOutputOptions out;
   out.format = format;
-  out.color = format == DiagFormat::Text && useColor(opts.color, stdout);
+  out.color = format == diagnostics::DiagFormat::Text && diagnostics::useColor(opts.color, stdout);
   out.maxErrors = opts.maxErrors;
-  DiagnosticReport report(stdout, out);
+  diagnostics::DiagnosticReport report(stdout, out);
   size_t unreadable = 0;
   for (const std::string& file : files) {
     CompileOptions compile;

@@ -88,9 +88,9 @@ void printLoadErrors(const RunOptions& opts, const LoadedFile& loaded) {
                  loaded.readError.c_str());
     return;
   }
-  DiagOutputOptions out;
-  out.color = useColor(opts.color, stderr);
-  DiagnosticReport report(stderr, out);
+  diagnostics::DiagOutputOptions out;
+  out.color = diagnostics::useColor(opts.color, stderr);
+  diagnostics::DiagnosticReport report(stderr, out);
   report.add(loaded.program->sources, loaded.diags, true);
   report.finish();
 }
@@ -155,7 +155,7 @@ int runTui(const RunOptions& opts) {
     }
     if (loaded.compiled && !opts.quiet)
       printWarningLines(kCommand, opts.file, loaded.program->sources, loaded.diags,
-                        useColor(opts.color, stderr));
+                        diagnostics::useColor(opts.color, stderr));
   } else if (int code = loadForRun(kCommand, opts, compile, loaded)) {
     return code;
   }
