@@ -80,7 +80,7 @@ std::vector<std::string> includedFiles(const std::string& file) {
 /// "rb test: MESSAGE" on standard error. A message may quote a student's file name: it is shown
 /// as the reports show untrusted text (text.h), on one line, whole even with a NUL in it.
 void say(const std::string& message) {
-  std::string text = "rb test: " + grade::shownText(message, grade::TextShape::Line) + "\n";
+  std::string text = "rb test: " + record::shownText(message, record::TextShape::Line) + "\n";
   std::fwrite(text.data(), 1, text.size(), stderr);
 }
 

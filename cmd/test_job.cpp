@@ -93,8 +93,8 @@ KernelRules jobRules(const JobOptions& opts) {
   return rules;
 }
 
-grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
-  grade::DiagRecord r;
+record::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
+  record::DiagRecord r;
   if (sources && d.loc.valid() && d.loc.file < sources->size()) r.file = sources->file(d.loc.file).name();
   r.line = d.loc.line;
   r.col = d.loc.col;
@@ -105,7 +105,7 @@ grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
 
 /// rb check's view of the program, as `rb check [--target rb9] FILE` reports it; `placed`:
 /// as it runs, after a world program that placed the robot.
-void recordCheck(const JobOptions& opts, grade::RunRecord& rec, bool placed = false) {
+void recordCheck(const JobOptions& opts, record::RunRecord& rec, bool placed = false) {
   LintOptions lint;
   lint.realRobot = opts.checkTarget == "rb9";  // a real robot needs no rLocate
   lint.robotPlaced = placed;
@@ -127,8 +127,8 @@ void recordCheck(const JobOptions& opts, grade::RunRecord& rec, bool placed = fa
   rec.checkExit = checked.diags.hasErrors() ? exitcode::kRejected : exitcode::kOk;
 }
 
-bool writeRecord(HandedFile& file, const grade::RunRecord& rec) {
-  std::string json = grade::recordToJson(rec), error;
+bool writeRecord(HandedFile& file, const record::RunRecord& rec) {
+  std::string json = record::recordToJson(rec), error;
   if (file.write(json, error)) return true;
   std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
   return false;
@@ -207,8 +207,8 @@ class JobObserver : public RobotObserver {
     if (watch) watch->startAt({e.pose.pos.x(), e.pose.pos.y()});
   }
 
-  grade::PathRecorder recorder;
-  std::optional<grade::ColourWatch> watch;
+  record::PathRecorder recorder;
+  std::optional<record::ColourWatch> watch;
 
  private:
   Machine& machine_;
@@ -228,7 +228,7 @@ TeacherProgram loadTeacherProgram(const std::string& file) {
   } else if (!p.loaded.compiled) {
     for (const Diagnostic& d : p.loaded.diags.all())
       if (d.severity == Severity::Error) {
-        grade::DiagRecord r = diagRecord(&p.loaded.program->sources, d);
+        record::DiagRecord r = diagRecord(&p.loaded.program->sources, d);
         p.problem = r.file + ":" + std::to_string(r.line) + ":" + std::to_string(r.col) + ": " + r.message;
         break;
       }
@@ -259,7 +259,7 @@ int executeJob(JobOptions opts) {
   for (const std::string& p : opts.posts) posts.push_back(loadTeacherProgram(p));
   HeadlessRun run;
   run.memory = std::make_shared<ResidentMemory>();
-  grade::RunRecord rec;
+  record::RunRecord rec;
   KernelStatus kernel = confineProcess(jobRules(opts));
   opts.run.confined = true;
   rec.confinement = kernel.problem;
@@ -307,7 +307,7 @@ int executeJob(JobOptions opts) {
         host.inputSource = nullptr;
         host.outputHook = std::move(saved);
         if (w.error) {
-          grade::DiagRecord d = diagRecord(&world->loaded.program->sources, *w.error);
+          record::DiagRecord d = diagRecord(&world->loaded.program->sources, *w.error);
           return rec.worldError = "the world program " + d.file + " stopped at line " +
                                   std::to_string(d.line) + ": " + d.message;
         }
@@ -339,17 +339,17 @@ int executeJob(JobOptions opts) {
       // What the student printed, as the post programs' input.
       host.copyHook = nullptr;
       std::vector<std::string> lines;
-      std::string printed = grade::printedOutput(output, rec.inputs);
+      std::string printed = record::printedOutput(output, rec.inputs);
       for (size_t at = 0; at < printed.size();) {
         size_t nl = std::min(printed.find('\n', at), printed.size());
         lines.push_back(printed.substr(at, nl - at));
         at = nl + 1;
       }
       for (size_t i = 0; i < posts.size(); ++i) {
-        grade::RunRecord::Post result;
+        record::RunRecord::Post result;
         result.file = opts.posts[i];
         if (!posts[i].problem.empty()) {
-          result.error = grade::DiagRecord{opts.posts[i], 0, 0, "error", posts[i].problem};
+          result.error = record::DiagRecord{opts.posts[i], 0, 0, "error", posts[i].problem};
           rec.posts.push_back(std::move(result));
           continue;
         }
@@ -382,8 +382,8 @@ int executeJob(JobOptions opts) {
       for (const Diagnostic& d : run.loaded.diags.all())
         if (d.severity == Severity::Error) rec.loadErrors.push_back(diagRecord(sources, d));
     } else if (run.ran) {
-      rec.status = grade::statusName(run.result.status);
-      rec.limit = grade::limitName(run.result.status);
+      rec.status = record::statusName(run.result.status);
+      rec.limit = record::limitName(run.result.status);
       if (run.result.error) {
         rec.error = diagRecord(sources, *run.result.error);
         if (!rec.limit.empty()) {
@@ -401,7 +401,7 @@ int executeJob(JobOptions opts) {
       rec.penDown = run.machine->robot().penDown();
       rec.radius = run.machine->robot().radius();
       if (observer) {
-        grade::PathRecorder& recorder = observer->recorder;
+        record::PathRecorder& recorder = observer->recorder;
         rec.crashed = recorder.crashed;
         rec.moves = recorder.moves;
         rec.path = std::move(recorder.path);
@@ -424,7 +424,7 @@ int executeJob(JobOptions opts) {
       }
       if (screenFile.wanted() && finalScreen) {
         std::string error;
-        std::string bytes = grade::screenFileBytes(*finalScreen, Canvas::kWidth, Canvas::kHeight);
+        std::string bytes = record::screenFileBytes(*finalScreen, Canvas::kWidth, Canvas::kHeight);
         rec.screen = screenFile.write(bytes, error);
         if (!rec.screen) std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
       }

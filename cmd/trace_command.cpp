@@ -39,8 +39,8 @@ int traceOne(const TraceOptions& opts, const std::string& file, std::FILE* out, 
   one.run.file = file;
   one.run.confined = true;  // executeTrace confined the process for every file
   HeadlessRun run;
-  trace::TraceWriter writer(
-      trace::TraceSettings{opts.format, opts.sensors, opts.lines}, out, program, csvHeader,
+  record::TraceWriter writer(
+      record::TraceSettings{opts.format, opts.sensors, opts.lines}, out, program, csvHeader,
       [&run]() -> const SourceSet* { return run.loaded.program ? &run.loaded.program->sources : nullptr; },
       [&run]() -> const Machine* { return run.machine.get(); });
   CompileOptions compile;
@@ -48,7 +48,7 @@ int traceOne(const TraceOptions& opts, const std::string& file, std::FILE* out, 
   int code = runHeadless("rb trace", one.run, compile, nullptr, &writer, run,
                          [&](SourceLoc loc) { writer.line(loc); },
                          [&](std::string_view text) { writer.output(text); });
-  trace::TraceEnd end;
+  record::TraceEnd end;
   end.exit = code;
   if (run.ran) {
     end.result = &run.result;
