@@ -78,24 +78,24 @@ int executeCheck(const CheckOptions& opts) {
   diagnostics::DiagFormat format = diagnostics::parseDiagFormat(opts.format);
   if (opts.listBuiltins) {
     listBuiltins(format == diagnostics::DiagFormat::Json);
-    return exitcode::kOk;
+    return run::exitcode::kOk;
   }
   if (opts.listRules) {
     listRules(format == diagnostics::DiagFormat::Json);
-    return exitcode::kOk;
+    return run::exitcode::kOk;
   }
   if (opts.files.empty()) {
     std::fprintf(stderr, "rb check: no files given (see rb check --help)\n");
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   if (opts.dumpCode && format != diagnostics::DiagFormat::Text) {
     std::fprintf(stderr, "rb check: --dump-code prints text; leave out --format %s\n", opts.format.c_str());
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
-  std::vector<std::string> files = expandProgramPaths(opts.files);
+  std::vector<std::string> files = run::expandProgramPaths(opts.files);
   if (files.empty()) {
     std::fprintf(stderr, "rb check: error: no .bas files in %s\n", opts.files.front().c_str());
-    return exitcode::kNoInput;
+    return run::exitcode::kNoInput;
   }
   diagnostics::DiagOutputOptions out;
   out.format = format;
@@ -108,12 +108,12 @@ int executeCheck(const CheckOptions& opts) {
     compile.keepCode = opts.dumpCode;  // only the diagnostics are wanted otherwise
     LintOptions lint;
     lint.realRobot = opts.target == "rb9";  // a real robot needs no rLocate
-    LoadedFile loaded = loadFile(file, compile, true, true, {}, lint);
+    run::LoadedFile loaded = run::loadFile(file, compile, true, true, {}, lint);
     if (opts.target == "rb9" && loaded.program) {
       checkRb9Target(*loaded.program, loaded.diags);
       loaded.diags.sort();
     }
-    if (loaded.exitCode == exitcode::kNoInput) {
+    if (loaded.exitCode == run::exitcode::kNoInput) {
       ++unreadable;
       report.addUnreadable(file, loaded.readError);
       continue;
@@ -126,9 +126,9 @@ int executeCheck(const CheckOptions& opts) {
   }
   report.finish();
   std::fflush(stdout);
-  if (unreadable && report.errors() == 1) return exitcode::kNoInput;
-  if (report.errors() > 0 || (opts.werror && report.warnings() > 0)) return exitcode::kRejected;
-  return exitcode::kOk;
+  if (unreadable && report.errors() == 1) return run::exitcode::kNoInput;
+  if (report.errors() > 0 || (opts.werror && report.warnings() > 0)) return run::exitcode::kRejected;
+  return run::exitcode::kOk;
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ namespace rb::cli {
 namespace {
 
 struct JobOptions {
-  RunOptions run;
+  run::RunOptions run;
   std::string record;       ///< where the JSON record goes
   std::string screen;       ///< where the final screen goes ("": not wanted)
   std::string checkTarget;  ///< "rb9": also rb check --target rb9's warnings
@@ -85,8 +85,8 @@ class HandedFile {
 
 /// The kernel's rules for the job (kernel_confine.h): rb run's, but in its scratch folder that
 /// folder alone to change; never root's capabilities.
-KernelRules jobRules(const JobOptions& opts) {
-  KernelRules rules = runKernelRules(opts.run);
+run::KernelRules jobRules(const JobOptions& opts) {
+  run::KernelRules rules = run::runKernelRules(opts.run);
   std::error_code ec;
   if (!opts.box.empty()) rules.writeDirs = {std::filesystem::absolute(opts.box, ec).string()};
   rules.dropCapabilities = true;
@@ -111,9 +111,9 @@ void recordCheck(const JobOptions& opts, record::RunRecord& rec, bool placed = f
   lint.robotPlaced = placed;
   rec.checkDiags.clear();
   rec.targetDiags.clear();
-  LoadedFile checked = loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles, lint);
-  if (checked.exitCode == exitcode::kNoInput) {
-    rec.checkExit = exitcode::kNoInput;
+  run::LoadedFile checked = run::loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles, lint);
+  if (checked.exitCode == run::exitcode::kNoInput) {
+    rec.checkExit = run::exitcode::kNoInput;
     return;
   }
   const SourceSet* sources = &checked.program->sources;
@@ -124,7 +124,7 @@ void recordCheck(const JobOptions& opts, record::RunRecord& rec, bool placed = f
     extra.sort();
     for (const Diagnostic& d : extra.all()) rec.targetDiags.push_back(diagRecord(sources, d));
   }
-  rec.checkExit = checked.diags.hasErrors() ? exitcode::kRejected : exitcode::kOk;
+  rec.checkExit = checked.diags.hasErrors() ? run::exitcode::kRejected : run::exitcode::kOk;
 }
 
 bool writeRecord(HandedFile& file, const record::RunRecord& rec) {
@@ -216,14 +216,14 @@ class JobObserver : public RobotObserver {
 
 /// A teacher's program (world or post) compiled for running on the student's machine.
 struct TeacherProgram {
-  LoadedFile loaded;
+  run::LoadedFile loaded;
   std::string problem;  ///< why it cannot run
 };
 
 TeacherProgram loadTeacherProgram(const std::string& file) {
   TeacherProgram p;
-  p.loaded = loadFile(file, CompileOptions{}, false);
-  if (p.loaded.exitCode == exitcode::kNoInput) {
+  p.loaded = run::loadFile(file, CompileOptions{}, false);
+  if (p.loaded.exitCode == run::exitcode::kNoInput) {
     p.problem = "cannot read " + file + ": " + p.loaded.readError;
   } else if (!p.loaded.compiled) {
     for (const Diagnostic& d : p.loaded.diags.all())
@@ -237,9 +237,9 @@ TeacherProgram loadTeacherProgram(const std::string& file) {
 }
 
 /// Runs a teacher's program on the run's machine with the run's limits. Returns its result.
-RunResult runTeacherProgram(const TeacherProgram& p, HeadlessRun& run, const RunOptions& opts) {
+RunResult runTeacherProgram(const TeacherProgram& p, run::HeadlessRun& run, const run::RunOptions& opts) {
   Interpreter interpreter(*p.loaded.compiled, *run.machine);
-  return interpreter.run(runLimits(opts));
+  return interpreter.run(run::runLimits(opts));
 }
 
 int executeJob(JobOptions opts) {
@@ -251,31 +251,31 @@ int executeJob(JobOptions opts) {
   for (auto [file, path] : {std::pair{&recordFile, &opts.record}, {&screenFile, &opts.screen}, {&replayFile, &opts.replay}})
     if (std::string why = file->open(*path); !why.empty()) {
       std::fprintf(stderr, "rb test-job: %s\n", why.c_str());
-      return exitcode::kIoError;
+      return run::exitcode::kIoError;
     }
   std::optional<TeacherProgram> world;
   std::vector<TeacherProgram> posts;
   if (!opts.world.empty()) world = loadTeacherProgram(opts.world);
   for (const std::string& p : opts.posts) posts.push_back(loadTeacherProgram(p));
-  HeadlessRun run;
-  run.memory = std::make_shared<ResidentMemory>();
+  run::HeadlessRun run;
+  run.memory = std::make_shared<run::ResidentMemory>();
   record::RunRecord rec;
-  KernelStatus kernel = confineProcess(jobRules(opts));
+  run::KernelStatus kernel = run::confineProcess(jobRules(opts));
   opts.run.confined = true;
   rec.confinement = kernel.problem;
   if (!kernel.complete() && opts.run.requireSandbox) {
     std::fprintf(stderr, "rb run: --require-sandbox: the kernel cannot confine this run: %s\n", kernel.problem.c_str());
     rec.complete = true;
-    rec.exitCode = exitcode::kRuntime;
+    rec.exitCode = run::exitcode::kRuntime;
     writeRecord(recordFile, rec);
-    return exitcode::kRuntime;
+    return run::exitcode::kRuntime;
   }
   recordCheck(opts, rec);
   // Written now and again at the end: a run killed at its time limit keeps rb check's part.
   rec.complete = false;
-  if (!writeRecord(recordFile, rec)) return exitcode::kIoError;
+  if (!writeRecord(recordFile, rec)) return run::exitcode::kIoError;
   rec.complete = true;
-  int code = exitcode::kOk;
+  int code = run::exitcode::kOk;
   if (opts.run.tui) {
     code = runTui(opts.run);  // a job has no terminal: this reports why, as rb run --tui would
   } else {
@@ -283,7 +283,7 @@ int executeJob(JobOptions opts) {
     for (const std::string& hex : opts.watch) colours.push_back(static_cast<uint32_t>(std::stoul(hex, nullptr, 16)));
     std::optional<JobObserver> observer;
     std::string output;  // the student's output as it goes to stdout, for the post programs
-    run.onInput = [&rec](const HeadlessHost::InputSpan& s) {
+    run.onInput = [&rec](const run::HeadlessHost::InputSpan& s) {
       if (rec.inputs.size() < 100000) rec.inputs.push_back({s.start, s.promptEnd, s.end});
     };
     std::optional<Recording> recording;
@@ -293,12 +293,12 @@ int executeJob(JobOptions opts) {
         if (keep && output.size() < (1u << 20)) output.append(text.substr(0, (1u << 20) - output.size()));
         if (recording) recording->output(text);
       };
-    run.beforeRun = [&](HeadlessRun& r) -> std::string {
+    run.beforeRun = [&](run::HeadlessRun& r) -> std::string {
       observer.emplace(colours, *r.machine);
       if (world) {
         if (!world->problem.empty()) return rec.worldError = "the world program " + world->problem;
         r.machine->setObserver(nullptr);
-        HeadlessHost& host = r.headlessHost();
+        run::HeadlessHost& host = r.headlessHost();
         auto saved = std::move(host.outputHook);
         host.outputHook = [](std::string_view) {};  // the world's prints are not the student's
         // Nor is the student's input the world's: its `input` reads empty lines.
@@ -326,7 +326,7 @@ int executeJob(JobOptions opts) {
       return "";
     };
     std::optional<std::vector<render::ColourRun>> finalScreen;
-    run.afterRun = [&](HeadlessRun& r) {
+    run.afterRun = [&](run::HeadlessRun& r) {
       r.machine->setObserver(nullptr);
       if (recording) recording->finish(*r.machine, r.result);  // before the post programs
       // The student's screen as their program left it: a post program's prints (a hidden
@@ -334,7 +334,7 @@ int executeJob(JobOptions opts) {
       if (screenFile.wanted())
         finalScreen = render::composeRuns(r.machine->canvas().pixels(), render::robotView(*r.machine));
       if (posts.empty()) return;
-      HeadlessHost& host = r.headlessHost();
+      run::HeadlessHost& host = r.headlessHost();
       host.flush();
       // What the student printed, as the post programs' input.
       host.copyHook = nullptr;
@@ -371,7 +371,7 @@ int executeJob(JobOptions opts) {
     CompileOptions compile;
     compile.lineTracing = true;  // to count the statements exactly, up to a runtime error
     uint64_t started = 0;
-    code = runHeadless("rb run", opts.run, compile, stdout, nullptr, run, [&](SourceLoc loc) {
+    code = run::runHeadless("rb run", opts.run, compile, stdout, nullptr, run, [&](SourceLoc loc) {
       ++started;
       if (recording) recording->statement(loc, *run.machine);
     });
@@ -392,7 +392,7 @@ int executeJob(JobOptions opts) {
           rec.loopLast = last;
         }
       }
-      rec.steps = countedSteps(run.result, started);
+      rec.steps = run::countedSteps(run.result, started);
       rec.seed = run.seed;
       rec.located = run.machine->robot().located();
       const Pose& pose = run.machine->robot().pose();
@@ -431,7 +431,7 @@ int executeJob(JobOptions opts) {
     }
   }
   rec.exitCode = code;
-  if (!writeRecord(recordFile, rec)) return exitcode::kIoError;
+  if (!writeRecord(recordFile, rec)) return run::exitcode::kIoError;
   return code;
 }
 

@@ -9,7 +9,7 @@
 #include "port_names.h"
 #include "robot_port.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 int loadForRun(const char* command, const RunOptions& opts, const CompileOptions& compile,
                LoadedFile& loaded) {
@@ -136,4 +136,4 @@ int ProgramRun::conclude(const char* command, const RunOptions& opts, int stoppe
   return exitcode::kOk;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -6,6 +6,6 @@
 namespace rb::cli {
 
 /// Runs opts.file in the terminal view; returns rb's exit code.
-int runTui(const RunOptions& opts);
+int runTui(const run::RunOptions& opts);
 
 }  // namespace rb::cli
