@@ -120,7 +120,7 @@ void addRunLimitOptions(CLI::App& app, run::RunOptions& opts) {
 namespace {
 
 int executeRun(const run::RunOptions& opts) {
-  if (opts.tui) return runTui(opts);
+  if (opts.tui) return tui::runTui(opts);
   run::HeadlessRun run;
   bool printed = false;
   run.onCopy = [&printed](std::string_view text) { printed = printed || !text.empty(); };

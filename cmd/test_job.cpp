@@ -277,7 +277,7 @@ int executeJob(JobOptions opts) {
   rec.complete = true;
   int code = run::exitcode::kOk;
   if (opts.run.tui) {
-    code = runTui(opts.run);  // a job has no terminal: this reports why, as rb run --tui would
+    code = tui::runTui(opts.run);  // a job has no terminal: this reports why, as rb run --tui would
   } else {
     std::vector<uint32_t> colours;
     for (const std::string& hex : opts.watch) colours.push_back(static_cast<uint32_t>(std::stoul(hex, nullptr, 16)));

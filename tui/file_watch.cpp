@@ -13,7 +13,7 @@
 #include <unistd.h>
 #endif
 
-namespace rb::cli {
+namespace rb::tui {
 
 namespace {
 
@@ -162,4 +162,4 @@ bool FileWatch::changed() {
   return false;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

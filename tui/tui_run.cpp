@@ -15,7 +15,7 @@
 #include "robot_port.h"
 #include "tui_host.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 namespace {
 
@@ -308,4 +308,4 @@ int runTui(const run::RunOptions& opts) {
   return run->conclude(kCommand, opts, view->quitCode());
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui
