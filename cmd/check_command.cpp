@@ -79,44 +79,44 @@ void listRules(bool json) {
 }
 
 int executeCheck(const CheckOptions& opts) {
-  DiagFormat format = parseDiagFormat(opts.format);
+  diagnostics::DiagFormat format = diagnostics::parseDiagFormat(opts.format);
   if (opts.listBuiltins) {
-    listBuiltins(format == DiagFormat::Json);
-    return exitcode::kOk;
+    listBuiltins(format == diagnostics::DiagFormat::Json);
+    return run::exitcode::kOk;
   }
   if (opts.listRules) {
-    listRules(format == DiagFormat::Json);
-    return exitcode::kOk;
+    listRules(format == diagnostics::DiagFormat::Json);
+    return run::exitcode::kOk;
   }
   if (opts.files.empty()) {
     std::fprintf(stderr, "rb check: no files given (see rb check --help)\n");
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
-  if (opts.dumpCode && format != DiagFormat::Text) {
+  if (opts.dumpCode && format != diagnostics::DiagFormat::Text) {
     std::fprintf(stderr, "rb check: --dump-code prints text; leave out --format %s\n", opts.format.c_str());
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
-  std::vector<std::string> files = expandProgramPaths(opts.files);
+  std::vector<std::string> files = run::expandProgramPaths(opts.files);
   if (files.empty()) {
     std::fprintf(stderr, "rb check: error: no .bas files in %s\n", opts.files.front().c_str());
-    return exitcode::kNoInput;
+    return run::exitcode::kNoInput;
   }
-  DiagOutputOptions out;
+  diagnostics::DiagOutputOptions out;
   out.format = format;
-  out.color = format == DiagFormat::Text && useColor(opts.color, stdout);
+  out.color = format == diagnostics::DiagFormat::Text && diagnostics::useColor(opts.color, stdout);
   out.maxErrors = opts.maxErrors;
-  DiagnosticReport report(stdout, out);
+  diagnostics::DiagnosticReport report(stdout, out);
   size_t unreadable = 0;
   for (const std::string& file : files) {
     CompileOptions compile;
     compile.keepCode = opts.dumpCode;  // only the diagnostics are wanted otherwise
     LintOptions lint;
     lint.realRobot = opts.target == "rb9";  // a real robot needs no rLocate
-    LoadedFile loaded = loadFile(file, compile, true, true, {}, lint);
+    run::LoadedFile loaded = run::loadFile(file, compile, true, true, {}, lint);
     if (opts.target == "rb9" && loaded.program) checkRb9Target(*loaded.program, loaded.diags);
     if (opts.portable && loaded.program) checkPortable(*loaded.program, loaded.diags);
     if ((opts.target == "rb9" || opts.portable) && loaded.program) loaded.diags.sort();
-    if (loaded.exitCode == exitcode::kNoInput) {
+    if (loaded.exitCode == run::exitcode::kNoInput) {
       ++unreadable;
       report.addUnreadable(file, loaded.readError);
       continue;
@@ -129,9 +129,9 @@ int executeCheck(const CheckOptions& opts) {
   }
   report.finish();
   std::fflush(stdout);
-  if (unreadable && report.errors() == 1) return exitcode::kNoInput;
-  if (report.errors() > 0 || (opts.werror && report.warnings() > 0)) return exitcode::kRejected;
-  return exitcode::kOk;
+  if (unreadable && report.errors() == 1) return run::exitcode::kNoInput;
+  if (report.errors() > 0 || (opts.werror && report.warnings() > 0)) return run::exitcode::kRejected;
+  return run::exitcode::kOk;
 }
 
 }  // namespace

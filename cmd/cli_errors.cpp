@@ -23,7 +23,7 @@ int usageError(const CLI::App* sub, const std::string& message) {
   std::string where = sub ? "rb " + sub->get_name() + " --help" : std::string("rb --help");
   std::fprintf(stderr, "%s: error: %s\nRun '%s' for %s.\n", commandName(sub).c_str(),
                message.c_str(), where.c_str(), sub ? "its options" : "the commands");
-  return exitcode::kUsage;
+  return run::exitcode::kUsage;
 }
 
 std::string didYouMean(std::string_view word, const std::vector<std::string>& names) {
@@ -109,19 +109,19 @@ bool looksLikeOption(std::string_view a) {
 std::optional<int> precheckCommandLine(CLI::App& app, int argc, char** argv) {
   if (argc < 2) {
     std::fputs(app.help().c_str(), stderr);
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   std::string_view first = argv[1];
   if (first == "help") {
     if (argc == 2) {
       std::fputs(app.help().c_str(), stdout);
-      return exitcode::kOk;
+      return run::exitcode::kOk;
     }
     std::string wanted = argv[2];
     for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
       if (sub->get_name() == wanted) {
         std::fputs(sub->help().c_str(), stdout);
-        return exitcode::kOk;
+        return run::exitcode::kOk;
       }
     return usageError(nullptr, "'" + wanted + "' is not an rb command" +
                                    didYouMean(wanted, commandNames(app)));

@@ -29,9 +29,9 @@ void addLspCommand(CLI::App& app, int& exitCode, bool withOptions) {
     (void)stdio;
     std::ios::sync_with_stdio(false);
     std::cin.tie(nullptr);
-    FileSourceReader reader;
+    run::FileSourceReader reader;
     lsp::ServerOptions options;
-    options.load.libraryDirs = libraryDirs();
+    options.load.libraryDirs = run::libraryDirs();
     options.version = RB_VERSION;
     lsp::Server server(std::cout, reader, standardBuiltins(), options);
     exitCode = server.run(std::cin);

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   CLI::App app{"rb: run, check, trace, render and test RobotBASIC programs", "rb"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rb " RB_VERSION);
-  int exitCode = rb::exitcode::kOk;
+  int exitCode = rb::run::exitcode::kOk;
   // The command that runs gets its options; the others only their names and descriptions,
   // which is all that rb --help and an unknown command's message show (building every
   // command's options was a fifth of the start-up of an empty program). When the first word
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     auto added = app.get_subcommands([](const CLI::App*) { return true; });
     if (added.empty() || added.back()->get_name() != c.name) {  // the table names each command
       std::fprintf(stderr, "rb: internal error: command '%s' is misnamed\n", c.name);
-      return rb::exitcode::kRuntime;
+      return rb::run::exitcode::kRuntime;
     }
   }
   app.footer("Run 'rb COMMAND --help' (or 'rb help COMMAND') for the options of a command. "
@@ -66,15 +66,15 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
-    return rb::exitcode::kUsage;
+    return rb::run::exitcode::kUsage;
   }
   // Whatever a command printed must have reached its reader: a full disk or a closed pipe is
   // a failure (exit 74), never a silent success. Commands that write a lot check as they go.
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-    if (exitCode == rb::exitcode::kOk || exitCode == rb::exitcode::kRejected) {
+    if (exitCode == rb::run::exitcode::kOk || exitCode == rb::run::exitcode::kRejected) {
       std::string name = app.get_subcommands().empty() ? "rb" : "rb " + app.get_subcommands().front()->get_name();
       std::fprintf(stderr, "%s: error: cannot write to standard output\n", name.c_str());
-      exitCode = rb::exitcode::kIoError;
+      exitCode = rb::run::exitcode::kIoError;
     }
   }
   return exitCode;

@@ -24,11 +24,11 @@ int executePorts(const std::vector<std::string>& devices) {
     }
   } catch (const RuntimeError& e) {
     std::fprintf(stderr, "rb ports: %s\n", e.what());
-    return exitcode::kIoError;
+    return run::exitcode::kIoError;
   }
   std::string table = drivers::formatPorts(ports);
   std::fwrite(table.data(), 1, table.size(), stdout);
-  return exitcode::kOk;
+  return run::exitcode::kOk;
 }
 
 }  // namespace

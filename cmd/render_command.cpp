@@ -28,7 +28,7 @@ namespace rb::cli {
 namespace {
 
 struct RenderOptions {
-  RunOptions run;
+  run::RunOptions run;
   std::string output;
   int scale = 1;
   bool ascii = false;
@@ -96,18 +96,18 @@ int writePicture(const RenderOptions& opts, Format format, const Machine& machin
         std::string text = render::frameText(render::renderArena(machine.shownScreen(), canvas.background(), robot, view));
         if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
           std::fprintf(stderr, "rb render: cannot write to standard output\n");
-          return exitcode::kIoError;
+          return run::exitcode::kIoError;
         }
-        return exitcode::kOk;
+        return run::exitcode::kOk;
       }
       case Format::Png:
         if (render::writePngFile(opts.output, render::composeImage(machine.shownScreen(), robot, opts.scale), error))
-          return exitcode::kOk;
+          return run::exitcode::kOk;
         break;
       case Format::Svg: {
         std::string svg = render::renderSvg(canvas, robot, opts.scale,
                                             machine.showsFlip() ? &machine.shownScreen() : nullptr);
-        if (render::writeFileBytes(opts.output, svg.data(), svg.size(), error)) return exitcode::kOk;
+        if (render::writeFileBytes(opts.output, svg.data(), svg.size(), error)) return run::exitcode::kOk;
         break;
       }
     }
@@ -115,7 +115,7 @@ int writePicture(const RenderOptions& opts, Format format, const Machine& machin
     error = "cannot write '" + opts.output + "': " + e.what();
   }
   std::fprintf(stderr, "rb render: %s\n", error.c_str());
-  return exitcode::kIoError;
+  return run::exitcode::kIoError;
 }
 
 /// Why OUT cannot be written, found before the run ("" when it looks writable): its folder is
@@ -149,11 +149,11 @@ int executeRender(const RenderOptions& opts) {
     if (render::animationFormat(opts.animate).empty()) {
       std::fprintf(stderr, "rb render: --animate: cannot tell the format of '%s': the name must end in .gif, .svg or .html\n",
                    opts.animate.c_str());
-      return exitcode::kUsage;
+      return run::exitcode::kUsage;
     }
     if (std::string why = unwritable(opts.animate); !why.empty()) {
       std::fprintf(stderr, "rb render: --animate: cannot write '%s': %s\n", opts.animate.c_str(), why.c_str());
-      return exitcode::kIoError;
+      return run::exitcode::kIoError;
     }
   }
   const bool picture = opts.ascii || !opts.output.empty();
@@ -161,7 +161,7 @@ int executeRender(const RenderOptions& opts) {
     if (opts.output.empty()) {
       std::fprintf(stderr, "rb render: name the picture to write with -o OUT (.png or .svg), the animation with "
                            "--animate OUT (.gif, .svg or .html), or use --ascii\n");
-      return exitcode::kUsage;
+      return run::exitcode::kUsage;
     }
     std::string ext = extensionOf(opts.output);
     if (ext == ".png") {
@@ -171,11 +171,11 @@ int executeRender(const RenderOptions& opts) {
     } else {
       std::fprintf(stderr, "rb render: cannot tell the format of '%s': the name must end in .png or .svg\n",
                    opts.output.c_str());
-      return exitcode::kUsage;
+      return run::exitcode::kUsage;
     }
   }
 
-  HeadlessRun run;
+  run::HeadlessRun run;
   run.outputs = {opts.output, opts.animate};
   // For a picture, stopping after N steps is a way to choose the moment, not a failure.
   run.stepLimitIsError = false;
@@ -192,19 +192,19 @@ int executeRender(const RenderOptions& opts) {
     recording.emplace();
     observer.emplace(*recording);
     run.onCopy = [&recording](std::string_view text) { recording->output(text); };
-    run.onInput = [&recording](const HeadlessHost::InputSpan& s) { recording->input(s.line); };
-    run.afterRun = [&recording](HeadlessRun& r) { recording->finish(*r.machine, r.result); };
+    run.onInput = [&recording](const run::HeadlessHost::InputSpan& s) { recording->input(s.line); };
+    run.afterRun = [&recording](run::HeadlessRun& r) { recording->finish(*r.machine, r.result); };
     onLine = [&recording, &run](SourceLoc loc) { recording->statement(loc, *run.machine); };
   }
-  int code = runHeadless("rb render", opts.run, compile, nullptr, observer ? &*observer : nullptr, run,
-                         std::move(onLine));
+  int code = run::runHeadless("rb render", opts.run, compile, nullptr, observer ? &*observer : nullptr, run,
+                              std::move(onLine));
   if (!run.ran) return code;  // nothing ran (load error, missing file): there is no picture
   if (run.result.status == RunStatus::StepLimit)
     std::fprintf(stderr, "rb render: stopped after %llu steps (--max-steps)\n",
                  static_cast<unsigned long long>(run.result.steps));
   // After a runtime error the picture of the screen at that moment is still written: it often
   // shows what went wrong (where the robot crashed). So is the animation, which ends there.
-  int written = picture ? writePicture(opts, format, *run.machine) : exitcode::kOk;
+  int written = picture ? writePicture(opts, format, *run.machine) : run::exitcode::kOk;
   if (animate && recording && recording->finished()) {
     render::PlayerSource source;
     const SourceSet& sources = run.loaded.program->sources;
@@ -219,10 +219,10 @@ int executeRender(const RenderOptions& opts) {
     std::string error;
     if (!render::writeAnimation(opts.animate, *recording, source, options, error)) {
       std::fprintf(stderr, "rb render: --animate: %s\n", error.c_str());
-      written = exitcode::kIoError;
+      written = run::exitcode::kIoError;
     }
   }
-  return written != exitcode::kOk ? written : code;
+  return written != run::exitcode::kOk ? written : code;
 }
 
 }  // namespace

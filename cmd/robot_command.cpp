@@ -27,7 +27,7 @@ struct RobotOptions {
 int executeRobot(const RobotOptions& opts) {
   if (!opts.pty) {
     std::fprintf(stderr, "rb robot: give --pty (the emulator serves a pseudo-terminal)\n");
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   // Before the pty exists, so that a kill at any later moment still removes the link.
   drivers::StopSignals signals;
@@ -49,9 +49,9 @@ int executeRobot(const RobotOptions& opts) {
                    static_cast<unsigned long long>(emulator.commands()));
   } catch (const RuntimeError& e) {
     std::fprintf(stderr, "rb robot: %s\n", e.what());
-    return exitcode::kIoError;
+    return run::exitcode::kIoError;
   }
-  return exitcode::kOk;
+  return run::exitcode::kOk;
 }
 
 }  // namespace

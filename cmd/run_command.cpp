@@ -68,7 +68,7 @@ const CLI::Validator kNotEmpty(
     [](std::string& text) -> std::string { return text.empty() ? "must not be empty" : ""; }, "");
 }  // namespace
 
-void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
+void addRunLimitOptions(CLI::App& app, run::RunOptions& opts) {
   app.add_option("--color", opts.color,
                  "Colour the diagnostics: auto (on a terminal, unless NO_COLOR is set), always or never")
       ->check(CLI::IsMember({"auto", "always", "never"}));
@@ -119,15 +119,15 @@ void addRunLimitOptions(CLI::App& app, RunOptions& opts) {
 
 namespace {
 
-int executeRun(const RunOptions& opts) {
-  if (opts.tui) return runTui(opts);
-  HeadlessRun run;
+int executeRun(const run::RunOptions& opts) {
+  if (opts.tui) return tui::runTui(opts);
+  run::HeadlessRun run;
   bool printed = false;
   run.onCopy = [&printed](std::string_view text) { printed = printed || !text.empty(); };
-  int code = runHeadless("rb run", opts, CompileOptions{}, stdout, nullptr, run);
+  int code = run::runHeadless("rb run", opts, CompileOptions{}, stdout, nullptr, run);
   // A program that only draws shows nothing on a terminal: say once where the picture is. Not
   // when the output goes to a pipe or a file (a script reads it), nor after an error.
-  if (code == exitcode::kOk && run.ran && !printed && ::isatty(STDOUT_FILENO) &&
+  if (code == run::exitcode::kOk && run.ran && !printed && ::isatty(STDOUT_FILENO) &&
       (run.machine->canvas().version() != 0 || run.machine->robot().located())) {
     std::string file = opts.file == "-" ? "prog.bas" : opts.file;
     std::fprintf(stderr,
@@ -141,7 +141,7 @@ int executeRun(const RunOptions& opts) {
 }  // namespace
 
 void addRunCommand(CLI::App& app, int& exitCode, bool withOptions) {
-  auto opts = std::make_shared<RunOptions>();
+  auto opts = std::make_shared<run::RunOptions>();
   CLI::App* run = app.add_subcommand("run", "Run a RobotBASIC program (headless on the simulator)");
   if (!withOptions) return;
   run->add_option("file", opts->file, "Program file (- reads the program from standard input)")

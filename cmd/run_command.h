@@ -25,7 +25,7 @@ namespace rb::cli {
 extern const CLI::Validator kSeconds, kLimitSeconds, kPositiveSeconds, kStepCount, kMebibytes, kBaud, kJobs;
 
 /// Adds the options shared by run, trace and render: limits, seed, real robot, scripted input.
-void addRunLimitOptions(CLI::App& app, RunOptions& opts);
+void addRunLimitOptions(CLI::App& app, run::RunOptions& opts);
 
 /// Without options: only the command's name and description (see main.cpp).
 void addRunCommand(CLI::App& app, int& exitCode, bool withOptions = true);

@@ -49,8 +49,8 @@ struct TestOptions {
 
 /// A teacher's program (world, post) as rb check sees it: its first error, or "".
 std::string firstError(const std::string& file) {
-  LoadedFile loaded = loadFile(file, CompileOptions{}, false);
-  if (loaded.exitCode == exitcode::kNoInput) return file + ": cannot read it: " + loaded.readError;
+  run::LoadedFile loaded = run::loadFile(file, CompileOptions{}, false);
+  if (loaded.exitCode == run::exitcode::kNoInput) return file + ": cannot read it: " + loaded.readError;
   if (loaded.compiled) return "";
   for (const Diagnostic& d : loaded.diags.all()) {
     if (d.severity != Severity::Error) continue;
@@ -64,13 +64,13 @@ std::string firstError(const std::string& file) {
 /// The files a program #includes from its own folder tree, as rb run would load them: rb test
 /// copies them beside the program into its scratch folder.
 std::vector<std::string> includedFiles(const std::string& file) {
-  std::optional<std::string> text = readFile(file);
+  std::optional<std::string> text = run::readFile(file);
   if (!text) return {};
   // Most programs include nothing: no need to load them here.
   std::string lowered = *text;
   for (char& c : lowered) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (lowered.find("#include") == std::string::npos) return {};
-  LoadedFile loaded = loadFile(file, CompileOptions{}, false, true);
+  run::LoadedFile loaded = run::loadFile(file, CompileOptions{}, false, true);
   std::vector<std::string> out;
   if (!loaded.program) return out;
   for (uint32_t i = 1; i < loaded.program->sources.size(); ++i) out.push_back(loaded.program->sources.file(i).name());
@@ -80,7 +80,7 @@ std::vector<std::string> includedFiles(const std::string& file) {
 /// "rb test: MESSAGE" on standard error. A message may quote a student's file name: it is shown
 /// as the reports show untrusted text (text.h), on one line, whole even with a NUL in it.
 void say(const std::string& message) {
-  std::string text = "rb test: " + grade::shownText(message, grade::TextShape::Line) + "\n";
+  std::string text = "rb test: " + record::shownText(message, record::TextShape::Line) + "\n";
   std::fwrite(text.data(), 1, text.size(), stderr);
 }
 
@@ -144,10 +144,10 @@ int writeClassReports(const TestOptions& opts, const grade::ClassResult& result)
   std::string out = opts.format == "json" ? grade::jsonReport(result) : grade::textReport(result, !opts.quiet);
   if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() || std::fflush(stdout) != 0) {
     std::fprintf(stderr, "rb test: cannot write to standard output\n");
-    return exitcode::kIoError;
+    return run::exitcode::kIoError;
   }
-  if (!written) return exitcode::kIoError;
-  return result.failed + result.errors + result.missing == 0 ? exitcode::kOk : 1;
+  if (!written) return run::exitcode::kIoError;
+  return result.failed + result.errors + result.missing == 0 ? run::exitcode::kOk : 1;
 }
 
 int executeTest(const TestOptions& opts) {
@@ -157,7 +157,7 @@ int executeTest(const TestOptions& opts) {
   g.jobs = opts.jobs;
   if (!opts.shard.empty() && !parseShard(opts.shard, g.shard, g.shards)) {
     std::fprintf(stderr, "rb test: --shard wants K/N with 1 <= K <= N (like 2/4), not '%s'\n", opts.shard.c_str());
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   g.seed = opts.seed;
   g.maxSteps = opts.maxSteps;
@@ -174,7 +174,7 @@ int executeTest(const TestOptions& opts) {
   }
   if (!opts.replays.empty() && g.picturesDir.empty()) {
     std::fprintf(stderr, "rb test: --replays writes beside the pictures: give --pictures DIR too\n");
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   g.include = opts.include;
   g.roster = opts.roster;
@@ -183,22 +183,22 @@ int executeTest(const TestOptions& opts) {
   g.includedFiles = includedFiles;
   g.requireSandbox = opts.requireSandbox;
   if (opts.requireSandbox) {
-    if (std::string gap = kernelConfinementGap(); !gap.empty()) {
+    if (std::string gap = run::kernelConfinementGap(); !gap.empty()) {
       std::fprintf(stderr, "rb test: --require-sandbox: %s\n", gap.c_str());
-      return exitcode::kUnavailable;
+      return run::exitcode::kUnavailable;
     }
   }
   g.similarity = opts.similarity || !opts.similarityIgnore.empty();
   g.similarityIgnore = opts.similarityIgnore;
   if ((!opts.include.empty() || !opts.roster.empty()) && opts.assignment.empty()) {
     std::fprintf(stderr, "rb test: --include and --roster grade a class folder against an assignment (-a FILE)\n");
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   std::error_code ec;
   std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) {
     std::fprintf(stderr, "rb test: cannot find rb's own executable: %s\n", ec.message().c_str());
-    return exitcode::kIoError;
+    return run::exitcode::kIoError;
   }
   g.childCommand = {self.string(), kTestJobCommand};
   if (!opts.quiet && isatty(2)) {
@@ -213,7 +213,7 @@ int executeTest(const TestOptions& opts) {
     std::string why;
     if (!render::makeFolder(opts.html, why)) {
       std::fprintf(stderr, "rb test: %s\n", why.c_str());
-      return exitcode::kIoError;
+      return run::exitcode::kIoError;
     }
   }
   grade::ClassResult result = grade::gradeClass(g);
@@ -239,7 +239,7 @@ int executeTest(const TestOptions& opts) {
   result.origin.rbVersion = RB_VERSION;
   if (!opts.assignment.empty()) {
     result.origin.assignmentFile = opts.assignment;
-    if (std::optional<std::string> bytes = readFile(opts.assignment)) result.origin.assignmentDigest = grade::contentDigest(*bytes);
+    if (std::optional<std::string> bytes = run::readFile(opts.assignment)) result.origin.assignmentDigest = grade::contentDigest(*bytes);
   }
   // The name each report gives a program, in the JSON too (a missing student's from the roster).
   for (grade::ProgramResult& p : result.programs)
@@ -254,12 +254,12 @@ int executeMerge(const TestOptions& opts, const std::vector<std::string>& gradin
     std::string list;
     for (const std::string& o : grading) list += (list.empty() ? "" : ", ") + o;
     say("--merge reads the shards' reports and grades nothing: leave out " + list);
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   if (!opts.mergePictures.empty() && opts.mergePictures.size() != opts.merge.size()) {
     say("--merge-pictures names one folder per report, in the reports' order: " + std::to_string(opts.merge.size()) +
         " reports, " + std::to_string(opts.mergePictures.size()) + " folders");
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   std::vector<grade::ShardReport> shards;
   std::vector<grade::MissingPicture> missing;
@@ -292,7 +292,7 @@ int executeMerge(const TestOptions& opts, const std::vector<std::string>& gradin
                        " not found (the first: '" + missing[0].recorded + "' of " + missing[0].report + ")";
     if (!pictures.empty()) {
       say(what + ": give each report's pictures folder with --merge-pictures DIR...");
-      return exitcode::kNoInput;
+      return run::exitcode::kNoInput;
     }
     say("note: " + what + ": the merged reports name none of them");
   }
@@ -302,12 +302,12 @@ int executeMerge(const TestOptions& opts, const std::vector<std::string>& gradin
   std::string why;
   if (!opts.html.empty() && !render::makeFolder(opts.html, why)) {
     say(why);
-    return exitcode::kIoError;
+    return run::exitcode::kIoError;
   }
   if (!pictures.empty()) {
     if (!render::makeFolder(pictures, why)) {
       say(why);
-      return exitcode::kIoError;
+      return run::exitcode::kIoError;
     }
     grade::copyPictures(result, pictures, result.writeErrors);
   }
@@ -415,7 +415,7 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
     if (opts->merge.empty()) {
       if (!opts->mergePictures.empty()) {
         say("--merge-pictures goes with --merge REPORT.json...");
-        exitCode = exitcode::kUsage;
+        exitCode = run::exitcode::kUsage;
         return;
       }
       exitCode = executeTest(*opts);

@@ -26,7 +26,7 @@ namespace rb::cli {
 namespace {
 
 struct JobOptions {
-  RunOptions run;
+  run::RunOptions run;
   std::string record;       ///< where the JSON record goes
   std::string screen;       ///< where the final screen goes ("": not wanted)
   std::string checkTarget;  ///< "rb9": also rb check --target rb9's warnings
@@ -87,16 +87,16 @@ class HandedFile {
 
 /// The kernel's rules for the job (kernel_confine.h): rb run's, but in its scratch folder that
 /// folder alone to change; never root's capabilities.
-KernelRules jobRules(const JobOptions& opts) {
-  KernelRules rules = runKernelRules(opts.run);
+run::KernelRules jobRules(const JobOptions& opts) {
+  run::KernelRules rules = run::runKernelRules(opts.run);
   std::error_code ec;
   if (!opts.box.empty()) rules.writeDirs = {std::filesystem::absolute(opts.box, ec).string()};
   rules.dropCapabilities = true;
   return rules;
 }
 
-grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
-  grade::DiagRecord r;
+record::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
+  record::DiagRecord r;
   if (sources && d.loc.valid() && d.loc.file < sources->size()) r.file = sources->file(d.loc.file).name();
   r.line = d.loc.line;
   r.col = d.loc.col;
@@ -108,15 +108,15 @@ grade::DiagRecord diagRecord(const SourceSet* sources, const Diagnostic& d) {
 /// rb check's view of the program, as `rb check [--target rb9] [--portable] FILE` reports it
 /// (the warnings of those options as the record's target warnings); `placed`:
 /// as it runs, after a world program that placed the robot.
-void recordCheck(const JobOptions& opts, grade::RunRecord& rec, bool placed = false) {
+void recordCheck(const JobOptions& opts, record::RunRecord& rec, bool placed = false) {
   LintOptions lint;
   lint.realRobot = opts.checkTarget == "rb9";  // a real robot needs no rLocate
   lint.robotPlaced = placed;
   rec.checkDiags.clear();
   rec.targetDiags.clear();
-  LoadedFile checked = loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles, lint);
-  if (checked.exitCode == exitcode::kNoInput) {
-    rec.checkExit = exitcode::kNoInput;
+  run::LoadedFile checked = run::loadFile(opts.run.file, CompileOptions{}, true, false, opts.run.allowFiles, lint);
+  if (checked.exitCode == run::exitcode::kNoInput) {
+    rec.checkExit = run::exitcode::kNoInput;
     return;
   }
   const SourceSet* sources = &checked.program->sources;
@@ -128,11 +128,11 @@ void recordCheck(const JobOptions& opts, grade::RunRecord& rec, bool placed = fa
     extra.sort();
     for (const Diagnostic& d : extra.all()) rec.targetDiags.push_back(diagRecord(sources, d));
   }
-  rec.checkExit = checked.diags.hasErrors() ? exitcode::kRejected : exitcode::kOk;
+  rec.checkExit = checked.diags.hasErrors() ? run::exitcode::kRejected : run::exitcode::kOk;
 }
 
-bool writeRecord(HandedFile& file, const grade::RunRecord& rec) {
-  std::string json = grade::recordToJson(rec), error;
+bool writeRecord(HandedFile& file, const record::RunRecord& rec) {
+  std::string json = record::recordToJson(rec), error;
   if (file.write(json, error)) return true;
   std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
   return false;
@@ -211,8 +211,8 @@ class JobObserver : public RobotObserver {
     if (watch) watch->startAt({e.pose.pos.x(), e.pose.pos.y()});
   }
 
-  grade::PathRecorder recorder;
-  std::optional<grade::ColourWatch> watch;
+  record::PathRecorder recorder;
+  std::optional<record::ColourWatch> watch;
 
  private:
   Machine& machine_;
@@ -220,19 +220,19 @@ class JobObserver : public RobotObserver {
 
 /// A teacher's program (world or post) compiled for running on the student's machine.
 struct TeacherProgram {
-  LoadedFile loaded;
+  run::LoadedFile loaded;
   std::string problem;  ///< why it cannot run
 };
 
 TeacherProgram loadTeacherProgram(const std::string& file) {
   TeacherProgram p;
-  p.loaded = loadFile(file, CompileOptions{}, false);
-  if (p.loaded.exitCode == exitcode::kNoInput) {
+  p.loaded = run::loadFile(file, CompileOptions{}, false);
+  if (p.loaded.exitCode == run::exitcode::kNoInput) {
     p.problem = "cannot read " + file + ": " + p.loaded.readError;
   } else if (!p.loaded.compiled) {
     for (const Diagnostic& d : p.loaded.diags.all())
       if (d.severity == Severity::Error) {
-        grade::DiagRecord r = diagRecord(&p.loaded.program->sources, d);
+        record::DiagRecord r = diagRecord(&p.loaded.program->sources, d);
         p.problem = r.file + ":" + std::to_string(r.line) + ":" + std::to_string(r.col) + ": " + r.message;
         break;
       }
@@ -241,9 +241,9 @@ TeacherProgram loadTeacherProgram(const std::string& file) {
 }
 
 /// Runs a teacher's program on the run's machine with the run's limits. Returns its result.
-RunResult runTeacherProgram(const TeacherProgram& p, HeadlessRun& run, const RunOptions& opts) {
+RunResult runTeacherProgram(const TeacherProgram& p, run::HeadlessRun& run, const run::RunOptions& opts) {
   Interpreter interpreter(*p.loaded.compiled, *run.machine);
-  return interpreter.run(runLimits(opts));
+  return interpreter.run(run::runLimits(opts));
 }
 
 int executeJob(JobOptions opts) {
@@ -255,39 +255,39 @@ int executeJob(JobOptions opts) {
   for (auto [file, path] : {std::pair{&recordFile, &opts.record}, {&screenFile, &opts.screen}, {&replayFile, &opts.replay}})
     if (std::string why = file->open(*path); !why.empty()) {
       std::fprintf(stderr, "rb test-job: %s\n", why.c_str());
-      return exitcode::kIoError;
+      return run::exitcode::kIoError;
     }
   std::optional<TeacherProgram> world;
   std::vector<TeacherProgram> posts;
   if (!opts.world.empty()) world = loadTeacherProgram(opts.world);
   for (const std::string& p : opts.posts) posts.push_back(loadTeacherProgram(p));
-  HeadlessRun run;
-  run.memory = std::make_shared<ResidentMemory>();
-  grade::RunRecord rec;
-  KernelStatus kernel = confineProcess(jobRules(opts));
+  run::HeadlessRun run;
+  run.memory = std::make_shared<run::ResidentMemory>();
+  record::RunRecord rec;
+  run::KernelStatus kernel = run::confineProcess(jobRules(opts));
   opts.run.confined = true;
   rec.confinement = kernel.problem;
   if (!kernel.complete() && opts.run.requireSandbox) {
     std::fprintf(stderr, "rb run: --require-sandbox: the kernel cannot confine this run: %s\n", kernel.problem.c_str());
     rec.complete = true;
-    rec.exitCode = exitcode::kRuntime;
+    rec.exitCode = run::exitcode::kRuntime;
     writeRecord(recordFile, rec);
-    return exitcode::kRuntime;
+    return run::exitcode::kRuntime;
   }
   recordCheck(opts, rec);
   // Written now and again at the end: a run killed at its time limit keeps rb check's part.
   rec.complete = false;
-  if (!writeRecord(recordFile, rec)) return exitcode::kIoError;
+  if (!writeRecord(recordFile, rec)) return run::exitcode::kIoError;
   rec.complete = true;
-  int code = exitcode::kOk;
+  int code = run::exitcode::kOk;
   if (opts.run.tui) {
-    code = runTui(opts.run);  // a job has no terminal: this reports why, as rb run --tui would
+    code = tui::runTui(opts.run);  // a job has no terminal: this reports why, as rb run --tui would
   } else {
     std::vector<uint32_t> colours;
     for (const std::string& hex : opts.watch) colours.push_back(static_cast<uint32_t>(std::stoul(hex, nullptr, 16)));
     std::optional<JobObserver> observer;
     std::string output;  // the student's output as it goes to stdout, for the post programs
-    run.onInput = [&rec](const HeadlessHost::InputSpan& s) {
+    run.onInput = [&rec](const run::HeadlessHost::InputSpan& s) {
       if (rec.inputs.size() < 100000) rec.inputs.push_back({s.start, s.promptEnd, s.end});
     };
     std::optional<Recording> recording;
@@ -297,12 +297,12 @@ int executeJob(JobOptions opts) {
         if (keep && output.size() < (1u << 20)) output.append(text.substr(0, (1u << 20) - output.size()));
         if (recording) recording->output(text);
       };
-    run.beforeRun = [&](HeadlessRun& r) -> std::string {
+    run.beforeRun = [&](run::HeadlessRun& r) -> std::string {
       observer.emplace(colours, *r.machine);
       if (world) {
         if (!world->problem.empty()) return rec.worldError = "the world program " + world->problem;
         r.machine->setObserver(nullptr);
-        HeadlessHost& host = r.headlessHost();
+        run::HeadlessHost& host = r.headlessHost();
         auto saved = std::move(host.outputHook);
         host.outputHook = [](std::string_view) {};  // the world's prints are not the student's
         // Nor is the student's input the world's: its `input` reads empty lines.
@@ -311,7 +311,7 @@ int executeJob(JobOptions opts) {
         host.inputSource = nullptr;
         host.outputHook = std::move(saved);
         if (w.error) {
-          grade::DiagRecord d = diagRecord(&world->loaded.program->sources, *w.error);
+          record::DiagRecord d = diagRecord(&world->loaded.program->sources, *w.error);
           return rec.worldError = "the world program " + d.file + " stopped at line " +
                                   std::to_string(d.line) + ": " + d.message;
         }
@@ -330,7 +330,7 @@ int executeJob(JobOptions opts) {
       return "";
     };
     std::optional<std::vector<render::ColourRun>> finalScreen;
-    run.afterRun = [&](HeadlessRun& r) {
+    run.afterRun = [&](run::HeadlessRun& r) {
       r.machine->setObserver(nullptr);
       if (recording) recording->finish(*r.machine, r.result);  // before the post programs
       // The student's screen as their program left it: a post program's prints (a hidden
@@ -338,22 +338,22 @@ int executeJob(JobOptions opts) {
       if (screenFile.wanted())
         finalScreen = render::composeRuns(r.machine->canvas().pixels(), render::robotView(*r.machine));
       if (posts.empty()) return;
-      HeadlessHost& host = r.headlessHost();
+      run::HeadlessHost& host = r.headlessHost();
       host.flush();
       // What the student printed, as the post programs' input.
       host.copyHook = nullptr;
       std::vector<std::string> lines;
-      std::string printed = grade::printedOutput(output, rec.inputs);
+      std::string printed = record::printedOutput(output, rec.inputs);
       for (size_t at = 0; at < printed.size();) {
         size_t nl = std::min(printed.find('\n', at), printed.size());
         lines.push_back(printed.substr(at, nl - at));
         at = nl + 1;
       }
       for (size_t i = 0; i < posts.size(); ++i) {
-        grade::RunRecord::Post result;
+        record::RunRecord::Post result;
         result.file = opts.posts[i];
         if (!posts[i].problem.empty()) {
-          result.error = grade::DiagRecord{opts.posts[i], 0, 0, "error", posts[i].problem};
+          result.error = record::DiagRecord{opts.posts[i], 0, 0, "error", posts[i].problem};
           rec.posts.push_back(std::move(result));
           continue;
         }
@@ -375,7 +375,7 @@ int executeJob(JobOptions opts) {
     CompileOptions compile;
     compile.lineTracing = true;  // to count the statements exactly, up to a runtime error
     uint64_t started = 0;
-    code = runHeadless("rb run", opts.run, compile, stdout, nullptr, run, [&](SourceLoc loc) {
+    code = run::runHeadless("rb run", opts.run, compile, stdout, nullptr, run, [&](SourceLoc loc) {
       ++started;
       if (recording) recording->statement(loc, *run.machine);
     });
@@ -386,8 +386,8 @@ int executeJob(JobOptions opts) {
       for (const Diagnostic& d : run.loaded.diags.all())
         if (d.severity == Severity::Error) rec.loadErrors.push_back(diagRecord(sources, d));
     } else if (run.ran) {
-      rec.status = grade::statusName(run.result.status);
-      rec.limit = grade::limitName(run.result.status);
+      rec.status = record::statusName(run.result.status);
+      rec.limit = record::limitName(run.result.status);
       if (run.result.error) {
         rec.error = diagRecord(sources, *run.result.error);
         if (!rec.limit.empty()) {
@@ -396,7 +396,7 @@ int executeJob(JobOptions opts) {
           rec.loopLast = last;
         }
       }
-      rec.steps = countedSteps(run.result, started);
+      rec.steps = run::countedSteps(run.result, started);
       rec.seed = run.seed;
       rec.located = run.machine->robot().located();
       const Pose& pose = run.machine->robot().pose();
@@ -405,7 +405,7 @@ int executeJob(JobOptions opts) {
       rec.penDown = run.machine->robot().penDown();
       rec.radius = run.machine->robot().radius();
       if (observer) {
-        grade::PathRecorder& recorder = observer->recorder;
+        record::PathRecorder& recorder = observer->recorder;
         rec.crashed = recorder.crashed;
         rec.moves = recorder.moves;
         rec.path = std::move(recorder.path);
@@ -428,14 +428,14 @@ int executeJob(JobOptions opts) {
       }
       if (screenFile.wanted() && finalScreen) {
         std::string error;
-        std::string bytes = grade::screenFileBytes(*finalScreen, Canvas::kWidth, Canvas::kHeight);
+        std::string bytes = record::screenFileBytes(*finalScreen, Canvas::kWidth, Canvas::kHeight);
         rec.screen = screenFile.write(bytes, error);
         if (!rec.screen) std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
       }
     }
   }
   rec.exitCode = code;
-  if (!writeRecord(recordFile, rec)) return exitcode::kIoError;
+  if (!writeRecord(recordFile, rec)) return run::exitcode::kIoError;
   return code;
 }
 

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 struct TraceOptions {
   std::vector<std::string> files;
-  RunOptions run;
+  run::RunOptions run;
   std::string format = "text";
   std::string outDir;
   bool sensors = false;
@@ -38,26 +38,26 @@ int traceOne(const TraceOptions& opts, const std::string& file, std::FILE* out, 
   TraceOptions one = opts;
   one.run.file = file;
   one.run.confined = true;  // executeTrace confined the process for every file
-  HeadlessRun run;
-  trace::TraceWriter writer(
-      trace::TraceSettings{opts.format, opts.sensors, opts.lines}, out, program, csvHeader,
+  run::HeadlessRun run;
+  record::TraceWriter writer(
+      record::TraceSettings{opts.format, opts.sensors, opts.lines}, out, program, csvHeader,
       [&run]() -> const SourceSet* { return run.loaded.program ? &run.loaded.program->sources : nullptr; },
       [&run]() -> const Machine* { return run.machine.get(); });
   CompileOptions compile;
   compile.lineTracing = true;  // to know the line of each output (and for --lines)
-  int code = runHeadless("rb trace", one.run, compile, nullptr, &writer, run,
-                         [&](SourceLoc loc) { writer.line(loc); },
-                         [&](std::string_view text) { writer.output(text); });
-  trace::TraceEnd end;
+  int code = run::runHeadless("rb trace", one.run, compile, nullptr, &writer, run,
+                              [&](SourceLoc loc) { writer.line(loc); },
+                              [&](std::string_view text) { writer.output(text); });
+  record::TraceEnd end;
   end.exit = code;
   if (run.ran) {
     end.result = &run.result;
     end.stepLimitIsError = run.stepLimitIsError;
-    end.steps = countedSteps(run.result, writer.statements());
+    end.steps = run::countedSteps(run.result, writer.statements());
   } else if (run.loaded.program && !run.loaded.compiled) {
     end.loadErrors = &run.loaded.diags;
   } else {
-    end.notRun = code == exitcode::kNoInput ? "cannot read '" + file + "': no such file"
+    end.notRun = code == run::exitcode::kNoInput ? "cannot read '" + file + "': no such file"
                                             : "the program did not run (see standard error)";
   }
   writer.end(end);
@@ -74,32 +74,32 @@ int executeTrace(const TraceOptions& opts) {
       if (auto [it, fresh] = names.emplace(name, f); !fresh) {
         std::fprintf(stderr, "rb trace: '%s' and '%s' would both be traced to %s; trace them separately\n",
                      it->second.c_str(), f.c_str(), name.c_str());
-        return exitcode::kUsage;
+        return run::exitcode::kUsage;
       }
     }
     std::string error;
     if (!render::makeFolder(opts.outDir, error)) {
       std::fprintf(stderr, "rb trace: %s\n", error.c_str());
-      return exitcode::kIoError;
+      return run::exitcode::kIoError;
     }
   }
   // One process traces every file: the kernel's rules cover all their folders, once.
   if (!opts.files.empty()) {
-    RunOptions first = opts.run;
+    run::RunOptions first = opts.run;
     first.file = opts.files[0];
     std::vector<std::string> outputs;
     if (!opts.outDir.empty()) outputs.push_back((fs::path(opts.outDir) / "trace").string());
-    KernelRules rules = runKernelRules(first, outputs);
+    run::KernelRules rules = run::runKernelRules(first, outputs);
     std::error_code ec;
     for (const std::string& f : opts.files)
       rules.writeDirs.push_back(f == "-" ? fs::current_path(ec).string() : fs::absolute(f, ec).parent_path().string());
-    KernelStatus status = confineProcess(rules);
+    run::KernelStatus status = run::confineProcess(rules);
     if (!status.complete() && opts.run.requireSandbox) {
       std::fprintf(stderr, "rb trace: --require-sandbox: the kernel cannot confine this run: %s\n", status.problem.c_str());
-      return exitcode::kRuntime;
+      return run::exitcode::kRuntime;
     }
   }
-  int result = exitcode::kOk;
+  int result = run::exitcode::kOk;
   for (size_t i = 0; i < opts.files.size(); ++i) {
     const std::string& file = opts.files[i];
     int code;
@@ -108,23 +108,23 @@ int executeTrace(const TraceOptions& opts) {
       std::FILE* out = std::fopen(path.c_str(), "wb");
       if (!out) {
         std::fprintf(stderr, "rb trace: cannot write '%s'\n", path.c_str());
-        return exitcode::kIoError;
+        return run::exitcode::kIoError;
       }
       code = traceOne(opts, file, out, "", true);
       bool failed = std::ferror(out) != 0;
       if (std::fclose(out) != 0 || failed) {
         std::fprintf(stderr, "rb trace: cannot write '%s'\n", path.c_str());
-        return exitcode::kIoError;
+        return run::exitcode::kIoError;
       }
     } else {
       if (several && opts.format == "text") std::printf("%s==> %s <==\n", i ? "\n" : "", file.c_str());
       code = traceOne(opts, file, stdout, several && opts.format != "text" ? file : "", i == 0);
     }
-    if (result == exitcode::kOk) result = code;
+    if (result == run::exitcode::kOk) result = code;
   }
   if (std::ferror(stdout)) {
     std::fprintf(stderr, "rb trace: cannot write to standard output\n");
-    return exitcode::kIoError;
+    return run::exitcode::kIoError;
   }
   return result;
 }

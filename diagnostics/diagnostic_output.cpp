@@ -8,7 +8,7 @@
 #include "base/columns.h"
 #include "base/rules.h"
 
-namespace rb::cli {
+namespace rb::diagnostics {
 
 using nlohmann::json;
 
@@ -353,4 +353,4 @@ void DiagnosticReport::finish() {
   std::fwrite(text.data(), 1, text.size(), out_);
 }
 
-}  // namespace rb::cli
+}  // namespace rb::diagnostics

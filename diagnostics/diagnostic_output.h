@@ -12,7 +12,7 @@
 
 #include "base/diagnostic.h"
 
-namespace rb::cli {
+namespace rb::diagnostics {
 
 enum class DiagFormat { Text, Json, Sarif, Github };
 
@@ -73,4 +73,4 @@ nlohmann::json diagnosticToGccJson(const SourceSet& sources, const Diagnostic& d
 /// long form).
 const char* ruleDescription(const std::string& code);
 
-}  // namespace rb::cli
+}  // namespace rb::diagnostics

@@ -6,7 +6,7 @@
 #include "diagnostic_output.h"
 
 using namespace rb;
-using namespace rb::cli;
+using namespace rb::diagnostics;
 
 namespace {
 /// What a report writes, through a temporary FILE.

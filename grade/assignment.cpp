@@ -18,6 +18,10 @@
 
 namespace rb::grade {
 
+using record::P2;
+using record::Region;
+using record::regionInside;
+
 namespace fs = std::filesystem;
 
 namespace {

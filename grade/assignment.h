@@ -66,15 +66,15 @@ struct Check {
   bool allowWarnings = false;
   std::string target;      ///< "rb9": also rb check --target rb9's warnings
   // EndsIn, Avoid, Touch: regions (EndsIn has exactly one).
-  std::vector<Region> regions;
+  std::vector<record::Region> regions;
   // Avoid, Touch: colours as 0xRRGGBB, with the names the file gave them.
   std::vector<uint32_t> colours;
   std::vector<std::string> colourNames;
   // Visits
-  std::vector<P2> targets;
+  std::vector<record::P2> targets;
   bool inOrder = true;
   // Trail (reference), Visits, the solution and screen checks: how close is close.
-  Polylines reference;
+  record::Polylines reference;
   double tolerance = 0;    ///< pixels, or a share of pixels (0..1) for the screen checks
   // Screen
   std::string picture;     ///< absolute path of the reference PNG

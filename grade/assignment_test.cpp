@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 using namespace rb::grade;
+using rb::record::Region;
 namespace fs = std::filesystem;
 
 namespace {

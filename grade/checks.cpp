@@ -14,6 +14,26 @@
 
 namespace rb::grade {
 
+using record::DiagRecord;
+using record::HausdorffDistance;
+using record::P2;
+using record::Polylines;
+using record::Reach;
+using record::Region;
+using record::RunRecord;
+using record::Screen;
+using record::VisitResult;
+using record::distance;
+using record::empty;
+using record::firstReach;
+using record::hausdorff;
+using record::length;
+using record::outside;
+using record::printedOutput;
+using record::toUtf8;
+using record::visitAny;
+using record::visitInOrder;
+
 namespace {
 
 std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }

@@ -22,9 +22,9 @@ struct RunOutcome {
   std::string output;            ///< standard output (at most kOutputCap bytes)
   bool outputCut = false;        ///< there was more
   std::string errors;            ///< standard error (at most kOutputCap bytes)
-  std::optional<RunRecord> record;
+  std::optional<record::RunRecord> record;
   std::string recordError;       ///< why there is no record
-  std::optional<Screen> screen;
+  std::optional<record::Screen> screen;
   std::string replayFile;        ///< the replay the run wrote (a temporary file), or ""
 };
 
@@ -47,7 +47,7 @@ struct CheckResult {
   std::vector<std::string> feedback;
   /// Where on the screen the check failed (the robot entered a region, touched a colour,
   /// crashed, ended outside, missed a waypoint), in the first seed's run; for pictures.
-  std::optional<P2> at;
+  std::optional<record::P2> at;
 };
 
 /// How each limit of a run is named in messages, as whoever set it wrote it
@@ -63,7 +63,7 @@ std::vector<CheckResult> checkComments(const CommentSpec& spec, const RunOutcome
 /// What the assignment's checks compare with, prepared once for the whole class.
 struct References {
   std::vector<RunOutcome> solution;                      ///< one per seed, when needed
-  std::vector<std::optional<Screen>> pictures;           ///< per check: the screen check's PNG
+  std::vector<std::optional<record::Screen>> pictures;   ///< per check: the screen check's PNG
   LimitNames limits;
   bool aboutRobot = false;  ///< a program that never places or moves the robot earns nothing
 };
@@ -90,13 +90,13 @@ struct PixelDifference {
 };
 std::optional<PixelDifference> compareImages(const render::RgbImage& a, const render::RgbImage& b);
 /// The same for two screens as runs, in time proportional to the runs.
-std::optional<PixelDifference> compareScreens(const Screen& a, const Screen& b);
+std::optional<PixelDifference> compareScreens(const record::Screen& a, const record::Screen& b);
 /// Why a run cannot be graded at all (the process died, nothing ran), or "".
 std::string unrunnable(const RunOutcome& run);
 /// "the robot crashed at prog.bas:12:3 after 418 steps: robot crashed into an obstacle" style,
 /// for a run that stopped with a runtime error or a limit (named as `limits` says, with the
 /// loop it was in); "" for one that finished.
-std::string stopDescription(const RunRecord& record, const LimitNames& limits = {});
+std::string stopDescription(const record::RunRecord& record, const LimitNames& limits = {});
 /// The output as checks compare it: without input's prompts and echo unless `prompts`.
 std::string comparedOutput(const RunOutcome& run, bool prompts);
 /// A number of pixels for a message: "37", "37.5", "infinitely".

@@ -4,6 +4,15 @@
 #include <limits>
 
 using namespace rb::grade;
+using rb::record::DiagRecord;
+using rb::record::P2;
+using rb::record::Polylines;
+using rb::record::Region;
+using rb::record::RunRecord;
+using rb::record::Screen;
+using rb::record::imageOf;
+using rb::record::printedOutput;
+using rb::record::screenOf;
 
 namespace {
 

@@ -20,6 +20,15 @@
 
 namespace rb::grade {
 
+using record::DiagRecord;
+using record::Region;
+using record::RunRecord;
+using record::Screen;
+using record::imageOf;
+using record::readScreenFile;
+using record::recordFromJson;
+using record::screenOf;
+
 namespace fs = std::filesystem;
 
 namespace {

@@ -79,7 +79,7 @@ struct ProgramResult {
   double points = 0, maxPoints = 0;
   std::string output;              ///< the first run's output (for reports), shortened
   /// Where input's prompts and echoes are in `output` (a transcript's marks).
-  std::vector<RunRecord::InputMark> inputs;
+  std::vector<record::RunRecord::InputMark> inputs;
   std::string errors;              ///< the first run's standard error, shortened
   std::string picture;             ///< the PNG written for it, or ""
   std::string pictureCaption;      ///< what the picture draws, from its legend ("Drawn: your trail; ...")

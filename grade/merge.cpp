@@ -13,6 +13,8 @@
 
 namespace rb::grade {
 
+using record::RunRecord;
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 

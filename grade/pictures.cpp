@@ -10,6 +10,17 @@
 
 namespace rb::grade {
 
+using record::P2;
+using record::Polyline;
+using record::Polylines;
+using record::Region;
+using record::distance;
+using record::distanceToSegment;
+using record::empty;
+using record::labelPoint;
+using record::outside;
+using record::toUtf8;
+
 namespace {
 
 constexpr int kWidth = kPictureWidth, kArena = kArenaHeight, kHeight = kPictureHeight;

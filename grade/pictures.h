@@ -17,14 +17,14 @@ namespace rb::grade {
 /// A region the assignment names, drawn with its label.
 struct PictureRegion {
   enum Role { Goal, Avoid } role = Goal;  ///< ends-in / touch (green) or avoid (orange, hatched)
-  Region region;
+  record::Region region;
   std::string label;  ///< the check's name
 };
 
 /// Where a check failed (the robot entered an area, touched a colour, crashed...), marked with
 /// a cross and the check's name.
 struct PictureMark {
-  P2 at;
+  record::P2 at;
   std::string label;
 };
 
@@ -37,19 +37,19 @@ struct PictureColour {
 };
 
 struct PictureInput {
-  Polylines student;                          ///< the student's trail
+  record::Polylines student;                  ///< the student's trail
   /// The student's robot's path (its centre, from the recording), drawn whatever the pen did.
-  Polylines studentPath;
-  Polylines reference;                        ///< the solution's trail (or the trail check's)
+  record::Polylines studentPath;
+  record::Polylines reference;                ///< the solution's trail (or the trail check's)
   std::optional<render::RgbImage> background; ///< the solution's final screen, shown faded
   std::optional<render::RgbImage> studentScreen; ///< the student's final screen (student view)
-  std::optional<P2> studentEnd;               ///< where the student's robot ended
-  std::optional<P2> referenceEnd;
+  std::optional<record::P2> studentEnd;       ///< where the student's robot ended
+  std::optional<record::P2> referenceEnd;
   double robotRadius = 20;
   /// A picture for the student: no solution (reference, background, referenceEnd are not
   /// drawn even when given); the student's own final screen faded behind their trail.
   bool studentView = false;
-  std::vector<P2> waypoints;                  ///< numbered in order (the visits checks)
+  std::vector<record::P2> waypoints;          ///< numbered in order (the visits checks)
   std::vector<PictureRegion> regions;
   std::vector<PictureColour> colours;         ///< colour checks, in the legend
   std::vector<PictureMark> failures;          ///< where checks failed

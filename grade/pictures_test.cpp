@@ -6,6 +6,8 @@
 #include <vector>
 
 using namespace rb::grade;
+using rb::record::P2;
+using rb::record::Region;
 using rb::render::RgbImage;
 
 namespace {

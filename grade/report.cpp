@@ -14,6 +14,12 @@
 
 namespace rb::grade {
 
+using record::RunRecord;
+using record::TextShape;
+using record::csvTextField;
+using record::shownText;
+using record::toUtf8;
+
 using nlohmann::json;
 
 namespace {

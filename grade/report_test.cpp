@@ -7,6 +7,7 @@
 #include "pictures.h"
 
 using namespace rb::grade;
+using rb::record::csvField;
 
 namespace {
 

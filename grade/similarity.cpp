@@ -19,6 +19,10 @@
 
 namespace rb::grade {
 
+using record::TextShape;
+using record::shownText;
+using record::toUtf8;
+
 namespace {
 
 namespace fs = std::filesystem;

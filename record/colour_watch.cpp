@@ -4,7 +4,7 @@
 #include <bit>
 #include <cmath>
 
-namespace rb::grade {
+namespace rb::record {
 
 namespace {
 
@@ -310,4 +310,4 @@ void ColourWatch::readCell(int cell) {
   --unreadInBlock_[block];
 }
 
-}  // namespace rb::grade
+}  // namespace rb::record

@@ -39,7 +39,7 @@
 #include "record.h"
 #include "screen/canvas.h"
 
-namespace rb::grade {
+namespace rb::record {
 
 /// The squared distance from pixel (x, y) to a point c of the robot's path, as the rule measures
 /// it: the pixel lies under the disc of radius r there when this is at most r * r.
@@ -141,4 +141,4 @@ class ColourWatch {
   uint64_t searches_ = 0, cellsRead_ = 0;
 };
 
-}  // namespace rb::grade
+}  // namespace rb::record

@@ -7,7 +7,7 @@
 #include <sstream>
 
 using namespace rb;
-using namespace rb::grade;
+using namespace rb::record;
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <numeric>
 
-namespace rb::grade {
+namespace rb::record {
 
 namespace {
 
@@ -302,4 +302,4 @@ VisitResult visitAny(const Polylines& path, const std::vector<P2>& targets, doub
   return {};
 }
 
-}  // namespace rb::grade
+}  // namespace rb::record

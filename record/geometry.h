@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-namespace rb::grade {
+namespace rb::record {
 
 struct P2 {
   double x = 0, y = 0;
@@ -89,4 +89,4 @@ VisitResult visitInOrder(const Polylines& path, const std::vector<P2>& targets, 
 /// The same without order: each target on its own.
 VisitResult visitAny(const Polylines& path, const std::vector<P2>& targets, double tolerance);
 
-}  // namespace rb::grade
+}  // namespace rb::record

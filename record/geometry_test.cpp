@@ -6,7 +6,7 @@
 #include <limits>
 #include <random>
 
-using namespace rb::grade;
+using namespace rb::record;
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include "text.h"
 
-namespace rb::grade {
+namespace rb::record {
 
 using nlohmann::json;
 
@@ -312,4 +312,4 @@ std::optional<RunRecord> recordFromJson(std::string_view text, std::string& erro
   }
 }
 
-}  // namespace rb::grade
+}  // namespace rb::record

@@ -15,7 +15,7 @@
 #include "machine/machine.h"
 #include "png_writer.h"
 
-namespace rb::grade {
+namespace rb::record {
 
 /// A diagnostic as text fields: the file's name as the program named it, 1-based line and column.
 struct DiagRecord {
@@ -153,4 +153,4 @@ std::string recordToJson(const RunRecord& record);
 /// Parses a record; nullopt with `error` set when the text is not one.
 std::optional<RunRecord> recordFromJson(std::string_view text, std::string& error);
 
-}  // namespace rb::grade
+}  // namespace rb::record

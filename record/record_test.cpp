@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 using namespace rb;
-using namespace rb::grade;
+using namespace rb::record;
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace rb::grade {
+namespace rb::record {
 
 namespace {
 
@@ -167,4 +167,4 @@ std::string csvTextField(std::string_view text) {
   return csvField(quoted);
 }
 
-}  // namespace rb::grade
+}  // namespace rb::record

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace rb::grade {
+namespace rb::record {
 
 /// `text` as valid UTF-8: well-formed UTF-8 stays, every other byte is read as Latin-1.
 /// `xmlSafe` also replaces the control characters XML 1.0 cannot carry with U+FFFD.
@@ -47,4 +47,4 @@ std::string csvField(const std::string& text);
 /// against formula injection), quoted as csvField() quotes.
 std::string csvTextField(std::string_view text);
 
-}  // namespace rb::grade
+}  // namespace rb::record

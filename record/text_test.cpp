@@ -2,7 +2,7 @@
 
 #include <catch2/catch.hpp>
 
-using rb::grade::toUtf8;
+using rb::record::toUtf8;
 
 TEST_CASE("text becomes UTF-8 without losing Latin-1 bytes", "[grade][text]") {
   CHECK(toUtf8("plain") == "plain");
@@ -16,9 +16,9 @@ TEST_CASE("text becomes UTF-8 without losing Latin-1 bytes", "[grade][text]") {
   CHECK(toUtf8("tab\tnl\n", true) == "tab\tnl\n");
 }
 
-using rb::grade::csvTextField;
-using rb::grade::shownText;
-using rb::grade::TextShape;
+using rb::record::csvTextField;
+using rb::record::shownText;
+using rb::record::TextShape;
 
 namespace {
 std::string line(std::string_view s) { return shownText(s, TextShape::Line); }

@@ -8,7 +8,7 @@
 #include "record.h"
 #include "text.h"
 
-namespace rb::trace {
+namespace rb::record {
 
 namespace {
 
@@ -89,7 +89,7 @@ struct TraceRecord {
   std::optional<uint64_t> steps;
   std::optional<int> exit;
   bool located = false;
-  std::vector<grade::DiagRecord> errors;  ///< end of a rejected program: its load errors
+  std::vector<DiagRecord> errors;  ///< end of a rejected program: its load errors
 };
 
 TraceWriter::TraceWriter(TraceSettings settings, std::FILE* out, std::string program, bool csvHeader,
@@ -150,8 +150,8 @@ void TraceWriter::end(const TraceEnd& e) {
   const SourceSet* sources = sources_();
   if (e.result) {
     const RunResult& result = *e.result;
-    r.status = grade::statusName(result.status);
-    r.limit = grade::limitName(result.status);
+    r.status = statusName(result.status);
+    r.limit = limitName(result.status);
     if (result.status == RunStatus::StepLimit && !e.stepLimitIsError) r.status = "limit";
     r.steps = e.steps;
     if (result.error) {
@@ -170,7 +170,7 @@ void TraceWriter::end(const TraceEnd& e) {
     r.steps = 0;
     for (const Diagnostic& d : e.loadErrors->all()) {
       if (d.severity != Severity::Error) continue;
-      grade::DiagRecord rec;
+      DiagRecord rec;
       if (sources && d.loc.valid() && d.loc.file < sources->size()) rec.file = sources->file(d.loc.file).name();
       rec.line = d.loc.line;
       rec.col = d.loc.col;
@@ -204,7 +204,6 @@ void TraceWriter::write(const TraceRecord& r) {
 
 /// JSON strings are UTF-8; a Windows program's Latin-1 text is converted (record/text.h).
 void TraceWriter::writeJson(const TraceRecord& r) {
-  using grade::toUtf8;
   Json j;
   if (!program_.empty()) j["program"] = toUtf8(program_);
   j["seq"] = seq_;
@@ -220,7 +219,7 @@ void TraceWriter::writeJson(const TraceRecord& r) {
     if (!r.text.empty()) j["message"] = toUtf8(r.text);
     if (!r.errors.empty()) {
       Json errors = Json::array();
-      for (const grade::DiagRecord& e : r.errors)
+      for (const DiagRecord& e : r.errors)
         errors.push_back({{"file", toUtf8(e.file)}, {"line", e.line}, {"col", e.col}, {"message", toUtf8(e.message)}});
       j["errors"] = errors;
     }
@@ -256,10 +255,10 @@ void TraceWriter::writeCsv(const TraceRecord& r) {
   std::string command = end ? r.limit : r.command;
   std::string col = end || r.event == "output" ? std::to_string(r.loc.col) : "";
   std::string text = r.text;
-  std::string row = (program_.empty() ? "" : grade::csvField(program_) + ",") + std::to_string(seq_) + "," +
-                    grade::csvField(fileName(r.loc)) + "," + std::to_string(r.loc.line) + "," + r.event + "," +
-                    grade::csvField(command) + "," + grade::csvField(r.args) + "," + x + "," + y + "," + h + "," + pen + "," +
-                    (r.value ? formatNumber(*r.value) : "") + "," + col + "," + grade::csvField(text) + "," +
+  std::string row = (program_.empty() ? "" : csvField(program_) + ",") + std::to_string(seq_) + "," +
+                    csvField(fileName(r.loc)) + "," + std::to_string(r.loc.line) + "," + r.event + "," +
+                    csvField(command) + "," + csvField(r.args) + "," + x + "," + y + "," + h + "," + pen + "," +
+                    (r.value ? formatNumber(*r.value) : "") + "," + col + "," + csvField(text) + "," +
                     r.status + "," + (r.steps ? std::to_string(*r.steps) : "");
   std::fprintf(out_, "%s\n", row.c_str());
   }
@@ -292,4 +291,4 @@ void TraceWriter::writeText(const TraceRecord& r) {
   }
 
 
-}  // namespace rb::trace
+}  // namespace rb::record

@@ -16,7 +16,7 @@
 #include "machine/interpreter.h"
 #include "machine/machine.h"
 
-namespace rb::trace {
+namespace rb::record {
 
 struct TraceSettings {
   std::string format = "text";  ///< text, jsonl or csv
@@ -72,4 +72,4 @@ class TraceWriter : public RobotObserver {
   uint64_t statements_ = 0;  ///< statements started so far
 };
 
-}  // namespace rb::trace
+}  // namespace rb::record

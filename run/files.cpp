@@ -12,7 +12,7 @@
 
 namespace fs = std::filesystem;
 
-namespace rb::cli {
+namespace rb::run {
 
 namespace {
 bool sameIgnoringCase(const std::string& a, const std::string& b) {
@@ -183,4 +183,4 @@ std::vector<std::string> libraryDirs() {
   return dirs;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -8,7 +8,7 @@
 
 #include "lang/loader.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 /// Reads program files from the file system. A name that does not exist as written is also
 /// looked up without regard to case, since RobotBASIC programs come from Windows.
@@ -48,4 +48,4 @@ std::vector<std::string> expandProgramPaths(const std::vector<std::string>& path
 /// (colon-separated), the installed share/rb/lib beside the executable, and the source tree's lib/.
 std::vector<std::string> libraryDirs();
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -10,7 +10,7 @@
 
 #include "base/runtime_error.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 ResidentMemory::ResidentMemory() : fd_(::open("/proc/self/statm", O_RDONLY | O_CLOEXEC)) {}
 
@@ -164,4 +164,4 @@ double HeadlessHost::wallSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -16,7 +16,7 @@
 #include "machine/watchdog.h"
 #include "input/input_script.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 /// The process's resident memory, read from /proc/self/statm through a descriptor opened when
 /// this is made: so it still reads once the kernel's rules (kernel_confine.h) hide /proc.
@@ -121,4 +121,4 @@ class HeadlessHost : public Host {
   Watchdog watchdog_;
 };
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -11,7 +11,7 @@
 #include "files.h"
 #include "robot_port.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 int loadInputScript(const char* command, const RunOptions& opts, InputScript& script) {
   script = InputScript{};
@@ -100,4 +100,4 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
   return run.conclude(command, opts, exitcode::kRuntime);
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -9,7 +9,7 @@
 #include "headless_host.h"
 #include "program_run.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 /// A headless run: its host is a HeadlessHost.
 struct HeadlessRun : ProgramRun {
@@ -52,4 +52,4 @@ int runHeadless(const char* command, const RunOptions& opts, const CompileOption
 /// --max-steps the interpreter's count (the limit) is the one to report.
 uint64_t countedSteps(const RunResult& result, uint64_t started);
 
-}  // namespace rb::cli
+}  // namespace rb::run

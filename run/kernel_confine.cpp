@@ -20,7 +20,7 @@
 #include <sys/syscall.h>
 #endif
 
-namespace rb::cli {
+namespace rb::run {
 
 namespace {
 
@@ -303,4 +303,4 @@ std::vector<std::string> serialDevicePaths() {
 
 #endif
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace rb::cli {
+namespace rb::run {
 
 /// What a confined process may reach. Paths that do not exist are left out.
 struct KernelRules {
@@ -72,4 +72,4 @@ std::vector<std::string> spawnSystemPaths();
 /// /dev/ttyUSB*, /dev/ttyACM*, /dev/rfcomm*), for KernelRules::devices.
 std::vector<std::string> serialDevicePaths();
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -5,7 +5,7 @@
 #include "exit_codes.h"
 #include "files.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 LoadedFile loadFile(const std::string& file, const CompileOptions& options, bool lint, bool compact,
                     const std::vector<std::string>& allowed, const LintOptions& lintOptions) {
@@ -62,4 +62,4 @@ void printDiagnostics(std::FILE* out, const SourceSet& sources, const Diagnostic
   }
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -12,7 +12,7 @@
 #include "base/diagnostic.h"
 #include "lang/loader.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 struct LoadedFile {
   std::unique_ptr<LoadedProgram> program;  ///< null when the file could not be read
@@ -43,4 +43,4 @@ void printDiagnostic(std::FILE* out, const SourceSet& sources, const Diagnostic&
 void printWarningLines(const char* command, const std::string& file, const SourceSet& sources,
                        const DiagnosticList& diags, bool color);
 
-}  // namespace rb::cli
+}  // namespace rb::run

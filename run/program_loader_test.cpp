@@ -9,7 +9,7 @@
 #include "program_loader.h"
 
 using namespace rb;
-using namespace rb::cli;
+using namespace rb::run;
 
 namespace {
 

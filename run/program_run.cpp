@@ -9,7 +9,7 @@
 #include "port_names.h"
 #include "robot_port.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 int loadForRun(const char* command, const RunOptions& opts, const CompileOptions& compile,
                LoadedFile& loaded) {
@@ -19,11 +19,11 @@ int loadForRun(const char* command, const RunOptions& opts, const CompileOptions
                  loaded.readError.c_str());
     return exitcode::kNoInput;
   }
-  bool color = useColor(opts.color, stderr);
+  bool color = diagnostics::useColor(opts.color, stderr);
   if (!loaded.compiled) {
-    DiagOutputOptions out;
+    diagnostics::DiagOutputOptions out;
     out.color = color;
-    DiagnosticReport report(stderr, out);
+    diagnostics::DiagnosticReport report(stderr, out);
     report.add(loaded.program->sources, loaded.diags, true);
     report.finish();
     return exitcode::kRejected;
@@ -130,10 +130,10 @@ int ProgramRun::conclude(const char* command, const RunOptions& opts, int stoppe
   if (result.status == RunStatus::Stopped) return stoppedCode;
   if (result.status == RunStatus::StepLimit && !stepLimitIsError) return exitcode::kOk;
   if (result.error) {
-    printDiagnostic(stderr, loaded.program->sources, *result.error, useColor(opts.color, stderr));
+    printDiagnostic(stderr, loaded.program->sources, *result.error, diagnostics::useColor(opts.color, stderr));
     return exitcode::kRuntime;
   }
   return exitcode::kOk;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -23,7 +23,7 @@
 #include "run_options.h"
 #include "sandbox.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 struct ProgramRun {
   LoadedFile loaded;
@@ -85,4 +85,4 @@ std::string connectRealRobot(const RunOptions& opts, Machine& machine);
 /// repeated.
 void reportSeed(const char* command, const RunOptions& opts, uint64_t seed, const Machine& machine);
 
-}  // namespace rb::cli
+}  // namespace rb::run

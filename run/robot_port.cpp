@@ -4,7 +4,7 @@
 #include "base/runtime_error.h"
 #include "serial_link.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 std::unique_ptr<RobotLink> openRobotPort(std::optional<int64_t> programPort, const RunOptions& opts) {
   if (opts.noPorts)
@@ -25,4 +25,4 @@ std::unique_ptr<RobotLink> openRobotPort(std::optional<int64_t> programPort, con
   return std::make_unique<drivers::SerialLink>(path, link);
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -10,7 +10,7 @@
 #include "robot/robot_link.h"
 #include "run_options.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 /// Opens the robot's serial link. `programPort` is the number of a program's `rCommPort`, or
 /// nullopt for --real: the port --port names. A non-empty --port wins over the program's number.
@@ -18,4 +18,4 @@ namespace rb::cli {
 /// --real comes without --port.
 std::unique_ptr<RobotLink> openRobotPort(std::optional<int64_t> programPort, const RunOptions& opts);
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace rb::cli {
+namespace rb::run {
 
 /// Options every subcommand that runs a program shares (run, trace, render).
 struct RunOptions {
@@ -52,4 +52,4 @@ struct RunOptions {
   bool quiet = false;
 };
 
-}  // namespace rb::cli
+}  // namespace rb::run

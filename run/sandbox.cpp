@@ -24,7 +24,7 @@
 
 extern char** environ;
 
-namespace rb::cli {
+namespace rb::run {
 
 namespace fs = std::filesystem;
 
@@ -346,4 +346,4 @@ int64_t Sandbox::spawn(std::string_view who, const std::string& command, bool wa
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-}  // namespace rb::cli
+}  // namespace rb::run

@@ -14,7 +14,7 @@
 
 #include "machine/host.h"
 
-namespace rb::cli {
+namespace rb::run {
 
 class Sandbox : public SystemAccess {
  public:
@@ -66,4 +66,4 @@ class Sandbox : public SystemAccess {
   bool byComponents_ = false;
 };
 
-}  // namespace rb::cli
+}  // namespace rb::run

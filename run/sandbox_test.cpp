@@ -11,7 +11,7 @@
 #include "kernel_confine.h"
 
 using namespace rb;
-using namespace rb::cli;
+using namespace rb::run;
 namespace fs = std::filesystem;
 
 namespace {

@@ -13,7 +13,7 @@
 #include <unistd.h>
 #endif
 
-namespace rb::cli {
+namespace rb::tui {
 
 namespace {
 
@@ -66,7 +66,7 @@ void FileWatch::watch(const std::vector<std::string>& paths) {
     if (ec) full = path;
     f.folder = full.parent_path().string();
     f.name = full.filename().string();
-    f.bytes = readFile(path);
+    f.bytes = run::readFile(path);
     f.existed = statOf(path, f.mtimeNs, f.size);
     files_.push_back(std::move(f));
   }
@@ -154,7 +154,7 @@ bool FileWatch::changed() {
   if (!pending_ || now - lastEvent_ < kSettle) return false;
   pending_ = false;
   for (const File& f : files_) {
-    if (readFile(f.path) != f.bytes) {
+    if (run::readFile(f.path) != f.bytes) {
       reported_ = true;
       return true;
     }
@@ -162,4 +162,4 @@ bool FileWatch::changed() {
   return false;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace rb::cli {
+namespace rb::tui {
 
 class FileWatch {
  public:
@@ -69,4 +69,4 @@ class FileWatch {
   Clock::time_point lastPoll_{};
 };
 
-}  // namespace rb::cli
+}  // namespace rb::tui

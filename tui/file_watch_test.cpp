@@ -9,7 +9,7 @@
 
 #include "file_watch.h"
 
-using namespace rb::cli;
+using namespace rb::tui;
 namespace fs = std::filesystem;
 
 namespace {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace rb::cli {
+namespace rb::tui {
 
 StatementLines::StatementLines(const Program& program) {
   for (size_t pc = 0; pc < program.code.size() && pc < program.locs.size(); ++pc) {
@@ -78,4 +78,4 @@ bool Debugger::toggleBreakpoint(uint32_t file, uint32_t line) {
   return true;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

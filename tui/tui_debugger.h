@@ -13,7 +13,7 @@
 #include "base/source.h"
 #include "lang/bytecode.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 /// The lines of each file of a program where a run can stop: those that hold a statement, as
 /// the compiler marks them for line tracing (the host's onLine is called only there). Comments,
@@ -85,4 +85,4 @@ class Debugger {
   std::set<std::pair<uint32_t, uint32_t>> breaks_;
 };
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -13,7 +13,7 @@
 #include "svg_writer.h"
 #include "tui_panes.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 namespace {
 
@@ -1085,4 +1085,4 @@ void TuiHost::drawOutput() {
     screen_.drawText(r.col, r.row + 1 + static_cast<int>(i), rows[i]);
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -29,7 +29,7 @@
 #include "tui_layout.h"
 #include "tui_timeline.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 /// A breakpoint as a restart keeps it: by the file's name (its index may change when the
 /// program is loaded again) and line.
@@ -311,4 +311,4 @@ class TuiHost : public Host, public RobotObserver {
   std::string pixelsNote_;  ///< why --cells pixels shows characters instead
 };
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -1,6 +1,6 @@
 #include "tui_keyboard.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 void HeldKeys::press(int64_t key, Time now) {
   bool repeat = key == key_ && key_ != 0 && now - pressedAt_ < kRepeatGap;
@@ -41,4 +41,4 @@ int64_t HeldKeys::read(Time now) {
   return 0;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

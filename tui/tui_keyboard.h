@@ -8,7 +8,7 @@
 #include <chrono>
 #include <cstdint>
 
-namespace rb::cli {
+namespace rb::tui {
 
 class HeldKeys {
  public:
@@ -43,4 +43,4 @@ class HeldKeys {
   Time holdUntil_{};       ///< without releases: held until then (after an auto-repeat)
 };
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -9,7 +9,7 @@
 
 #include "screen/canvas.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 namespace {
 
@@ -278,4 +278,4 @@ std::string keysLine(int width, ViewState state, bool programKeys, bool watching
   return line;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace rb::cli {
+namespace rb::tui {
 
 struct Rect {
   int col = 0, row = 0, width = 0, height = 0;
@@ -97,4 +97,4 @@ std::string feelText(int bits);
 /// "x1", "x4", "x1/2".
 std::string speedText(double factor);
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -2,7 +2,7 @@
 
 #include <catch2/catch.hpp>
 
-using namespace rb::cli;
+using namespace rb::tui;
 
 TEST_CASE("tui layout: the arena beside the status panel", "[tui]") {
   TuiLayout l = layoutTui(100, 30);

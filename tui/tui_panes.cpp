@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace rb::cli {
+namespace rb::tui {
 
 namespace {
 
@@ -169,4 +169,4 @@ std::vector<std::string> variableLines(const std::vector<VariableView>& vars, st
   return out;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

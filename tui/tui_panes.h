@@ -10,7 +10,7 @@
 #include "base/source.h"
 #include "machine/interpreter.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 /// One line of a pane.
 struct PaneLine {
@@ -92,4 +92,4 @@ std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int hei
   return out;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

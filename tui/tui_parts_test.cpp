@@ -8,7 +8,7 @@
 #include "tui_panes.h"
 
 using namespace rb;
-using namespace rb::cli;
+using namespace rb::tui;
 
 namespace {
 SourceLoc at(uint32_t line, uint32_t col = 1, uint32_t file = 0) {

@@ -15,7 +15,7 @@
 #include "robot_port.h"
 #include "tui_host.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 namespace {
 
@@ -61,7 +61,7 @@ std::string baseName(const std::string& path) {
 
 /// The files the program was loaded from, for --watch: the main file (also when it could not be
 /// read) and every file it includes.
-std::vector<std::string> programFiles(const std::string& main, const LoadedFile& loaded) {
+std::vector<std::string> programFiles(const std::string& main, const run::LoadedFile& loaded) {
   std::vector<std::string> files = {main};
   if (loaded.program)
     for (uint32_t i = 1; i < loaded.program->sources.size(); ++i)
@@ -70,7 +70,7 @@ std::vector<std::string> programFiles(const std::string& main, const LoadedFile&
 }
 
 /// Why a program could not be loaded, as the view shows it: the heading line of each error.
-std::string loadErrorText(const std::string& file, const LoadedFile& loaded) {
+std::string loadErrorText(const std::string& file, const run::LoadedFile& loaded) {
   if (!loaded.program) return "cannot read '" + file + "': " + loaded.readError;
   std::string out;
   for (const Diagnostic& d : loaded.diags.all()) {
@@ -82,15 +82,15 @@ std::string loadErrorText(const std::string& file, const LoadedFile& loaded) {
 }
 
 /// The same in full, on standard error after the view closed, as rb run prints them.
-void printLoadErrors(const RunOptions& opts, const LoadedFile& loaded) {
+void printLoadErrors(const run::RunOptions& opts, const run::LoadedFile& loaded) {
   if (!loaded.program) {
     std::fprintf(stderr, "%s: cannot read '%s': %s\n", kCommand, opts.file.c_str(),
                  loaded.readError.c_str());
     return;
   }
-  DiagOutputOptions out;
-  out.color = useColor(opts.color, stderr);
-  DiagnosticReport report(stderr, out);
+  diagnostics::DiagOutputOptions out;
+  out.color = diagnostics::useColor(opts.color, stderr);
+  diagnostics::DiagnosticReport report(stderr, out);
   report.add(loaded.program->sources, loaded.diags, true);
   report.finish();
 }
@@ -129,34 +129,34 @@ std::string placeKept(const std::vector<NamedBreakpoint>& kept, const SourceSet&
 
 }  // namespace
 
-int runTui(const RunOptions& opts) {
+int runTui(const run::RunOptions& opts) {
   if (!opts.eventsFile.empty() || !opts.keys.empty()) {
     std::fprintf(stderr,
                  "%s: --events and --keys feed headless runs; leave out --tui to use them\n",
                  kCommand);
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   if (opts.file == "-") {
     std::fprintf(
         stderr,
         "%s: the program cannot come from standard input: the view reads the keyboard there\n",
         kCommand);
-    return exitcode::kUsage;
+    return run::exitcode::kUsage;
   }
   CompileOptions compile;
   compile.lineTracing = true;  // single steps stop before every statement
-  LoadedFile loaded;
+  run::LoadedFile loaded;
   if (opts.watch) {
     // Watching, a program with errors still opens the view, which waits for the fix to be saved.
-    loaded = loadFile(opts.file, compile, false, false, opts.allowFiles);
-    if (loaded.exitCode == exitcode::kNoInput) {
+    loaded = run::loadFile(opts.file, compile, false, false, opts.allowFiles);
+    if (loaded.exitCode == run::exitcode::kNoInput) {
       printLoadErrors(opts, loaded);
-      return exitcode::kNoInput;
+      return run::exitcode::kNoInput;
     }
     if (loaded.compiled && !opts.quiet)
-      printWarningLines(kCommand, opts.file, loaded.program->sources, loaded.diags,
-                        useColor(opts.color, stderr));
-  } else if (int code = loadForRun(kCommand, opts, compile, loaded)) {
+      run::printWarningLines(kCommand, opts.file, loaded.program->sources, loaded.diags,
+                             diagnostics::useColor(opts.color, stderr));
+  } else if (int code = run::loadForRun(kCommand, opts, compile, loaded)) {
     return code;
   }
 
@@ -175,7 +175,7 @@ int runTui(const RunOptions& opts) {
       std::optional<std::pair<uint32_t, uint32_t>> at = breakpointLine(b, sources);
       if (!at) {
         std::fprintf(stderr, "%s: --break %s: no such line in the program\n", kCommand, b.c_str());
-        return exitcode::kUsage;
+        return run::exitcode::kUsage;
       }
       uint32_t line = at->second;
       // (A program that does not load yet, with --watch, places them when it does.)
@@ -183,7 +183,7 @@ int runTui(const RunOptions& opts) {
         BreakpointPlace place = placeBreakpoint(*statements, at->first, at->second);
         if (place.line == 0) {
           std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
-          return exitcode::kUsage;
+          return run::exitcode::kUsage;
         }
         if (place.moved) {
           std::fprintf(stderr, "%s: --break %s: %s\n", kCommand, b.c_str(), place.note.c_str());
@@ -204,7 +204,7 @@ int runTui(const RunOptions& opts) {
     if (!screen) {
       std::fprintf(stderr, "%s: no terminal (%s); run without --tui for a headless run\n",
                    kCommand, why.c_str());
-      return exitcode::kIoError;
+      return run::exitcode::kIoError;
     }
   }
 
@@ -216,18 +216,18 @@ int runTui(const RunOptions& opts) {
   settings.watching = opts.watch;
   // A restart runs the program with the seed of the first run: the same random numbers, so a
   // run repeats until the program changes.
-  RunOptions runOpts = opts;
-  runOpts.seed = runSeed(opts);
+  run::RunOptions runOpts = opts;
+  runOpts.seed = run::runSeed(opts);
   std::unique_ptr<FileWatch> watch;
   if (opts.watch) watch = std::make_unique<FileWatch>();
   // The terminal is open and the program loaded: from here on the kernel's rules hold (a
   // restart with --watch reads the program's folder again, which they allow).
-  if (std::string refused = confineRun(kCommand, opts); !refused.empty()) {
+  if (std::string refused = run::confineRun(kCommand, opts); !refused.empty()) {
     screen.reset();
     std::fprintf(stderr, "%s\n", refused.c_str());
-    return exitcode::kRuntime;
+    return run::exitcode::kRuntime;
   }
-  std::unique_ptr<ProgramRun> run;
+  std::unique_ptr<run::ProgramRun> run;
   TuiHost* view = nullptr;  // the last run's view (its run owns it)
   bool notLoaded = false;   // the view closed while the program could not be loaded
   int quitCode = 0;
@@ -252,11 +252,11 @@ int runTui(const RunOptions& opts) {
           break;
         }
         settings = host.nextSettings();
-        loaded = loadFile(opts.file, compile, false, false, opts.allowFiles);
+        loaded = run::loadFile(opts.file, compile, false, false, opts.allowFiles);
         continue;
       }
       run.reset();  // the last run's robot port is closed before the next run opens it
-      run = std::make_unique<ProgramRun>();
+      run = std::make_unique<run::ProgramRun>();
       run->loaded = std::move(loaded);
       const SourceSet& sources = run->loaded.program->sources;
       auto host = std::make_unique<TuiHost>(*screen, settings);
@@ -265,12 +265,12 @@ int runTui(const RunOptions& opts) {
                                     StatementLines(*run->loaded.compiled), view->debugger());
       if (!moved.empty()) view->startNotice(moved);
       view->fileWatch = watch.get();
-      view->robotOpener = [&opts](int64_t port) { return openRobotPort(port, opts); };
+      view->robotOpener = [&opts](int64_t port) { return run::openRobotPort(port, opts); };
       run->keepDisplayList = true;  // the text the program draws, shown as characters
       if (std::string failed = run->start(runOpts, std::move(host), view); !failed.empty()) {
         screen.reset();
         std::fprintf(stderr, "%s: %s\n", kCommand, failed.c_str());
-        return exitcode::kIoError;
+        return run::exitcode::kIoError;
       }
       view->watch(*run->interpreter, sources);
       run->run(runOpts);
@@ -283,7 +283,7 @@ int runTui(const RunOptions& opts) {
       if (!view->restartRequested()) break;
       // The program as it is on disk now: a restart takes the edits in.
       settings = view->nextSettings();
-      loaded = loadFile(opts.file, compile, false, false, opts.allowFiles);
+      loaded = run::loadFile(opts.file, compile, false, false, opts.allowFiles);
     }
   } catch (...) {
     screen.reset();  // never leave the terminal in raw mode
@@ -293,7 +293,7 @@ int runTui(const RunOptions& opts) {
   if (notLoaded) {
     printLoadErrors(opts, loaded);
     if (quitCode == TuiHost::kInterruptedExit) return quitCode;
-    return loaded.program ? exitcode::kRejected : exitcode::kNoInput;
+    return loaded.program ? run::exitcode::kRejected : run::exitcode::kNoInput;
   }
   // What the program printed, on the normal screen, as a headless run prints it.
   const std::string& out = view->transcript();
@@ -308,4 +308,4 @@ int runTui(const RunOptions& opts) {
   return run->conclude(kCommand, opts, view->quitCode());
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

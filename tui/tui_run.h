@@ -3,9 +3,9 @@
 
 #include "run_options.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 /// Runs opts.file in the terminal view; returns rb's exit code.
-int runTui(const RunOptions& opts);
+int runTui(const run::RunOptions& opts);
 
-}  // namespace rb::cli
+}  // namespace rb::tui

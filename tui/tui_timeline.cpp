@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rb::cli {
+namespace rb::tui {
 
 PastStep pastStep(const Recording& rec, size_t index) {
   PastStep p;
@@ -108,4 +108,4 @@ std::vector<std::string_view> lastLines(std::string_view text, size_t maxLines) 
   return out;
 }
 
-}  // namespace rb::cli
+}  // namespace rb::tui

@@ -15,7 +15,7 @@
 #include "machine/recording.h"
 #include "screen/canvas.h"
 
-namespace rb::cli {
+namespace rb::tui {
 
 /// The budget of the live view's recording: every statement of a run of up to 2^20 (about a
 /// million) is kept (the steps may take 3/8 of the budget, and 2^20 of them take 80 MiB), with
@@ -58,4 +58,4 @@ size_t stepAtColumn(int col, int barCol, int barWidth, size_t count);
 /// What output had been printed by a step is text[0, step.output).
 std::vector<std::string_view> lastLines(std::string_view text, size_t maxLines);
 
-}  // namespace rb::cli
+}  // namespace rb::tui

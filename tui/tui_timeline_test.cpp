@@ -6,7 +6,7 @@
 #include "tui_timeline.h"
 
 using namespace rb;
-using namespace rb::cli;
+using namespace rb::tui;
 
 namespace {
 
