@@ -77,8 +77,8 @@ PictureInput everything() {
   PictureInput in;
   in.reference = {{{300, 400}, {300, 200}, {500, 200}, {500, 400}, {300, 400}}};
   in.student = {{{300, 400}, {300, 200}, {500, 200}, {500, 400}}};
-  in.background = solid(kBackground);
-  in.studentScreen = solid(kStudentScreen);
+  in.background = std::make_shared<const RgbImage>(solid(kBackground));
+  in.studentScreen = std::make_shared<const RgbImage>(solid(kStudentScreen));
   in.referenceEnd = P2{300, 400};
   in.studentEnd = P2{500, 400};
   in.waypoints = {{300, 400}, {300, 200}, {500, 200}, {500, 400}, {300, 400}};
@@ -352,9 +352,10 @@ TEST_CASE("pictures: region labels and the title are written in the arena", "[gr
   CHECK(t.pixel(5, 5) == kWhite);
 
   // Not over what the program printed at the top left: the next corner free of drawing.
-  titled.background = solid(kWhite);
+  RgbImage printedScreen = solid(kWhite);
   for (int y = 0; y < 15; ++y)
-    for (int x = 0; x < 120; ++x) titled.background->set(x, y, 0x000000);
+    for (int x = 0; x < 120; ++x) printedScreen.set(x, y, 0x000000);
+  titled.background = std::make_shared<const RgbImage>(std::move(printedScreen));
   PictureInput untitled = titled;
   untitled.title.clear();
   RgbImage printed = feedbackPicture(titled), bare = feedbackPicture(untitled);
