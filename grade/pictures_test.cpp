@@ -403,3 +403,27 @@ TEST_CASE("pictures: trails at any angle, and dots", "[grade][pictures]") {
   CHECK(line > 670);
   CHECK(line < 2 * 670 + 50);
 }
+
+TEST_CASE("pictures: a path driven again, and a painter used again, draw the same picture", "[grade][pictures]") {
+  PictureInput once = everything();
+  once.student = {{{300, 400}, {300, 200}, {500, 200}, {500, 400}, {300, 400}}};  // a closed square
+  once.studentPath = once.student;
+  PictureInput again = once;
+  // Round the square five more times, in one polyline and in pieces of their own.
+  for (int lap = 0; lap < 5; ++lap) {
+    again.student[0].insert(again.student[0].end(), once.student[0].begin() + 1, once.student[0].end());
+    again.studentPath.push_back(once.student[0]);
+  }
+  const RgbImage a = feedbackPicture(once);
+  CHECK(differences(feedbackPicture(again), a, 0, 0, 799, kPictureHeight - 1) == 0);
+  // One painter for a class: its fonts and glyphs kept from picture to picture change nothing.
+  PicturePainter painter;
+  PictureInput other = everything();
+  other.studentView = true;
+  other.title = "class/another name with other glyphs.bas";
+  const RgbImage b = feedbackPicture(other);
+  CHECK(differences(painter.picture(once), a, 0, 0, 799, kPictureHeight - 1) == 0);
+  CHECK(differences(painter.picture(other), b, 0, 0, 799, kPictureHeight - 1) == 0);
+  CHECK(differences(painter.picture(once), a, 0, 0, 799, kPictureHeight - 1) == 0);
+  CHECK(painter.legend(other) == legendEntries(other));
+}
