@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <dirent.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,7 +14,10 @@
 #include <linux/capability.h>
 #include <linux/landlock.h>
 #include <sched.h>
-#include <seccomp.h>
+#include <linux/audit.h>
+#include <linux/filter.h>
+#include <linux/seccomp.h>
+#include <cstddef>
 #include <sys/ioctl.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -146,60 +150,64 @@ std::string applyLandlock(const KernelRules& rules, int abi) {
   return problem;
 }
 
-/// The seccomp filter: everything is allowed but what a RobotBASIC program never needs, which
-/// fails with EPERM (so a started program sees an ordinary error, not a kill).
+/// A seccomp filter's instructions (classic BPF), written out here: building them with
+/// libseccomp was a third of an empty program's start-up, for a filter that is the same every
+/// time. seccompProgram (below) says what it does.
+class BpfWriter {
+ public:
+  void loadNumber() { put(BPF_LD | BPF_W | BPF_ABS, 0, 0, offsetof(struct seccomp_data, nr)); }
+  void loadArch() { put(BPF_LD | BPF_W | BPF_ABS, 0, 0, offsetof(struct seccomp_data, arch)); }
+  /// The low 32 bits of argument i (little-endian: the first word).
+  void loadArgLow(int i) { put(BPF_LD | BPF_W | BPF_ABS, 0, 0, static_cast<uint32_t>(offsetof(struct seccomp_data, args) + 8 * i)); }
+  /// `ret action` when A == k (or A >= k, or A & k != 0), else on.
+  void returnIfEqual(uint32_t k, uint32_t action) { returnIf(BPF_JEQ, k, action); }
+  void returnIfAtLeast(uint32_t k, uint32_t action) { returnIf(BPF_JGE, k, action); }
+  void returnIfAnyBit(uint32_t k, uint32_t action) { returnIf(BPF_JSET, k, action); }
+  /// `ret action` when none of k's bits is in A, else on.
+  void returnIfNoBit(uint32_t k, uint32_t action) {
+    put(BPF_JMP | BPF_JSET | BPF_K, 1, 0, k);
+    ret(action);
+  }
+  void ret(uint32_t action) { put(BPF_RET | BPF_K, 0, 0, action); }
+  /// A jump past the next `count` instructions unless A == k: where a block for one system call
+  /// starts. Returns its place, for skipTo.
+  size_t unlessEqual(uint32_t k) {
+    put(BPF_JMP | BPF_JEQ | BPF_K, 0, 0, k);
+    return code_.size() - 1;
+  }
+  /// Makes the jump at `at` (from unlessEqual) land here.
+  void skipTo(size_t at) { code_[at].jf = static_cast<uint8_t>(code_.size() - at - 1); }
+  const std::vector<BpfInstruction>& code() const { return code_; }
+
+ private:
+  void returnIf(uint16_t test, uint32_t k, uint32_t action) {
+    put(static_cast<uint16_t>(BPF_JMP | test | BPF_K), 0, 1, k);
+    ret(action);
+  }
+  void put(uint16_t code, uint8_t jt, uint8_t jf, uint32_t k) { code_.push_back({code, jt, jf, k}); }
+  std::vector<BpfInstruction> code_;
+};
+
+#if defined(__x86_64__)
+constexpr uint32_t kAuditArch = AUDIT_ARCH_X86_64;
+#elif defined(__aarch64__)
+constexpr uint32_t kAuditArch = AUDIT_ARCH_AARCH64;
+#else
+constexpr uint32_t kAuditArch = 0;  // no filter written for this processor
+#endif
+
+/// The seccomp filter in force: everything is allowed but what a RobotBASIC program never needs,
+/// which fails with EPERM (so a started program sees an ordinary error, not a kill).
 std::string applySeccomp(const KernelRules& rules) {
-  scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ALLOW);
-  if (!ctx) return "seccomp could not be set up";
-  int failed = 0;
-  auto deny = [&](const char* name, uint32_t action = SCMP_ACT_ERRNO(EPERM)) {
-    int nr = seccomp_syscall_resolve_name(name);
-    if (nr == __NR_SCMP_ERROR) return;  // not on this architecture
-    if (seccomp_rule_add(ctx, action, nr, 0) != 0) ++failed;
-  };
-  // Networks, other processes' memory, the file system's shape, namespaces, keys, the kernel.
-  for (const char* name : {"socket", "ptrace", "process_vm_readv", "process_vm_writev", "pidfd_getfd", "kcmp",
-                           "mount", "umount2", "pivot_root", "chroot", "fsopen", "fsconfig", "fsmount", "fspick",
-                           "move_mount", "open_tree", "mount_setattr", "unshare", "setns", "keyctl", "add_key",
-                           "request_key", "bpf", "perf_event_open", "userfaultfd", "init_module", "finit_module",
-                           "delete_module", "kexec_load", "kexec_file_load", "reboot", "swapon", "swapoff", "acct",
-                           "quotactl", "settimeofday", "clock_settime", "clock_adjtime", "adjtimex", "sethostname",
-                           "setdomainname", "syslog", "vhangup", "iopl", "ioperm", "open_by_handle_at",
-                           "name_to_handle_at", "fanotify_init", "io_uring_setup", "io_uring_enter",
-                           "io_uring_register", "lookup_dcookie", "uselib"}) {
-    std::string_view n(name);
-    if (kSanitized && n == "ptrace") continue;  // LeakSanitizer's stop-the-world
-    deny(name);
-  }
-  // clone3's flags are behind a pointer a filter cannot read: it fails as if it did not exist,
-  // and the C library falls back to clone, whose flags are checked below.
-  deny("clone3", SCMP_ACT_ERRNO(ENOSYS));
-  int clone = seccomp_syscall_resolve_name("clone");
-  for (uint64_t flag : {uint64_t{CLONE_NEWNS}, uint64_t{CLONE_NEWCGROUP}, uint64_t{CLONE_NEWUTS}, uint64_t{CLONE_NEWIPC},
-                        uint64_t{CLONE_NEWUSER}, uint64_t{CLONE_NEWPID}, uint64_t{CLONE_NEWNET}})
-    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), clone, 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag)) != 0) ++failed;
-  if (!rules.allowSpawn) {
-    // No other program, and no second process: only threads (CLONE_THREAD) may be made.
-    deny("execve");
-    deny("execveat");
-    deny("fork");
-    deny("vfork");
-    if (!kSanitized &&
-        seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), clone, 1,
-                         SCMP_A0(SCMP_CMP_MASKED_EQ, uint64_t{CLONE_THREAD}, uint64_t{0})) != 0)
-      ++failed;
-  }
-  // Typing into the terminal rb runs in (TIOCSTI) or the console's keyboard (TIOCLINUX).
-  int ioctl = seccomp_syscall_resolve_name("ioctl");
-  for (uint64_t request : {uint64_t{TIOCSTI}, uint64_t{TIOCLINUX}})
-    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), ioctl, 1, SCMP_A1(SCMP_CMP_MASKED_EQ, 0xFFFFFFFFu, request)) != 0)
-      ++failed;
-  std::string problem;
-  if (failed) problem = "seccomp refused " + std::to_string(failed) + " rule(s)";
-  else if (int rc = seccomp_load(ctx); rc != 0)
-    problem = std::string("seccomp could not be put in force: ") + std::strerror(-rc);
-  seccomp_release(ctx);
-  return problem;
+  if (kAuditArch == 0) return "seccomp: no filter for this processor";
+  const std::vector<BpfInstruction> code = seccompProgram(rules);
+  static_assert(sizeof(BpfInstruction) == sizeof(sock_filter));
+  std::vector<sock_filter> filter(code.size());
+  std::memcpy(filter.data(), code.data(), code.size() * sizeof(sock_filter));
+  sock_fprog program{static_cast<unsigned short>(filter.size()), filter.data()};
+  if (::syscall(SYS_seccomp, SECCOMP_SET_MODE_FILTER, 0, &program) != 0)
+    return std::string("seccomp could not be put in force: ") + std::strerror(errno);
+  return "";
 }
 
 /// Root's capabilities (rb test as root in CI): none for the program, nor for what it starts.
@@ -223,6 +231,105 @@ void limit(int resource, uint64_t bytes) {
 }
 
 }  // namespace
+
+std::vector<BpfInstruction> seccompProgram(const KernelRules& rules) {
+  const uint32_t kill = SECCOMP_RET_KILL_THREAD;
+  const uint32_t eperm = SECCOMP_RET_ERRNO | EPERM, enosys = SECCOMP_RET_ERRNO | ENOSYS;
+  // Another processor's system calls (a 32-bit int 0x80, x32's numbers) end the thread, as
+  // libseccomp's filters did.
+  std::vector<BpfInstruction> code;
+  code.push_back({BPF_LD | BPF_W | BPF_ABS, 0, 0, static_cast<uint32_t>(offsetof(struct seccomp_data, arch))});
+  code.push_back({BPF_JMP | BPF_JEQ | BPF_K, 1, 0, kAuditArch});
+  code.push_back({BPF_RET | BPF_K, 0, 0, kill});
+  BpfWriter body;
+  body.loadNumber();
+#if defined(__x86_64__)
+  body.returnIfEqual(0xFFFFFFFFu, SECCOMP_RET_ALLOW);  // -1: no system call (a tracer skipped it)
+  body.returnIfAtLeast(0x40000000u, kill);              // x32
+#endif
+  // Networks, other processes' memory, the file system's shape, namespaces, keys, the kernel.
+  std::vector<long> denied = {
+#define RB_DENY(name) __NR_##name,
+#ifdef __NR_socket
+      RB_DENY(socket)
+#endif
+#ifdef __NR_process_vm_readv
+      RB_DENY(process_vm_readv) RB_DENY(process_vm_writev)
+#endif
+#ifdef __NR_pidfd_getfd
+      RB_DENY(pidfd_getfd)
+#endif
+#ifdef __NR_kcmp
+      RB_DENY(kcmp)
+#endif
+      RB_DENY(mount) RB_DENY(umount2) RB_DENY(pivot_root) RB_DENY(chroot)
+#ifdef __NR_fsopen
+      RB_DENY(fsopen) RB_DENY(fsconfig) RB_DENY(fsmount) RB_DENY(fspick) RB_DENY(move_mount) RB_DENY(open_tree)
+#endif
+#ifdef __NR_mount_setattr
+      RB_DENY(mount_setattr)
+#endif
+      RB_DENY(unshare) RB_DENY(setns) RB_DENY(keyctl) RB_DENY(add_key) RB_DENY(request_key) RB_DENY(bpf)
+      RB_DENY(perf_event_open) RB_DENY(userfaultfd) RB_DENY(init_module) RB_DENY(finit_module)
+      RB_DENY(delete_module) RB_DENY(kexec_load)
+#ifdef __NR_kexec_file_load
+      RB_DENY(kexec_file_load)
+#endif
+      RB_DENY(reboot) RB_DENY(swapon) RB_DENY(swapoff) RB_DENY(acct) RB_DENY(quotactl) RB_DENY(settimeofday)
+      RB_DENY(clock_settime) RB_DENY(clock_adjtime) RB_DENY(adjtimex) RB_DENY(sethostname) RB_DENY(setdomainname)
+      RB_DENY(syslog) RB_DENY(vhangup)
+#ifdef __NR_iopl
+      RB_DENY(iopl) RB_DENY(ioperm)
+#endif
+      RB_DENY(open_by_handle_at) RB_DENY(name_to_handle_at) RB_DENY(fanotify_init)
+#ifdef __NR_io_uring_setup
+      RB_DENY(io_uring_setup) RB_DENY(io_uring_enter) RB_DENY(io_uring_register)
+#endif
+#ifdef __NR_lookup_dcookie
+      RB_DENY(lookup_dcookie)
+#endif
+#ifdef __NR_uselib
+      RB_DENY(uselib)
+#endif
+#undef RB_DENY
+  };
+  if (!kSanitized) denied.push_back(__NR_ptrace);  // LeakSanitizer's stop-the-world needs it
+  if (!rules.allowSpawn) {
+    // No other program, and no second process: only threads (CLONE_THREAD) may be made.
+    denied.push_back(__NR_execve);
+    denied.push_back(__NR_execveat);
+#ifdef __NR_fork
+    denied.push_back(__NR_fork);
+#endif
+#ifdef __NR_vfork
+    denied.push_back(__NR_vfork);
+#endif
+  }
+  for (long nr : denied) body.returnIfEqual(static_cast<uint32_t>(nr), eperm);
+  // clone3's flags are behind a pointer a filter cannot read: it fails as if it did not exist,
+  // and the C library falls back to clone, whose flags are checked here.
+#ifdef __NR_clone3
+  body.returnIfEqual(__NR_clone3, enosys);
+#endif
+  const size_t clone = body.unlessEqual(__NR_clone);
+  body.loadArgLow(0);
+  for (uint32_t flag : {uint32_t{CLONE_NEWNS}, uint32_t{CLONE_NEWCGROUP}, uint32_t{CLONE_NEWUTS}, uint32_t{CLONE_NEWIPC},
+                        uint32_t{CLONE_NEWUSER}, uint32_t{CLONE_NEWPID}, uint32_t{CLONE_NEWNET}})
+    body.returnIfAnyBit(flag, eperm);
+  if (!rules.allowSpawn && !kSanitized) body.returnIfNoBit(CLONE_THREAD, eperm);
+  body.ret(SECCOMP_RET_ALLOW);
+  body.skipTo(clone);
+  // Typing into the terminal rb runs in (TIOCSTI) or the console's keyboard (TIOCLINUX).
+  const size_t ioctl = body.unlessEqual(__NR_ioctl);
+  body.loadArgLow(1);
+  body.returnIfEqual(TIOCSTI, eperm);
+  body.returnIfEqual(TIOCLINUX, eperm);
+  body.ret(SECCOMP_RET_ALLOW);
+  body.skipTo(ioctl);
+  body.ret(SECCOMP_RET_ALLOW);
+  code.insert(code.end(), body.code().begin(), body.code().end());
+  return code;
+}
 
 int landlockAbi() {
   long abi = ::syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
@@ -267,17 +374,23 @@ std::vector<std::string> spawnSystemPaths() {
 }
 
 std::vector<std::string> serialDevicePaths() {
+  // Every run lists /dev (its ports may be opened): with readdir, not std::filesystem, whose
+  // paths for each of a few hundred entries were a tenth of an empty program's start-up.
   std::vector<std::string> out;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator("/dev", ec)) {
-    std::string name = entry.path().filename().string();
-    for (const char* prefix : {"ttyS", "ttyUSB", "ttyACM", "rfcomm"})
-      if (name.rfind(prefix, 0) == 0) out.push_back(entry.path().string());
+  DIR* dir = ::opendir("/dev");
+  if (!dir) return out;
+  while (const dirent* entry = ::readdir(dir)) {
+    const std::string_view name(entry->d_name);
+    for (std::string_view prefix : {"ttyS", "ttyUSB", "ttyACM", "rfcomm"})
+      if (name.substr(0, prefix.size()) == prefix) out.push_back("/dev/" + std::string(name));
   }
+  ::closedir(dir);
   return out;
 }
 
 #else  // no Landlock or seccomp: rb's own checks are the only line
+
+std::vector<BpfInstruction> seccompProgram(const KernelRules&) { return {}; }
 
 int landlockAbi() { return 0; }
 

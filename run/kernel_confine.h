@@ -42,6 +42,25 @@ struct KernelRules {
   bool dropCapabilities = false;
 };
 
+/// One instruction of a classic BPF program (Linux's struct sock_filter).
+struct BpfInstruction {
+  uint16_t code;
+  uint8_t jt, jf;
+  uint32_t k;
+};
+
+/// The seccomp filter confineProcess puts in force for `rules`, as classic BPF (for the tests,
+/// which run it). On this processor's own system calls: socket, ptrace, process_vm_readv/writev,
+/// pidfd_getfd, kcmp, the mount calls, pivot_root, chroot, unshare, setns, the key calls, bpf,
+/// perf_event_open, userfaultfd, the module and kexec calls, reboot, swapon/off, acct, quotactl,
+/// the clock and host-name setters, syslog, vhangup, iopl/ioperm, the handle calls,
+/// fanotify_init, io_uring, lookup_dcookie and uselib fail with EPERM; without allowSpawn also
+/// execve, execveat, fork and vfork; clone3 fails with ENOSYS (its flags cannot be read); clone
+/// fails with EPERM with a new-namespace flag, and without allowSpawn unless CLONE_THREAD;
+/// ioctl fails with EPERM for TIOCSTI and TIOCLINUX. Everything else is allowed. Another
+/// processor's system calls (and x32's) end the thread. Empty where rb writes no filter.
+std::vector<BpfInstruction> seccompProgram(const KernelRules& rules);
+
 /// What was put in force.
 struct KernelStatus {
   int landlockAbi = 0;    ///< the kernel's Landlock ABI (0: none)
