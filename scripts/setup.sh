@@ -40,7 +40,7 @@ test_packages=(
   emscripten xz-utils patch python3-fonttools   # scripts/web.sh: the core as WebAssembly for the web page's tests (testdata/web)
 )
 bench_packages=(
-  lua5.4 yabasic brandy hyperfine   # benchmark peers
+  lua5.4 luajit yabasic brandy hyperfine   # benchmark peers (LuaJIT's interpreter: luajit -joff)
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)
   python3-pil           # Pillow, the shapes benchmark's peer (bench/shapes/run.sh)
 )
