@@ -150,57 +150,22 @@ std::string applyLandlock(const KernelRules& rules, int abi) {
   return problem;
 }
 
-/// A seccomp filter's instructions (classic BPF), written out here: building them with
-/// libseccomp was a third of an empty program's start-up, for a filter that is the same every
-/// time. seccompProgram (below) says what it does.
-class BpfWriter {
- public:
-  void loadNumber() { put(BPF_LD | BPF_W | BPF_ABS, 0, 0, offsetof(struct seccomp_data, nr)); }
-  void loadArch() { put(BPF_LD | BPF_W | BPF_ABS, 0, 0, offsetof(struct seccomp_data, arch)); }
-  /// The low 32 bits of argument i (little-endian: the first word).
-  void loadArgLow(int i) { put(BPF_LD | BPF_W | BPF_ABS, 0, 0, static_cast<uint32_t>(offsetof(struct seccomp_data, args) + 8 * i)); }
-  /// `ret action` when A == k (or A >= k, or A & k != 0), else on.
-  void returnIfEqual(uint32_t k, uint32_t action) { returnIf(BPF_JEQ, k, action); }
-  void returnIfAtLeast(uint32_t k, uint32_t action) { returnIf(BPF_JGE, k, action); }
-  void returnIfAnyBit(uint32_t k, uint32_t action) { returnIf(BPF_JSET, k, action); }
-  /// `ret action` when none of k's bits is in A, else on.
-  void returnIfNoBit(uint32_t k, uint32_t action) {
-    put(BPF_JMP | BPF_JSET | BPF_K, 1, 0, k);
-    ret(action);
-  }
-  void ret(uint32_t action) { put(BPF_RET | BPF_K, 0, 0, action); }
-  /// A jump past the next `count` instructions unless A == k: where a block for one system call
-  /// starts. Returns its place, for skipTo.
-  size_t unlessEqual(uint32_t k) {
-    put(BPF_JMP | BPF_JEQ | BPF_K, 0, 0, k);
-    return code_.size() - 1;
-  }
-  /// Makes the jump at `at` (from unlessEqual) land here.
-  void skipTo(size_t at) { code_[at].jf = static_cast<uint8_t>(code_.size() - at - 1); }
-  const std::vector<BpfInstruction>& code() const { return code_; }
-
- private:
-  void returnIf(uint16_t test, uint32_t k, uint32_t action) {
-    put(static_cast<uint16_t>(BPF_JMP | test | BPF_K), 0, 1, k);
-    ret(action);
-  }
-  void put(uint16_t code, uint8_t jt, uint8_t jf, uint32_t k) { code_.push_back({code, jt, jf, k}); }
-  std::vector<BpfInstruction> code_;
-};
-
 #if defined(__x86_64__)
 constexpr uint32_t kAuditArch = AUDIT_ARCH_X86_64;
 #elif defined(__aarch64__)
 constexpr uint32_t kAuditArch = AUDIT_ARCH_AARCH64;
 #else
-constexpr uint32_t kAuditArch = 0;  // no filter written for this processor
+constexpr uint32_t kAuditArch = 0;  // the filter's own architecture is not checked here
 #endif
 
-/// The seccomp filter in force: everything is allowed but what a RobotBASIC program never needs,
-/// which fails with EPERM (so a started program sees an ordinary error, not a kill).
+/// The seccomp filter in force (seccomp/seccomp_rules.h says what it refuses), built by
+/// libseccomp when rb was: here it is only handed to the kernel, under the no-new-privileges
+/// confineProcess set first. Building it with libseccomp at each start was a third of an empty
+/// program's start-up, for a filter that is the same every time.
 std::string applySeccomp(const KernelRules& rules) {
-  if (kAuditArch == 0) return "seccomp: no filter for this processor";
-  const std::vector<BpfInstruction> code = seccompProgram(rules);
+  if (kAuditArch != 0 && embeddedSeccompArch() != kAuditArch)
+    return "seccomp: the filter was built for another processor";
+  const std::span<const BpfInstruction> code = embeddedSeccompProgram(rules.allowSpawn, kSanitized);
   static_assert(sizeof(BpfInstruction) == sizeof(sock_filter));
   std::vector<sock_filter> filter(code.size());
   std::memcpy(filter.data(), code.data(), code.size() * sizeof(sock_filter));
@@ -231,105 +196,6 @@ void limit(int resource, uint64_t bytes) {
 }
 
 }  // namespace
-
-std::vector<BpfInstruction> seccompProgram(const KernelRules& rules) {
-  const uint32_t kill = SECCOMP_RET_KILL_THREAD;
-  const uint32_t eperm = SECCOMP_RET_ERRNO | EPERM, enosys = SECCOMP_RET_ERRNO | ENOSYS;
-  // Another processor's system calls (a 32-bit int 0x80, x32's numbers) end the thread, as
-  // libseccomp's filters did.
-  std::vector<BpfInstruction> code;
-  code.push_back({BPF_LD | BPF_W | BPF_ABS, 0, 0, static_cast<uint32_t>(offsetof(struct seccomp_data, arch))});
-  code.push_back({BPF_JMP | BPF_JEQ | BPF_K, 1, 0, kAuditArch});
-  code.push_back({BPF_RET | BPF_K, 0, 0, kill});
-  BpfWriter body;
-  body.loadNumber();
-#if defined(__x86_64__)
-  body.returnIfEqual(0xFFFFFFFFu, SECCOMP_RET_ALLOW);  // -1: no system call (a tracer skipped it)
-  body.returnIfAtLeast(0x40000000u, kill);              // x32
-#endif
-  // Networks, other processes' memory, the file system's shape, namespaces, keys, the kernel.
-  std::vector<long> denied = {
-#define RB_DENY(name) __NR_##name,
-#ifdef __NR_socket
-      RB_DENY(socket)
-#endif
-#ifdef __NR_process_vm_readv
-      RB_DENY(process_vm_readv) RB_DENY(process_vm_writev)
-#endif
-#ifdef __NR_pidfd_getfd
-      RB_DENY(pidfd_getfd)
-#endif
-#ifdef __NR_kcmp
-      RB_DENY(kcmp)
-#endif
-      RB_DENY(mount) RB_DENY(umount2) RB_DENY(pivot_root) RB_DENY(chroot)
-#ifdef __NR_fsopen
-      RB_DENY(fsopen) RB_DENY(fsconfig) RB_DENY(fsmount) RB_DENY(fspick) RB_DENY(move_mount) RB_DENY(open_tree)
-#endif
-#ifdef __NR_mount_setattr
-      RB_DENY(mount_setattr)
-#endif
-      RB_DENY(unshare) RB_DENY(setns) RB_DENY(keyctl) RB_DENY(add_key) RB_DENY(request_key) RB_DENY(bpf)
-      RB_DENY(perf_event_open) RB_DENY(userfaultfd) RB_DENY(init_module) RB_DENY(finit_module)
-      RB_DENY(delete_module) RB_DENY(kexec_load)
-#ifdef __NR_kexec_file_load
-      RB_DENY(kexec_file_load)
-#endif
-      RB_DENY(reboot) RB_DENY(swapon) RB_DENY(swapoff) RB_DENY(acct) RB_DENY(quotactl) RB_DENY(settimeofday)
-      RB_DENY(clock_settime) RB_DENY(clock_adjtime) RB_DENY(adjtimex) RB_DENY(sethostname) RB_DENY(setdomainname)
-      RB_DENY(syslog) RB_DENY(vhangup)
-#ifdef __NR_iopl
-      RB_DENY(iopl) RB_DENY(ioperm)
-#endif
-      RB_DENY(open_by_handle_at) RB_DENY(name_to_handle_at) RB_DENY(fanotify_init)
-#ifdef __NR_io_uring_setup
-      RB_DENY(io_uring_setup) RB_DENY(io_uring_enter) RB_DENY(io_uring_register)
-#endif
-#ifdef __NR_lookup_dcookie
-      RB_DENY(lookup_dcookie)
-#endif
-#ifdef __NR_uselib
-      RB_DENY(uselib)
-#endif
-#undef RB_DENY
-  };
-  if (!kSanitized) denied.push_back(__NR_ptrace);  // LeakSanitizer's stop-the-world needs it
-  if (!rules.allowSpawn) {
-    // No other program, and no second process: only threads (CLONE_THREAD) may be made.
-    denied.push_back(__NR_execve);
-    denied.push_back(__NR_execveat);
-#ifdef __NR_fork
-    denied.push_back(__NR_fork);
-#endif
-#ifdef __NR_vfork
-    denied.push_back(__NR_vfork);
-#endif
-  }
-  for (long nr : denied) body.returnIfEqual(static_cast<uint32_t>(nr), eperm);
-  // clone3's flags are behind a pointer a filter cannot read: it fails as if it did not exist,
-  // and the C library falls back to clone, whose flags are checked here.
-#ifdef __NR_clone3
-  body.returnIfEqual(__NR_clone3, enosys);
-#endif
-  const size_t clone = body.unlessEqual(__NR_clone);
-  body.loadArgLow(0);
-  for (uint32_t flag : {uint32_t{CLONE_NEWNS}, uint32_t{CLONE_NEWCGROUP}, uint32_t{CLONE_NEWUTS}, uint32_t{CLONE_NEWIPC},
-                        uint32_t{CLONE_NEWUSER}, uint32_t{CLONE_NEWPID}, uint32_t{CLONE_NEWNET}})
-    body.returnIfAnyBit(flag, eperm);
-  if (!rules.allowSpawn && !kSanitized) body.returnIfNoBit(CLONE_THREAD, eperm);
-  body.ret(SECCOMP_RET_ALLOW);
-  body.skipTo(clone);
-  // Typing into the terminal rb runs in (TIOCSTI) or the console's keyboard (TIOCLINUX).
-  const size_t ioctl = body.unlessEqual(__NR_ioctl);
-  body.loadArgLow(1);
-  body.returnIfEqual(TIOCSTI, eperm);
-  body.returnIfEqual(TIOCLINUX, eperm);
-  body.ret(SECCOMP_RET_ALLOW);
-  body.skipTo(ioctl);
-  body.ret(SECCOMP_RET_ALLOW);
-  code.insert(code.end(), body.code().begin(), body.code().end());
-  return code;
-}
 
 int landlockAbi() {
   long abi = ::syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
@@ -389,8 +255,6 @@ std::vector<std::string> serialDevicePaths() {
 }
 
 #else  // no Landlock or seccomp: rb's own checks are the only line
-
-std::vector<BpfInstruction> seccompProgram(const KernelRules&) { return {}; }
 
 int landlockAbi() { return 0; }
 

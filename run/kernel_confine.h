@@ -10,6 +10,7 @@
 // all there is where the kernel has no Landlock (older kernels, macOS).
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,17 +50,13 @@ struct BpfInstruction {
   uint32_t k;
 };
 
-/// The seccomp filter confineProcess puts in force for `rules`, as classic BPF (for the tests,
-/// which run it). On this processor's own system calls: socket, ptrace, process_vm_readv/writev,
-/// pidfd_getfd, kcmp, the mount calls, pivot_root, chroot, unshare, setns, the key calls, bpf,
-/// perf_event_open, userfaultfd, the module and kexec calls, reboot, swapon/off, acct, quotactl,
-/// the clock and host-name setters, syslog, vhangup, iopl/ioperm, the handle calls,
-/// fanotify_init, io_uring, lookup_dcookie and uselib fail with EPERM; without allowSpawn also
-/// execve, execveat, fork and vfork; clone3 fails with ENOSYS (its flags cannot be read); clone
-/// fails with EPERM with a new-namespace flag, and without allowSpawn unless CLONE_THREAD;
-/// ioctl fails with EPERM for TIOCSTI and TIOCLINUX. Everything else is allowed. Another
-/// processor's system calls (and x32's) end the thread. Empty where rb writes no filter.
-std::vector<BpfInstruction> seccompProgram(const KernelRules& rules);
+/// The seccomp filter confineProcess puts in force, as libseccomp built it at build time from
+/// the rules in seccomp/seccomp_rules.cpp (what it refuses is said there), for each variant:
+/// with or without KernelRules::allowSpawn, and with or without the sanitizer builds'
+/// exceptions (a release build uses only the variants without them). Linux only.
+std::span<const BpfInstruction> embeddedSeccompProgram(bool allowSpawn, bool sanitized);
+/// The processor those filters are for (an AUDIT_ARCH_* number).
+uint32_t embeddedSeccompArch();
 
 /// What was put in force.
 struct KernelStatus {

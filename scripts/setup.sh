@@ -24,7 +24,7 @@ packages=(
 # of the test tools install).
 test_build_packages=(
   catch2                # unit tests
-  libseccomp-dev        # the tests check rb's seccomp filter (docs/confinement.md) against libseccomp's
+  libseccomp-dev        # builds the seccomp filter every run of a program is under, at build time (docs/confinement.md)
 )
 test_packages=(
   libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
