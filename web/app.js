@@ -111,8 +111,11 @@
     checkTimer = setTimeout(async () => { if (!run) listDiagnostics(await rb.check(editor.value)); }, 250);
   }
   source.addEventListener('input', changed);
+  // Tab indents; Esc, then Tab within 2 s, leaves the text (as in the CodeMirror editor).
+  let escapedAt = -Infinity;
   source.addEventListener('keydown', (e) => {
-    if (e.key === 'Tab') {
+    if (e.key === 'Escape') escapedAt = performance.now();
+    if (e.key === 'Tab' && performance.now() - escapedAt > 2000) {
       e.preventDefault();
       source.setRangeText('    ', source.selectionStart, source.selectionEnd, 'end');
       changed();
