@@ -103,11 +103,12 @@ class Machine {
   void setLocation(SourceLoc loc) { location_ = loc; }
 
   /// Notes what a sensor built-in read (each sensor's last reading is kept, for views that say
-  /// it, as the web page's text of the screen does; no observer and no text needed).
+  /// it, as the web page's text of the screen does; no observer and no text needed). `sensor`
+  /// is the built-in table's own name: the same text is always at the same address.
   void noteReading(std::string_view sensor, double value) {
     ++readings_;
     for (SensorReading& r : lastReadings_)
-      if (r.name.data() == sensor.data() || r.name == sensor) {
+      if (r.name.data() == sensor.data()) {
         r.value = value, r.loc = location_, r.order = readings_;
         return;
       }
