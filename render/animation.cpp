@@ -743,6 +743,53 @@ std::vector<uint32_t> robotCorrections(const RecordedStep& s, const QuantizedPos
   return differ;
 }
 
+/// robotCorrections() remembered by its inputs, the robot's drawn state (placed, centre,
+/// heading, radius: its colour changes no pixel) and the quantized pose: a program that goes
+/// round the same path (a loop of 100,000 steps) draws a few poses again and again, each
+/// rasterized twice for nothing. At most kMaxPoses poses are kept (then it starts afresh).
+class CorrectionCache {
+ public:
+  const std::vector<uint32_t>& get(const RecordedStep& s, const QuantizedPose& q) {
+    const Key key = keyOf(s, q);
+    auto it = map_.find(key);
+    if (it != map_.end()) return it->second;
+    if (map_.size() >= kMaxPoses) map_.clear();
+    return map_.emplace(key, robotCorrections(s, q)).first->second;
+  }
+
+ private:
+  static constexpr size_t kMaxPoses = 1 << 16;
+  struct Key {
+    uint64_t pose[4];  ///< x, y, heading, radius, bit for bit (a NaN is itself)
+    int64_t quantized[6];
+    bool located, visible;
+    friend bool operator==(const Key&, const Key&) = default;
+  };
+  struct Hash {
+    size_t operator()(const Key& k) const {
+      uint64_t h = k.located | uint64_t{k.visible} << 1;
+      auto mix = [&h](uint64_t v) {
+        h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+        h *= 0xbf58476d1ce4e5b9ull;
+      };
+      for (uint64_t v : k.pose) mix(v);
+      for (int64_t v : k.quantized) mix(static_cast<uint64_t>(v));
+      return static_cast<size_t>(h ^ (h >> 31));
+    }
+  };
+  static Key keyOf(const RecordedStep& s, const QuantizedPose& q) {
+    Key k{};
+    const double pose[4] = {s.x, s.y, s.heading, s.radius};
+    std::memcpy(k.pose, pose, sizeof pose);
+    const int64_t quantized[6] = {q.x, q.y, q.r, q.dx, q.dy, q.heading};
+    std::memcpy(k.quantized, quantized, sizeof quantized);
+    k.located = s.located;
+    k.visible = q.visible;
+    return k;
+  }
+  std::unordered_map<Key, std::vector<uint32_t>, Hash> map_;
+};
+
 const char* statusName(RunStatus s) {
   switch (s) {
     case RunStatus::Finished: return "finished";
@@ -780,13 +827,16 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   // the page keeps screens of its own to seek).
   size_t runs = 0;
   {
-    std::vector<Colour> screen(kPixels, colours::kWhite);
+    // Screens in large memory (one huge page each where there are some, not 470 page faults).
+    Pixels screen(kPixels, colours::kWhite), now;
     std::vector<ScreenRun> changes;
     for (size_t k = 0; k < frames.size(); ++k) {
       const RecordedFrame& f = frames[k];
       const std::vector<ScreenRun>* list = &f.runs;
       if (k > 0 && f.full) {
-        const std::vector<Colour> now = screenFromRuns(f.runs, kPixels);
+        now.clear();
+        for (const ScreenRun& r : f.runs) now.insert(now.end(), std::min<size_t>(r.count, kPixels - now.size()), r.colour);
+        now.resize(kPixels, colours::kWhite);
         changes.clear();
         for (size_t i = 0; i < kPixels;) {
           size_t j = i;
@@ -799,7 +849,7 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
           }
           i = j;
         }
-        screen = now;
+        screen.swap(now);
         list = &changes;
       } else {
         size_t at = 0;
@@ -856,10 +906,11 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   size_t corrections = 0;
   {
     Packer c;
+    CorrectionCache cache;
     size_t before = 0;
     for (size_t i = 0; i < n; ++i) {
       if (!poseChanged[i] || (!steps[i].located)) continue;
-      const std::vector<uint32_t> differ = robotCorrections(steps[i], poses[i]);
+      const std::vector<uint32_t>& differ = cache.get(steps[i], poses[i]);
       if (differ.empty()) continue;
       c.u(i - before);
       before = i;
