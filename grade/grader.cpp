@@ -343,7 +343,7 @@ std::string Grader::describeProcess(const JobOutcome& o, const Job& job) const {
   if (o.kind == JobOutcome::TimedOut) {
     // The run had --timeout and did not stop itself by then (one statement ran long): say both.
     char buf[200];
-    std::snprintf(buf, sizeof buf, "did not finish: killed after %g s (the time limit is %s)", job.timeoutSeconds,
+    std::snprintf(buf, sizeof buf, "did not finish: killed after %g s (the time limit is %s)", wallLimit(job),
                   assignment_ ? refs_.limits.time.c_str() : "the run's --timeout, doubled for rb check and the run");
     text = buf;
   }
@@ -591,6 +591,9 @@ Task Grader::makeTask(size_t program, const std::string& file, size_t seedIndex,
     t.stdinLines = std::move(stdinLines);
   }
   job.argv.insert(job.argv.end(), {"--", inPlace ? runName : fs::path(t.mainRel).filename().string()});
+  // Writing the replay of a long run takes about as long as the run: as much time again for
+  // it, so that asking for --html never turns a finished program into a timed-out one.
+  if (!t.replayFile.empty()) job.reportSeconds = job.timeoutSeconds;
   return t;
 }
 

@@ -62,7 +62,7 @@ void limit(int resource, rlim_t soft, rlim_t hard) {
     if (job.memoryBytes && !memoryLimitUnsupported()) limit(RLIMIT_AS, job.memoryBytes, job.memoryBytes);
     if (job.fileBytes) limit(RLIMIT_FSIZE, job.fileBytes, job.fileBytes);
     if (job.timeoutSeconds > 0) {
-      rlim_t cpu = static_cast<rlim_t>(std::ceil(job.timeoutSeconds)) + 1;
+      rlim_t cpu = static_cast<rlim_t>(std::ceil(job.timeoutSeconds + std::max(0.0, job.reportSeconds))) + 1;
       limit(RLIMIT_CPU, cpu, cpu + 1);
     }
     limit(RLIMIT_CORE, 0, 0);
@@ -76,6 +76,8 @@ void limit(int resource, rlim_t soft, rlim_t hard) {
 }
 
 }  // namespace
+
+double wallLimit(const Job& job) { return job.timeoutSeconds + std::max(0.0, job.reportSeconds); }
 
 bool memoryLimitUnsupported() {
 #if defined(__SANITIZE_ADDRESS__)
@@ -108,7 +110,7 @@ std::string describe(const JobOutcome& o, const Job& job) {
       return "killed by " + sig;
     }
     case JobOutcome::TimedOut:
-      std::snprintf(buf, sizeof buf, "killed after %g s (the time limit)", job.timeoutSeconds);
+      std::snprintf(buf, sizeof buf, "killed after %g s (the time limit)", wallLimit(job));
       return buf;
     case JobOutcome::NotStarted:
       return "could not start: " + o.error;
@@ -186,7 +188,7 @@ int runJobs(const std::vector<Job>& jobs, int parallel,
         continue;
       }
       auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-          job.timeoutSeconds > 0 ? job.timeoutSeconds : 1e9));
+          job.timeoutSeconds > 0 ? wallLimit(job) : 1e9));
       running.emplace(pid, Running{index, started, started + limit});
     }
     if (running.empty()) continue;

@@ -22,6 +22,10 @@ struct Job {
   uint64_t fileBytes = 0;         ///< RLIMIT_FSIZE: the largest file it may write (0: none)
   /// The child's whole environment ("NAME=value"); empty: the parent's.
   std::vector<std::string> env;
+  /// More time, wall clock and processor, after timeoutSeconds, for what the child writes once
+  /// the program has run (a replay of a long run): that work is rb's, and a report asked for
+  /// must not change whether a program finished in time.
+  double reportSeconds = 0;
 };
 
 struct JobOutcome {
@@ -37,6 +41,9 @@ struct JobOutcome {
   double seconds = 0;  ///< wall time from start to end
   std::string error;
 };
+
+/// The wall-clock time after which the job is killed: its time limit and the time for reports.
+double wallLimit(const Job& job);
 
 /// A short description: "exit 0", "killed by signal 11 (SIGSEGV)", "killed after 10 s".
 std::string describe(const JobOutcome& outcome, const Job& job);

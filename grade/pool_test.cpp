@@ -79,6 +79,22 @@ TEST_CASE("a crash, a hang and a missing program fail only their own job", "[gra
   CHECK(took < 10);  // the sleeping job was killed, not waited for
 }
 
+TEST_CASE("a job's time for reports comes after its time limit, and a kill names both", "[grade][pool]") {
+  // The same half-second job: killed at its 0.2 s limit alone, finished with 2 s more for
+  // reports; one that never ends is killed at the sum.
+  Job alone = shell("sleep 0.5; exit 4", 0.2), more = alone, never = shell("sleep 30", 0.2);
+  more.reportSeconds = 2;
+  never.reportSeconds = 0.2;
+  std::vector<JobOutcome> got(3);
+  runJobs({alone, more, never}, 3, [&](size_t i, const JobOutcome& o) { got[i] = o; });
+  CHECK(got[0].kind == JobOutcome::TimedOut);
+  CHECK(got[1].kind == JobOutcome::Exited);
+  CHECK(got[1].code == 4);
+  CHECK(got[2].kind == JobOutcome::TimedOut);
+  CHECK(describe(got[2], never) == "killed after 0.4 s (the time limit)");
+  CHECK(got[2].seconds >= 0.4);
+}
+
 TEST_CASE("at most N jobs run at once", "[grade][pool]") {
   fs::path dir = scratch();
   // Each job marks itself running with a file of its own, counts the marks, and removes its

@@ -72,9 +72,14 @@
       if (d.line) marks.set(d.line, d.severity === 'error' ? 'err' : marks.get(d.line) || 'warn');
       const li = document.createElement('li');
       li.className = d.severity;
-      li.textContent = `${d.line}:${d.col}: ${d.severity}: ${d.message}${d.code ? ' [' + d.code + ']' : ''}`;
       li.dataset.line = d.line;
-      li.onclick = () => editor.goToLine(d.line);
+      // A button: the keyboard reaches it (Tab) and Enter goes to the line, as a click does.
+      const b = document.createElement('button');
+      b.type = 'button';
+      b.textContent = `${d.line}:${d.col}: ${d.severity}: ${d.message}${d.code ? ' [' + d.code + ']' : ''}`;
+      b.title = `Go to line ${d.line}`;
+      b.onclick = () => editor.goToLine(d.line);
+      li.appendChild(b);
       ul.appendChild(li);
     }
     editor.setDiagnostics(list);
@@ -106,14 +111,14 @@
     checkTimer = setTimeout(async () => { if (!run) listDiagnostics(await rb.check(editor.value)); }, 250);
   }
   source.addEventListener('input', changed);
+  // Tab indents; Esc, then Tab within 2 s, leaves the text (as in the CodeMirror editor).
+  let escapedAt = -Infinity;
   source.addEventListener('keydown', (e) => {
-    if (e.key === 'Tab') {
+    if (e.key === 'Escape') escapedAt = performance.now();
+    if (e.key === 'Tab' && performance.now() - escapedAt > 2000) {
       e.preventDefault();
       source.setRangeText('    ', source.selectionStart, source.selectionEnd, 'end');
       changed();
-    } else if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) {
-      e.preventDefault();
-      runProgram();
     }
   });
   function setSource(text) {
@@ -208,21 +213,36 @@
     const x = r.left - box.left + (r.width - 800 * scale) / 2, y = r.top - box.top + (r.height - 600 * scale) / 2;
     layer.style.transform = `translate(${x}px, ${y}px) scale(${scale})`;
   }
+  // The controls are buttons of the page too, for the keyboard: Tab reaches them after the
+  // screen, and Enter or Space presses one where it is (its middle), as a click there does; an
+  // edit box so pressed takes the keys typed next on the screen, which gets the focus. The mouse
+  // goes through them to the screen (pointer-events: none).
   function showControls(c) {
     controls = c;
     const layer = $('controls');
+    const had = layer.contains(document.activeElement) ? document.activeElement.dataset.key : null;
     layer.textContent = '';
-    const add = (cls, item, text) => {
-      const d = document.createElement('div');
+    const add = (cls, item, text, label, edit) => {
+      const d = document.createElement('button');
+      d.type = 'button';
       d.className = cls;
       d.dataset.name = item.name;
+      d.dataset.key = (edit ? 'edit:' : 'button:') + item.name;
       Object.assign(d.style, {left: `${item.x}px`, top: `${item.y}px`, width: `${item.w}px`, height: `${item.h}px`});
       d.textContent = text;
+      d.setAttribute('aria-label', label);
+      d.addEventListener('click', (e) => {
+        if (e.detail !== 0 || !run) return;  // only the keyboard's clicks (a mouse's went to the screen)
+        pressAt(item.x + Math.floor(item.w / 2), item.y + Math.floor(item.h / 2));
+        if (edit) canvas.focus();
+      });
       layer.appendChild(d);
+      if (d.dataset.key === had) d.focus();
     };
     // In the order added: the last added is on top, as a press finds it (core/input).
-    c.buttons.forEach((b) => add('rb-button', b, b.name));
-    c.edits.forEach((e) => add('rb-edit' + (e.name === c.focus ? ' focus' : ''), e, e.text));
+    c.buttons.forEach((b) => add('rb-button', b, b.name, `the program's button ${b.name}`, false));
+    c.edits.forEach((e) => add('rb-edit' + (e.name === c.focus ? ' focus' : ''), e, e.text,
+                               `the program's edit box ${e.name}: ${e.text || 'empty'}`, true));
     placeControls();
   }
   new ResizeObserver(placeControls).observe(canvas);
@@ -235,6 +255,10 @@
   canvas.addEventListener('keydown', (e) => {
     const code = keyCode(e);
     if (!code || e.ctrlKey || e.metaKey) return;
+    // Tab and Shift+Tab move the focus on, as anywhere on the page (the screen is no trap); only
+    // while one of the program's edit boxes has the keyboard does Tab go into it (and give the
+    // keyboard back, by core/input's rules).
+    if (e.key === 'Tab' && !(run && controls.focus)) return;
     e.preventDefault();
     if (run && controls.focus) input.typed.push(code);  // into the program's edit box
     else keyDown(code);
@@ -259,6 +283,14 @@
   });
   canvas.addEventListener('mouseup', (e) => { input.mouse = [input.mouse[0], input.mouse[1], e.buttons & 7]; });
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  // A press of the left button at screen pixel (x, y) and its release, as the mouse gives them.
+  function pressAt(x, y) {
+    input.mouse = [x, y, 1];
+    const c = [x, y, 1];
+    const w = input.clickWaiters.shift();
+    if (w) w(c); else input.clicks.push(c);
+    setTimeout(() => { input.mouse = [x, y, input.mouse[2] & ~1]; }, 100);
+  }
 
   // ---------------------------------------------------------------- the run
   let run = null;          // {stop, done}
@@ -274,8 +306,46 @@
     $('svg').disabled = on || !lastSvg;
     $('stop').disabled = !on;
     $('pause').disabled = !on;
-    $('step').disabled = !on || !paused;
+    $('step').disabled = !on;
     $('pause').textContent = paused ? 'Resume' : 'Pause';
+  }
+
+  // ---------------------------------------------------------------- the screen as text
+  // What a screen reader says of the screen (#screenText, aria-live polite): the robot's pose
+  // and pen, the sensors the program read last and the last line it printed, from the core's
+  // state (WebHost::stateJson, sent as the run goes). Said at most every SAY_EVERY_MS while a
+  // run goes, at once when it ends; errors are said at once (#alert, role alert) with their line.
+  const SAY_EVERY_MS = 2000;
+  const said = {text: '', at: -Infinity, pending: null, timer: 0};
+  function describeState(s) {
+    if (!s) return '';
+    const parts = [];
+    if (!s.placed) parts.push('The robot is not placed.');
+    else parts.push(`Robot at x ${s.x}, y ${s.y}, heading ${s.heading} degrees, pen ${s.pen ? 'down' : 'up'}.`);
+    if (s.sensors && s.sensors.length)
+      parts.push('Last read: ' + s.sensors.slice(0, 5).map((r) => `${r.name} ${r.value} (line ${r.line})`).join(', ') + '.');
+    if (s.printed) parts.push(`Printed: ${s.printed}`);
+    return parts.join(' ');
+  }
+  function sayNow() {
+    clearTimeout(said.timer);
+    said.timer = 0;
+    const text = said.pending;
+    said.pending = null;
+    if (text === null || text === said.text) return;
+    $('screenText').textContent = text;
+    said.text = text;
+    said.at = performance.now();
+  }
+  function say(text, now) {
+    said.pending = text;
+    const wait = said.at + SAY_EVERY_MS - performance.now();
+    if (now || wait <= 0) sayNow();
+    else if (!said.timer) said.timer = setTimeout(sayNow, wait);
+  }
+  function alertError(text) {
+    $('alert').textContent = '';
+    if (text) $('alert').textContent = text;
   }
   function appendOutput(text, cls) {
     const keep = Math.max(1, Number($('keepOutput').value) || 256) * 1024;
@@ -451,6 +521,7 @@
     paused = false;
     stepMode = false;
     status.textContent = 'running';
+    alertError('');
     const started = performance.now();
     canvas.focus();
     const r = rb.start(editor.value, Object.assign(limits(), {
@@ -463,6 +534,7 @@
       wrapYield: pauseGate,
       stepping: () => stepMode,
       atLine: stepAt,
+      onState: (st) => say(describeState(st)),
     }));
     run = r;
     setRunning(true);
@@ -493,6 +565,11 @@
       appendOutput((outputText && !outputText.endsWith('\n') ? '\n' : '') + result.error, 'error');
     }
     status.textContent = `${result.status} (${secs} s, ${result.steps || 0} steps)`;
+    const ended = {finished: 'The program finished', stopped: 'The program was stopped', error: 'The program stopped with an error',
+                   'step-limit': 'The program stopped at the step limit', timeout: 'The program stopped at the time limit',
+                   rejected: 'The program did not compile'}[result.status] || `The program ended: ${result.status}`;
+    say(`${ended} after ${result.steps || 0} steps. ${describeState(result.state)}`.trim(), true);
+    if (result.errorMessage) alertError(result.errorLine ? `Error at line ${result.errorLine}: ${result.errorMessage}` : `Error: ${result.errorMessage}`);
     window.rbLastRun = result;
   }
   function stopProgram() {
@@ -519,16 +596,30 @@
     setRunning(true);
     status.textContent = paused ? 'paused' : 'running';
   };
+  // Step: while paused, one statement; while running, the run stops before its next statement.
   $('step').onclick = () => {
-    if (!run || !paused) return;
+    if (!run) return;
     stepMode = true;
     paused = false;
     status.textContent = 'stepping';
     resumeWaiters.splice(0).forEach((w) => w());
   };
+  // The page's keys (the keys menu lists them): Ctrl with Enter, comma, semicolon or period,
+  // wherever the focus is. A running program never gets a key with Ctrl (keyCode above), so
+  // none of these is a key it could read.
+  const SHORTCUTS = {'Enter': 'run', ',': 'pause', ';': 'step', '.': 'stop'};
   window.addEventListener('keydown', (e) => {
-    if (e.key === 'Escape' && run && document.activeElement === canvas && e.shiftKey) stopProgram();
-  });
+    if (!(e.ctrlKey || (e.metaKey && e.key === 'Enter')) || e.altKey) return;
+    const action = SHORTCUTS[e.key];
+    if (!action) return;
+    e.preventDefault();
+    e.stopPropagation();
+    if (!$(action).disabled) $(action).click();
+  }, true);
+  $('skip').addEventListener('click', (e) => { e.preventDefault(); editor.focus(); });
+  const speedText = () => $('speed').setAttribute('aria-valuetext', `${$('speed').value} ms per pixel or degree`);
+  $('speed').addEventListener('input', speedText);
+  speedText();
 
   // ---------------------------------------------------------------- start
   window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash,

@@ -3,7 +3,8 @@
 //
 //   await rb.check(source)             -> [{severity, line, col, message, code, text}, ...]
 //   await rb.run(source, {stdin, seed, maxSteps, timeout, maxMemory, keys, svg})
-//                                      -> {output, error, png, svg, status, steps, diagnostics}
+//                                      -> {output, error, errorLine, errorMessage, png, svg, status,
+//                                          steps, diagnostics, state}
 //   rb.start(source, options)          a live run for the page (web/app.js): {done, stop()}
 //   rb.stop()                          stops the run in progress (within one slice)
 //
@@ -152,6 +153,7 @@
     serialSend: async () => false,
     serialTake: async () => null,
     serialClose: () => {},
+    state: () => {},
   };
 
   // What rb.run's options may carry into a worker.
@@ -218,9 +220,11 @@
     let error = null;
     if (result.error) error = result.error.text || result.error.message;
     else if (result.status === 'rejected') error = errors.map((d) => d.text).join('');
+    const first = result.error || errors[0];
     return Object.assign(result, {
       output,
       error,
+      errorMessage: first ? first.message : null,
       errorLine: result.error ? result.error.line : errors.length ? errors[0].line : null,
       frame,
       png: frame && options.png !== false ? await pngDataUrl(frame.rgba, frame.width, frame.height) : null,
@@ -272,6 +276,9 @@
         // atLine(line) before each statement of the program's file.
         stepping: () => (options.stepping ? options.stepping() : false),
         atLine: (line) => (options.atLine ? options.atLine(line) : Promise.resolve()),
+        // The state the page's text alternative of the screen reads (WebHost::stateJson): sent
+        // when it changed, at most every 250 ms, and whenever the run waits for the page.
+        state: (json) => { if (options.onState) options.onState(JSON.parse(json)); },
         // A sleep ends early when the run is stopped.
         yield: (options.wrapYield || ((f) => f))((ms) => (ms > 0 ? new Promise((r) => {
           const done = () => { clearTimeout(timer); state.wake.delete(done); r(); };

@@ -245,8 +245,13 @@ class Browser:
         self.session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
         for domain in ["Page", "Runtime", "Log"]:
             self.call(domain + ".enable", session=True)
+        self.viewport(1280, 900)
+
+    def viewport(self, width, height, scale=1):
+        """The page's size in CSS pixels and device pixels per CSS pixel: a window of 1366x768 at
+        200% zoom is viewport(683, 384, 2)."""
         self.call("Emulation.setDeviceMetricsOverride",
-                  {"width": 1280, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session=True)
+                  {"width": width, "height": height, "deviceScaleFactor": scale, "mobile": False}, session=True)
 
     def close(self):
         try:

@@ -302,7 +302,7 @@ def case_controls(env):
     prog = ('AddButton "Go", 100, 100\nAddEdit "Name", 100, 200, 120, "Bob"\n'
             'repeat\n  GetButton b\nuntil b = "Go"\nprint "name=" + GetEdit("Name")\n')
     b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
-    shown = ("[...document.querySelectorAll('#controls > div')].map((d) => [d.className, d.textContent, "
+    shown = ("[...document.querySelectorAll('#controls > *')].map((d) => [d.className, d.textContent, "
              "(() => { const r = d.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()])")
     wait_for(b, f"{shown}.length === 2", "the button and the edit box did not appear")
     controls = b.js(shown)

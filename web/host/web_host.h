@@ -56,6 +56,16 @@ class WebHost : public Host {
   /// port), with the protocol and the messages of `rb run --real` (core/robot/reply_check.h).
   std::unique_ptr<RobotLink> openRobot(int64_t port) override;
 
+  /// What the page's text alternative of the screen says, as JSON: the statement running, the
+  /// robot's pose and pen, the last reading of each sensor the program read (most recent
+  /// first) and the last line the program printed. Numbers as rb prints them (formatNumber),
+  /// the pose to a tenth.
+  std::string stateJson() const;
+  /// Live runs: hands stateJson() to the page when it has changed, at most every
+  /// kStateEveryMs unless `force` (a wait for the user, a step, the end).
+  void presentState(bool force);
+  static constexpr double kStateEveryMs = 250;
+
   /// The page's Stop: blocking calls return at once and the run ends at its next check.
   void stop() { requestStop(); }
   /// Gives the output gathered so far to the page.
@@ -105,6 +115,10 @@ class WebHost : public Host {
   WatchdogLimits limits_;
   RunAlarms* alarms_ = nullptr;
   std::string controlsJson_;  ///< what the page was last shown of the controls
+  std::string stateJson_;     ///< what the page was last given of the state
+  double lastStateMs_ = -1000;
+  std::string lineNow_;   ///< the line being printed (no line end yet)
+  std::string lastLine_;  ///< the last line printed whole
   /// What the last frame showed: the screen's version and flips, the robot.
   struct Shown {
     uint64_t canvasVersion = 0, flips = 0;
