@@ -1760,18 +1760,22 @@ function start(d) {
   // The screen as large as fits with the controls under it in the window (or the report's
   // frame), at most its own size (--scale), at least 240 pixels wide.
   function fit() {
-    const c = $('screen'), stage = $('stage');
-    for (let pass = 0; pass < 2; pass++) {
-      const cr = c.getBoundingClientRect(), sr = stage.getBoundingClientRect();
-      const room = innerHeight - (cr.top + scrollY) - (sr.bottom - cr.bottom) - 8;
-      const w = Math.max(240, Math.min(W * meta.scale, Math.floor(room * W / H)));
+    const c = $('screen'), stage = $('stage'), main = stage.parentElement;
+    const pad = parseFloat(getComputedStyle(main).paddingLeft) + parseFloat(getComputedStyle(main).paddingRight);
+    let w = Math.max(240, Math.min(W * meta.scale, Math.floor(main.clientWidth - pad)));
+    // Smaller until the stage ends in the window (the controls may wrap as it narrows).
+    for (let pass = 0; pass < 8; pass++) {
       c.style.width = w + 'px';
+      stage.style.width = w + 'px';  // the controls under the screen, as wide as it
+      const over = stage.getBoundingClientRect().bottom + scrollY + 8 - innerHeight;
+      if (over <= 0 || w <= 240) break;
+      w = Math.max(240, Math.floor(w - Math.max(1, over) * W / H));
     }
   }
-  fit();
   let fitting = 0;
   addEventListener('resize', () => { if (!fitting) fitting = requestAnimationFrame(() => { fitting = 0; fit(); }); });
   show(0);
+  fit();
   // Playing on opening: the box's state as the viewer last set it on this computer, else the
   // replay's own (rb render --autoplay, rb test's replays), never when the viewer asks for
   // reduced motion; it starts once the screen is in view, unless someone moved it already.
