@@ -211,7 +211,12 @@ def case_animate(env):
     env.expect_exit(r, 0)
     expect(png_size(png) == (800, 600), "no picture beside the animation")
     images, loops = gif_frames(gif)
-    expect(images == 10 and loops, f"{images} images, loops {loops}: expected the 10 moments of the square, looping")
+    # The 10 moments of the square, and the glides: 11 frames more along each side, 5 in each turn.
+    expect(images == 10 + 4 * 11 + 4 * 5 and loops, f"{images} images, loops {loops}: expected the square's 74, looping")
+    nog = env.path("square-steps.gif")
+    env.expect_exit(env.run(env.fig17, "--animate", nog, "--no-glide"), 0)
+    images, loops = gif_frames(nog)
+    expect(images == 10 and loops, f"--no-glide: {images} images, loops {loops}: expected the 10 moments of the square")
     expect(os.path.getsize(gif) < 200 * 1024, f"the square's GIF is {os.path.getsize(gif)} bytes")
     svg = env.path("square.SVG")
     env.expect_exit(env.run(env.fig17, "--animate", svg, "--fps", "25"), 0)
