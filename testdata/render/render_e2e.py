@@ -250,7 +250,15 @@ def case_animate_error(env):
         env.expect_exit(r, 70)
         expect("error:" in r.stderr and "crash.bas:4" in r.stderr, f"the error is not on stderr: {r.stderr}")
         expect(os.path.getsize(out) > 1000, f"no {ext} replay after the error")
-    expect('"status":"runtime error"' in open(env.path("crash.html")).read(), "the page does not say how the run ended")
+    page = open(env.path("crash.html")).read()
+    expect('"status":"runtime error"' in page, "the page does not say how the run ended")
+    # 3 statements, the for, 4 moves and nexts, the fifth move: the player counts 12, not the
+    # statements up to the loop's last jump (issue 37: "a crash into the wall reports 0 steps").
+    expect('"totalSteps":12' in page, "the player does not count the statements up to the crash")
+    wall = env.program("wall.bas", "rLocate 400, 60\nrPen DOWN\nrForward 100\n")
+    out = env.path("wall.html")
+    env.expect_exit(env.run(wall, "--animate", out), 70)
+    expect('"totalSteps":3' in open(out).read(), "a crash with no jump before it: the player does not count 3 statements")
 
 
 def case_animate_usage(env):
