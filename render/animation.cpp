@@ -1470,6 +1470,7 @@ function start(d) {
   }
   function glide(i, j, m) {
     const P = meta.posQ, t = j / m;
+    shownPlay = -1;
     const ax = d.qx[i] / P, ay = d.qy[i] / P, bx = d.qx[i + 1] / P, by = d.qy[i + 1] / P, r = d.qr[i] / P;
     current = i;
     toFrame(d.frame[i]);
@@ -1606,6 +1607,7 @@ function start(d) {
   }
 
   let current = -1, lineShown = null, errShown = null, outShown = -1;
+  let shownPlay = -1;  // the frame of the animation last shown by playing (-1: a step by hand)
   function panes(i) {
     const s = d.step[i];
     $('position').textContent = 'step ' + (i + 1) + ' of ' + n + ' \u00b7 ' +
@@ -1666,6 +1668,7 @@ function start(d) {
   function show(i) {
     i = Math.max(0, Math.min(n - 1, Math.round(i)));
     current = i;
+    shownPlay = -1;
     toFrame(d.frame[i]);
     for (let p = 0; p < W * H; p++) view[p] = pal[screen[p]];
     const c = pal[d.colour[i]];
@@ -1704,6 +1707,7 @@ function start(d) {
       next = k;
       if (d.playPart[k - 1]) glide(d.playStep[k - 1], d.playPart[k - 1], d.playParts[k - 1]);
       else show(d.playStep[k - 1]);
+      shownPlay = k - 1;
     }
     if (next >= meta.play) { pause(); return; }
     timer = setTimeout(tick, Math.max(1, Math.min(250, (d.playMs[next] - t) / rate)));
@@ -1713,7 +1717,8 @@ function start(d) {
     if (current >= n - 1) show(0);
     playing = true;
     playWord('\u25A0 ', 'pause');
-    next = firstAfter(current);
+    // Paused inside a glide: on from its frame; else from the first frame after the step shown.
+    next = shownPlay >= 0 && d.playStep[shownPlay] === current ? shownPlay + 1 : firstAfter(current);
     baseMs = next > 0 ? d.playMs[next - 1] : 0;
     anchor = performance.now();
     rate = speed();

@@ -569,7 +569,7 @@ def case_html_glides(env):
     width, _, gif_frames, _ = read_gif(open(gif, "rb").read())
     b = env.start()
     env.open_player(html)
-    frames = b.js("rbPlayer.frames")
+    frames = b.js("rbPlayer.frames") or []
     expect(len(frames) == 11 + 4 * 11 + 4 * 5, f"{len(frames)} frames play, not 11 and the glides")
     expect([f[0] for f in frames if f[1] == 0] == [0, 1, 6, 7, 9, 10, 12, 13, 15, 16, 17],
            f"the steps' own frames: {frames}")
@@ -687,6 +687,36 @@ def case_html_autoplay(env):
     env.open_player(auto)
     b.js(settle)
     expect(not b.js("rbPlayer.playing") and b.js("rbPlayer.step") == 0, "the cleared box did not stop --autoplay")
+    # rb test's replays play once scrolled into view in a program's page (the box cleared above
+    # is forgotten: a fresh browser).
+    b.close()
+    env.browser = None
+    cls = env.path("class")
+    os.makedirs(cls)
+    shutil.copy(env.fig17, os.path.join(cls, "square.bas"))
+    report = env.path("report")
+    subprocess.run([env.rb, "test", cls, "--html", report], capture_output=True, text=True, timeout=120)
+    b = env.start()
+    b.viewport(1366, 768)
+    b.open(os.path.join(report, "programs", "square.html"))
+    tree = b.call("Page.getFrameTree", session=True)["frameTree"]
+    child = tree.get("childFrames", [{}])[0].get("frame", {}).get("id")
+    expect(child, f"no replay frame in the program's page: {tree}")
+    world = b.call("Page.createIsolatedWorld", {"frameId": child}, session=True)["executionContextId"]
+
+    def position():
+        r = b.call("Runtime.evaluate", {"expression": "document.getElementById('position').textContent",
+                                        "contextId": world, "returnByValue": True}, session=True)
+        return r["result"].get("value") or ""
+    below = b.js("document.querySelector('iframe.replay').getBoundingClientRect().top > innerHeight")
+    b.js(settle)
+    if below:
+        expect(position().startswith("step 1 of"), f"the report's replay played out of view: {position()!r}")
+    b.js("document.querySelector('iframe.replay').scrollIntoView(); true")
+    deadline = time.monotonic() + 10
+    while position().startswith("step 1 of"):
+        expect(time.monotonic() < deadline, "the report's replay did not start once in view")
+        time.sleep(0.1)
     env.expect_quiet()
 
 
