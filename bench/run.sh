@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Benchmarks rb against Lua 5.4, yabasic, brandy (Matrix Brandy BBC BASIC) and, where a
-# benchmark has a .py version, Python 3.
+# Benchmarks rb against Lua 5.4, LuaJIT's interpreter (luajit -joff, the .lua programs),
+# yabasic, brandy (Matrix Brandy BBC BASIC) and, where a benchmark has a .py version, Python 3.
 #
 #   bench/run.sh [-n N] [path/to/rb]
 #
@@ -8,14 +8,15 @@
 # against the expected answer (the script fails loudly on a wrong answer or a crash); then each
 # program is run N times per implementation (default 7, in rounds that alternate between the
 # implementations so that background load hits them alike) and the median wall time is
-# reported with its ratio to Lua 5.4, then the peak memory (maximum resident set size, measured
-# once per program and implementation with GNU time).
+# reported with its ratio to Lua 5.4 (rb's also to LuaJIT's interpreter), then the peak memory
+# (maximum resident set size, measured once per program and implementation with GNU time).
+# The programs run at least half a second in Lua 5.4; the startup row is one line, `print 1`.
 # A peer that is not installed, or a benchmark without a version for it, is shown as n/a.
 # Results are also written to bench/results/ (git-ignored) as text and JSON.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-"$here/../scripts/setup.sh" --bench >/dev/null   # the peers: Lua, yabasic, brandy, hyperfine
+"$here/../scripts/setup.sh" --bench >/dev/null   # the peers: Lua 5.4, LuaJIT, yabasic, brandy, hyperfine
 runs=7
 
 usage() {
@@ -70,16 +71,17 @@ programs = os.path.join(here, "programs")
 
 # name -> expected output (the whole of stdout, without the final newline)
 BENCHMARKS = [
+    ("startup", "1"),
     ("loop", "25000002500000"),
-    ("calls", "1000000"),
-    ("strings", "6377790"),
+    ("calls", "40000000"),
+    ("strings", "29477790"),
     ("arrays", "148933"),
     ("matmul", "546750000"),
-    ("fib", "196418"),
-    ("fib_sub", "196418"),
+    ("fib", "5702887"),
+    ("fib_sub", "5702887"),
     ("callparams", "1500007500000"),
-    ("appends", "100000"),
-    ("appends1m", "1000000"),
+    ("appends", "150000"),
+    ("appends10m", "10000000"),
 ]
 
 # Brandy on Debian is an SDL build: the dummy video driver keeps it off any display, and the
@@ -91,6 +93,7 @@ BRANDY_ENV = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
 IMPLS = [
     ("rb", rb, "bas", lambda exe, f: [exe, "run", f], None),
     ("lua", shutil.which("lua5.4"), "lua", lambda exe, f: [exe, f], None),
+    ("luajit -joff", shutil.which("luajit"), "lua", lambda exe, f: [exe, "-joff", f], None),
     ("yabasic", shutil.which("yabasic"), "yab", lambda exe, f: [exe, f], None),
     ("brandy", shutil.which("brandy"), "bbc", lambda exe, f: [exe, "-quit", f], BRANDY_ENV),
     ("python", sys.executable, "py", lambda exe, f: [exe, f], None),
@@ -148,6 +151,8 @@ def version(label, exe):
         return f"{v}, binary {exe} built {built:%Y-%m-%d %H:%M}"
     if label == "lua":
         return first_line([exe, "-v"])
+    if label.startswith("luajit"):
+        return first_line([exe, "-v"]) + " (its interpreter: -joff)"
     if label in ("yabasic", "python"):
         return first_line([exe, "--version"])
     return first_line([exe, "-version"], BRANDY_ENV)
@@ -205,7 +210,8 @@ header = [
 for label, exe, *_ in IMPLS:
     header.append(f"{label + ':':9} {version(label, exe)}")
 header.append(f"runs:     {runs} per program and implementation; median wall time, "
-              f"ratio to Lua 5.4 in parentheses; then peak memory (max RSS, one run)")
+              f"ratio to Lua 5.4 in parentheses (rb's also to LuaJIT's interpreter); then peak memory "
+              f"(max RSS, one run)")
 for line in header:
     print(line)
 print(flush=True)
@@ -264,10 +270,13 @@ def cell(name, label):
     ms = results[name][label]
     if ms is None:
         return "n/a"
+    shown = f"{ms:.1f} ms" if ms < 20 else f"{ms:.0f} ms"
     lua = results[name]["lua"]
     if label == "lua" or lua is None:
-        return f"{ms:.0f} ms"
-    return f"{ms:.0f} ms ({ms / lua:.2f}x)"
+        return shown
+    if label == "rb" and results[name]["luajit -joff"] is not None:
+        return f"{shown} ({ms / lua:.2f}x; {ms / results[name]['luajit -joff']:.2f}x LuaJIT)"
+    return f"{shown} ({ms / lua:.2f}x)"
 
 
 def memory(name, label):

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       {"trace", rb::cli::addTraceCommand},   {"render", rb::cli::addRenderCommand},
       {"robot", rb::cli::addRobotCommand},   {"ports", rb::cli::addPortsCommand},
       {"test", rb::cli::addTestCommand},     {rb::cli::kTestJobCommand, rb::cli::addTestJobCommand},
-      {"lsp", rb::cli::addLspCommand},
+      {"lsp", rb::cli::addLspCommand},       {rb::cli::kTestSimilarityCommand, rb::cli::addTestSimilarityCommand},
   };
   std::string_view wanted = argc > 1 ? argv[1] : "";
   if (wanted == "help" && argc > 2) wanted = argv[2];

@@ -18,6 +18,7 @@
 #include "html_report.h"
 #include "png_writer.h"
 #include "report.h"
+#include "similarity.h"
 #include "run_command.h"
 #include "test_job.h"
 #include "text.h"
@@ -428,6 +429,38 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
                              "--include", "--roster", "--trust-comments", "--require-sandbox", "--student"})
       if (test->count(name)) grading.push_back(name);
     exitCode = executeMerge(*opts, grading);
+  });
+}
+
+void addTestSimilarityCommand(CLI::App& app, int& exitCode, bool withOptions) {
+  struct Options {
+    std::vector<std::string> paths, ignore;
+    std::string format = "text";
+    size_t threads = 0;
+  };
+  auto opts = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(kTestSimilarityCommand,
+                                     "Compare programs as rb test --similarity does, without grading them (internal)");
+  cmd->group("");  // hidden from rb --help: for bench/grade/similarity.sh
+  if (!withOptions) return;
+  cmd->add_option("paths", opts->paths, "Programs and folders of programs")->required();
+  cmd->add_option("--similarity-ignore", opts->ignore, "As rb test's")->check(CLI::ExistingFile);
+  cmd->add_option("--format", opts->format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--threads", opts->threads, "Threads (default: one for each processor)");
+  cmd->callback([opts, &exitCode] {
+    for (const std::string& p : opts->paths)
+      if (!std::filesystem::exists(p)) {
+        say("no such file or folder: '" + p + "'");
+        exitCode = run::exitcode::kNoInput;
+        return;
+      }
+    grade::SimilarityOptions options;
+    options.ignore = opts->ignore;
+    options.threads = opts->threads;
+    const grade::SimilarityReport report = grade::findSimilar(grade::findPrograms(opts->paths), options);
+    const std::string out = opts->format == "json" ? grade::similarityJson(report) : grade::similarityText(report);
+    std::fwrite(out.data(), 1, out.size(), stdout);
+    exitCode = run::exitcode::kOk;
   });
 }
 

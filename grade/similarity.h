@@ -84,8 +84,13 @@ namespace rb::grade {
 
 struct SimilarityOptions {
   /// The text of a program as graded (rb test's copy, read before any run), or nullopt to read
-  /// the file. Unset: every file is read.
+  /// the file. Unset: every file is read. Called from several threads at once (see threads),
+  /// and twice for each program compared (once a pass) and once more for a program of a pair
+  /// reported: it must give the same text each time.
   std::function<std::optional<std::string>(const std::string& path)> source;
+  /// Threads that read and compare the programs; 0: one for each processor. The report is the
+  /// same with any number.
+  size_t threads = 0;
   /// Tokens in a k-gram: the shortest run of code two programs must share to count at all
   /// (12 tokens are about two short statements). Values below 1 count as 1.
   size_t k = 12;
@@ -178,5 +183,19 @@ std::string similarityText(const SimilarityReport& report);
 /// (a row's null: no line on that side; see SharedBlock::rows).
 /// Fractions are rounded to 4 decimals; all text is UTF-8. Ends with a line end.
 std::string similarityJson(const SimilarityReport& report);
+
+/// For the tests: the steps findSimilar takes, one at a time.
+namespace detail {
+/// The normalised token codes of a program's text: by rb's lexer (`quick` false: nullopt when
+/// the lexer finds it is not RobotBASIC), or by the quick scan that reads most programs
+/// (`quick` true: nullopt when it leaves the text to the lexer). Where both give codes, they
+/// are the same.
+std::optional<std::vector<uint32_t>> normalisedCodes(const std::string& text, bool quick);
+/// The positions winnowing selects among `hashes` with a window of w (see above).
+std::vector<uint32_t> winnowed(const std::vector<uint64_t>& hashes, size_t w);
+/// A program's distinct fingerprints as findSimilar counts them (k and window as in the
+/// options, no ignored files), from its text.
+std::vector<uint64_t> fingerprintsOf(const std::string& text, size_t k, size_t w);
+}  // namespace detail
 
 }  // namespace rb::grade

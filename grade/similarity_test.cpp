@@ -9,6 +9,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <algorithm>
+#include <map>
 
 using namespace rb::grade;
 namespace fs = std::filesystem;
@@ -810,4 +812,153 @@ TEST_CASE("one or two shared fingerprints are no evidence", "[grade][similarity]
   REQUIRE(findSimilar({a, b}, one).pairs.size() == 1);
   CHECK(findSimilar({a, b}, one).pairs[0].shared < 3);
   CHECK(findSimilar({a, b}).pairs.empty());  // the default asks for 3
+}
+
+TEST_CASE("the quick scan reads programs as rb's lexer does", "[grade][similarity]") {
+  // Every program of the repository, and texts made of the pieces programs are made of (with
+  // what the quick scan leaves to the lexer among them), in both readings.
+  std::vector<std::string> texts;
+  const fs::path root = fs::path(__FILE__).parent_path().parent_path();
+  for (const char* folder : {"examples", "testdata", "lib"})
+    for (const auto& e : fs::recursive_directory_iterator(root / folder))
+      if (e.is_regular_file() && e.path().extension() == ".bas") {
+        std::ifstream in(e.path(), std::ios::binary);
+        texts.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      }
+  const std::vector<std::string> pieces = {
+      "x", "X1", "_y$", "rem", "REM see", "Rem", "remark", "gosub", "GoSub", "Sub", "call", "then", "else",
+      "rForward", "RFORWARD", "rfeel", "GREEN", "Green", "print", "length", "length(", "abc:", "a:", "if",
+      "aVeryLongNameOf16", "aVeryLongNameOf16x", "1", "2.5", ".5", "5.", "1.2.3", "2e", "2e5", "1E+3", "0x1F",
+      "0xg", "0%101", "0%2", "12345678901234567890123", "\"str\"", "\"open", "\"\"", "// note", "' note",
+      "/* c */", "/*", "*/", "+", "++", "+=", "-", "--", "-=", "*", "*=", "/", "/=", "%", "^", "~", "&", "&&",
+      "|", "||", "!", "!=", "=", "==", "<", "<>", "<=", "<<", ">", ">=", ">>", "(", ")", "[", "]", ",", ";",
+      ":", "#", "@", "?", "`", "\\", "{", "}", "$x", ".", "\t", " ", "  ", "\r", "\f", "\v", "\n", "\n",
+      "\n", "\r\n", "\xC3\xA9", "\xE2\x82\xAC", "\x01", "\x7F"};
+  const size_t files = texts.size();
+  REQUIRE(files > 100);
+  uint64_t state = 42;
+  auto next = [&state](size_t n) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<size_t>((state >> 33) % n);
+  };
+  for (int t = 0; t < 3000; ++t) {
+    std::string text;
+    for (size_t i = 0, n = 1 + next(40); i < n; ++i) {
+      text += pieces[next(pieces.size())];
+      if (next(3)) text += next(4) ? " " : "\n";
+    }
+    texts.push_back(text);
+  }
+  size_t quick = 0, quickFiles = 0;
+  for (size_t i = 0; i < texts.size(); ++i) {
+    const std::string& text = texts[i];
+    std::optional<std::vector<uint32_t>> fast = detail::normalisedCodes(text, true);
+    if (!fast) continue;
+    ++quick;
+    quickFiles += i < files ? 1 : 0;
+    INFO(text);
+    std::optional<std::vector<uint32_t>> slow = detail::normalisedCodes(text, false);
+    REQUIRE(slow);
+    CHECK(*fast == *slow);
+  }
+  CHECK(quickFiles > files * 3 / 4);  // the quick scan does read most programs
+  CHECK(quick > 500);                  // and many of the made-up texts
+}
+
+TEST_CASE("winnowing selects each window's rightmost minimum once", "[grade][similarity]") {
+  uint64_t state = 7;
+  auto next = [&state](uint64_t n) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return (state >> 33) % n;
+  };
+  for (int t = 0; t < 2000; ++t) {
+    std::vector<uint64_t> h(next(60));
+    const uint64_t range = t % 3 == 0 ? 3 : t % 3 == 1 ? 20 : 1000000;  // many ties, some, none
+    for (uint64_t& v : h) v = next(range);
+    const size_t w = 1 + next(12);
+    // The definition, window by window.
+    std::vector<uint32_t> expected;
+    const size_t ww = std::min(w, h.size());
+    for (size_t s = 0; ww > 0 && s + ww <= h.size(); ++s) {
+      size_t m = s;
+      for (size_t i = s; i < s + ww; ++i)
+        if (h[i] <= h[m]) m = i;
+      if (expected.empty() || expected.back() != m) expected.push_back(static_cast<uint32_t>(m));
+    }
+    INFO("n = " << h.size() << ", w = " << w);
+    CHECK(detail::winnowed(h, w) == expected);
+  }
+}
+
+TEST_CASE("shared fingerprints are counted exactly, boilerplate left out, with any number of threads",
+          "[grade][similarity]") {
+  // 40 programs from a pool of lines: some lines in most programs (boilerplate), some in a few.
+  Scratch scratch;
+  uint64_t state = 99;
+  auto next = [&state](size_t n) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<size_t>((state >> 33) % n);
+  };
+  std::vector<std::string> pool;
+  for (int i = 0; i < 120; ++i)
+    pool.push_back("x" + std::to_string(i % 7) + " = rFeel() + " + std::to_string(i) + " * y\nrTurn " +
+                   std::to_string(i) + "\nif x > " + std::to_string(i) + " then gosub L" + std::to_string(i % 5) +
+                   (i % 3 ? "\nprint \"a\"; x\n" : "\nrForward x * 2\n"));
+  std::vector<std::string> paths, texts;
+  for (int p = 0; p < 40; ++p) {
+    std::string text;
+    for (int block = 0; block < 12; ++block) {
+      size_t which = block < 3 ? static_cast<size_t>(block) : 3 + next(block < 6 ? 10 : pool.size() - 3);
+      if (block < 3 && next(10) == 0) continue;  // boilerplate most programs have
+      text += pool[which];
+    }
+    texts.push_back(text);
+    paths.push_back(write(scratch.dir, "p" + std::to_string(p) + ".bas", text));
+  }
+  SimilarityOptions all;
+  all.minScore = 0;
+  all.minShared = 1;
+  all.maxPairs = 0;
+  // What the counts must be: from each program's fingerprints, pair by pair.
+  std::vector<std::vector<uint64_t>> prints;
+  std::map<uint64_t, size_t> have;
+  for (const std::string& t : texts) {
+    prints.push_back(detail::fingerprintsOf(t, all.k, all.window));
+    for (uint64_t h : prints.back()) ++have[h];
+  }
+  auto common = [&](uint64_t h) { return have[h] >= all.commonMinPrograms && have[h] > all.commonShare * 40; };
+  size_t boilerplate = 0;
+  for (const auto& [h, n] : have) boilerplate += common(h) ? 1 : 0;
+  REQUIRE(boilerplate > 0);
+  std::map<std::pair<std::string, std::string>, size_t> expected;
+  std::vector<size_t> counted(40);
+  for (size_t a = 0; a < 40; ++a)
+    for (uint64_t h : prints[a]) counted[a] += common(h) ? 0 : 1;
+  for (size_t a = 0; a < 40; ++a)
+    for (size_t b = a + 1; b < 40; ++b) {
+      size_t shared = 0;
+      for (uint64_t h : prints[a])
+        if (!common(h) && std::binary_search(prints[b].begin(), prints[b].end(), h)) ++shared;
+      if (shared > 0) expected[{paths[a], paths[b]}] = shared;
+    }
+  std::string first;
+  for (size_t threads : {1, 2, 5}) {
+    all.threads = threads;
+    SimilarityReport r = findSimilar(paths, all);
+    INFO(threads << " threads");
+    CHECK(r.common == boilerplate);
+    CHECK(r.pairs.size() == expected.size());
+    for (const SimilarPair& p : r.pairs) {
+      auto it = expected.find({p.a, p.b});
+      REQUIRE(it != expected.end());
+      CHECK(p.shared == it->second);
+      size_t a = static_cast<size_t>(std::stoi(fs::path(p.a).stem().string().substr(1)));
+      size_t b = static_cast<size_t>(std::stoi(fs::path(p.b).stem().string().substr(1)));
+      CHECK(p.fingerprintsA == counted[a]);
+      CHECK(p.fingerprintsB == counted[b]);
+    }
+    const std::string json = similarityJson(r);
+    if (first.empty()) first = json;
+    CHECK(json == first);
+  }
 }

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <dirent.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,7 +14,10 @@
 #include <linux/capability.h>
 #include <linux/landlock.h>
 #include <sched.h>
-#include <seccomp.h>
+#include <linux/audit.h>
+#include <linux/filter.h>
+#include <linux/seccomp.h>
+#include <cstddef>
 #include <sys/ioctl.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -146,71 +150,29 @@ std::string applyLandlock(const KernelRules& rules, int abi) {
   return problem;
 }
 
-/// A rule's condition: argument `arg` masked with `mask` equals `value` (libseccomp's SCMP_A0
-/// and SCMP_A1 macros build the same with C99 compound literals, which are not C++).
-scmp_arg_cmp masked(unsigned arg, uint64_t mask, uint64_t value) {
-  scmp_arg_cmp c{};
-  c.arg = arg;
-  c.op = SCMP_CMP_MASKED_EQ;
-  c.datum_a = mask;
-  c.datum_b = value;
-  return c;
-}
+#if defined(__x86_64__)
+constexpr uint32_t kAuditArch = AUDIT_ARCH_X86_64;
+#elif defined(__aarch64__)
+constexpr uint32_t kAuditArch = AUDIT_ARCH_AARCH64;
+#else
+constexpr uint32_t kAuditArch = 0;  // the filter's own architecture is not checked here
+#endif
 
-/// The seccomp filter: everything is allowed but what a RobotBASIC program never needs, which
-/// fails with EPERM (so a started program sees an ordinary error, not a kill).
+/// The seccomp filter in force (seccomp/seccomp_rules.h says what it refuses), built by
+/// libseccomp when rb was: here it is only handed to the kernel, under the no-new-privileges
+/// confineProcess set first. Building it with libseccomp at each start was a third of an empty
+/// program's start-up, for a filter that is the same every time.
 std::string applySeccomp(const KernelRules& rules) {
-  scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ALLOW);
-  if (!ctx) return "seccomp could not be set up";
-  int failed = 0;
-  auto deny = [&](const char* name, uint32_t action = SCMP_ACT_ERRNO(EPERM)) {
-    int nr = seccomp_syscall_resolve_name(name);
-    if (nr == __NR_SCMP_ERROR) return;  // not on this architecture
-    if (seccomp_rule_add(ctx, action, nr, 0) != 0) ++failed;
-  };
-  // Networks, other processes' memory, the file system's shape, namespaces, keys, the kernel.
-  for (const char* name : {"socket", "ptrace", "process_vm_readv", "process_vm_writev", "pidfd_getfd", "kcmp",
-                           "mount", "umount2", "pivot_root", "chroot", "fsopen", "fsconfig", "fsmount", "fspick",
-                           "move_mount", "open_tree", "mount_setattr", "unshare", "setns", "keyctl", "add_key",
-                           "request_key", "bpf", "perf_event_open", "userfaultfd", "init_module", "finit_module",
-                           "delete_module", "kexec_load", "kexec_file_load", "reboot", "swapon", "swapoff", "acct",
-                           "quotactl", "settimeofday", "clock_settime", "clock_adjtime", "adjtimex", "sethostname",
-                           "setdomainname", "syslog", "vhangup", "iopl", "ioperm", "open_by_handle_at",
-                           "name_to_handle_at", "fanotify_init", "io_uring_setup", "io_uring_enter",
-                           "io_uring_register", "lookup_dcookie", "uselib"}) {
-    std::string_view n(name);
-    if (kSanitized && n == "ptrace") continue;  // LeakSanitizer's stop-the-world
-    deny(name);
-  }
-  // clone3's flags are behind a pointer a filter cannot read: it fails as if it did not exist,
-  // and the C library falls back to clone, whose flags are checked below.
-  deny("clone3", SCMP_ACT_ERRNO(ENOSYS));
-  int clone = seccomp_syscall_resolve_name("clone");
-  for (uint64_t flag : {uint64_t{CLONE_NEWNS}, uint64_t{CLONE_NEWCGROUP}, uint64_t{CLONE_NEWUTS}, uint64_t{CLONE_NEWIPC},
-                        uint64_t{CLONE_NEWUSER}, uint64_t{CLONE_NEWPID}, uint64_t{CLONE_NEWNET}})
-    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), clone, 1, masked(0, flag, flag)) != 0) ++failed;
-  if (!rules.allowSpawn) {
-    // No other program, and no second process: only threads (CLONE_THREAD) may be made.
-    deny("execve");
-    deny("execveat");
-    deny("fork");
-    deny("vfork");
-    if (!kSanitized &&
-        seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), clone, 1,
-                         masked(0, uint64_t{CLONE_THREAD}, uint64_t{0})) != 0)
-      ++failed;
-  }
-  // Typing into the terminal rb runs in (TIOCSTI) or the console's keyboard (TIOCLINUX).
-  int ioctl = seccomp_syscall_resolve_name("ioctl");
-  for (uint64_t request : {uint64_t{TIOCSTI}, uint64_t{TIOCLINUX}})
-    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), ioctl, 1, masked(1, 0xFFFFFFFFu, request)) != 0)
-      ++failed;
-  std::string problem;
-  if (failed) problem = "seccomp refused " + std::to_string(failed) + " rule(s)";
-  else if (int rc = seccomp_load(ctx); rc != 0)
-    problem = std::string("seccomp could not be put in force: ") + std::strerror(-rc);
-  seccomp_release(ctx);
-  return problem;
+  if (kAuditArch != 0 && embeddedSeccompArch() != kAuditArch)
+    return "seccomp: the filter was built for another processor";
+  const std::span<const BpfInstruction> code = embeddedSeccompProgram(rules.allowSpawn, kSanitized);
+  static_assert(sizeof(BpfInstruction) == sizeof(sock_filter));
+  std::vector<sock_filter> filter(code.size());
+  std::memcpy(filter.data(), code.data(), code.size() * sizeof(sock_filter));
+  sock_fprog program{static_cast<unsigned short>(filter.size()), filter.data()};
+  if (::syscall(SYS_seccomp, SECCOMP_SET_MODE_FILTER, 0, &program) != 0)
+    return std::string("seccomp could not be put in force: ") + std::strerror(errno);
+  return "";
 }
 
 /// Root's capabilities (rb test as root in CI): none for the program, nor for what it starts.
@@ -278,13 +240,17 @@ std::vector<std::string> spawnSystemPaths() {
 }
 
 std::vector<std::string> serialDevicePaths() {
+  // Every run lists /dev (its ports may be opened): with readdir, not std::filesystem, whose
+  // paths for each of a few hundred entries were a tenth of an empty program's start-up.
   std::vector<std::string> out;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator("/dev", ec)) {
-    std::string name = entry.path().filename().string();
-    for (const char* prefix : {"ttyS", "ttyUSB", "ttyACM", "rfcomm"})
-      if (name.rfind(prefix, 0) == 0) out.push_back(entry.path().string());
+  DIR* dir = ::opendir("/dev");
+  if (!dir) return out;
+  while (const dirent* entry = ::readdir(dir)) {
+    const std::string_view name(entry->d_name);
+    for (std::string_view prefix : {"ttyS", "ttyUSB", "ttyACM", "rfcomm"})
+      if (name.substr(0, prefix.size()) == prefix) out.push_back("/dev/" + std::string(name));
   }
+  ::closedir(dir);
   return out;
 }
 

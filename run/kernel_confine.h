@@ -10,6 +10,7 @@
 // all there is where the kernel has no Landlock (older kernels, macOS).
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,21 @@ struct KernelRules {
   /// without root's powers, and nothing they start can gain them back).
   bool dropCapabilities = false;
 };
+
+/// One instruction of a classic BPF program (Linux's struct sock_filter).
+struct BpfInstruction {
+  uint16_t code;
+  uint8_t jt, jf;
+  uint32_t k;
+};
+
+/// The seccomp filter confineProcess puts in force, as libseccomp built it at build time from
+/// the rules in seccomp/seccomp_rules.cpp (what it refuses is said there), for each variant:
+/// with or without KernelRules::allowSpawn, and with or without the sanitizer builds'
+/// exceptions (a release build uses only the variants without them). Linux only.
+std::span<const BpfInstruction> embeddedSeccompProgram(bool allowSpawn, bool sanitized);
+/// The processor those filters are for (an AUDIT_ARCH_* number).
+uint32_t embeddedSeccompArch();
 
 /// What was put in force.
 struct KernelStatus {

@@ -10,6 +10,19 @@
 #include "base/runtime_error.h"
 #include "kernel_confine.h"
 
+#if defined(__linux__)
+#include <sched.h>
+#include <sys/ioctl.h>
+#include <sys/socket.h>
+#include <sys/syscall.h>
+
+#include <cstring>
+#include <span>
+#include <vector>
+
+#include "seccomp_rules.h"
+#endif
+
 using namespace rb;
 using namespace rb::run;
 namespace fs = std::filesystem;
@@ -159,3 +172,67 @@ TEST_CASE("kernel: a confined process reaches only what its rules name", "[sandb
   });
   CHECK(status == 0);
 }
+
+#if defined(__linux__)
+TEST_CASE("kernel: the seccomp filter refuses sockets, other programs and namespaces", "[sandbox][kernel]") {
+  for (bool spawn : {false, true}) {
+    INFO("allowSpawn " << spawn);
+    int status = inChild([&] {
+      KernelRules rules;
+      rules.allowSpawn = spawn;
+      if (!confineProcess(rules).seccomp) return 10;
+      if (::socket(AF_INET, SOCK_STREAM, 0) >= 0 || errno != EPERM) return 11;
+      if (::socket(AF_UNIX, SOCK_STREAM, 0) >= 0 || errno != EPERM) return 12;
+      // A new user namespace, asked of clone itself (a child made by mistake leaves at once).
+      long pid = ::syscall(SYS_clone, CLONE_NEWUSER | SIGCHLD, 0, 0, 0, 0);
+      if (pid == 0) ::_exit(0);
+      if (pid > 0 || errno != EPERM) return 13;
+#ifdef SYS_clone3
+      if (::syscall(SYS_clone3, nullptr, 0) != -1 || errno != ENOSYS) return 14;
+#endif
+      char c = 'x';
+      if (::ioctl(0, TIOCSTI, &c) == 0 || errno != EPERM) return 15;
+      char* argv[] = {const_cast<char*>("/bin/false"), nullptr};
+      if (!spawn) {
+        ::execv("/bin/false", argv);
+        if (errno != EPERM) return 16;
+      } else {
+        // Starting a process is allowed (a program started by Spawn).
+        pid_t child = ::fork();
+        if (child == 0) ::_exit(7);
+        if (child < 0) return 17;
+        int st = 0;
+        ::waitpid(child, &st, 0);
+        if (!WIFEXITED(st) || WEXITSTATUS(st) != 7) return 18;
+      }
+      return 0;
+    });
+    CHECK(status == 0);
+  }
+}
+
+TEST_CASE("kernel: the seccomp filters rb embeds are those libseccomp builds from the rules", "[sandbox][kernel]") {
+  // Every variant, whichever this build uses: libseccomp builds each again here, from the same
+  // rules (seccomp/seccomp_rules.cpp) as the build-time tool, and the bytes must be the same.
+  CHECK(embeddedSeccompArch() == seccomp::nativeArch());
+  for (bool sanitized : {false, true})
+    for (bool spawn : {false, true}) {
+      INFO("allowSpawn " << spawn << ", sanitized " << sanitized);
+      std::string error;
+      const std::vector<uint8_t> built = seccomp::filterBytes(spawn, sanitized, error);
+      REQUIRE(error.empty());
+      REQUIRE(!built.empty());
+      const std::span<const BpfInstruction> embedded = embeddedSeccompProgram(spawn, sanitized);
+      REQUIRE(embedded.size_bytes() == built.size());
+      CHECK(std::memcmp(embedded.data(), built.data(), built.size()) == 0);
+    }
+  // The variants differ where the rules do.
+  const auto bytes = [](bool spawn, bool sanitized) {
+    const std::span<const BpfInstruction> p = embeddedSeccompProgram(spawn, sanitized);
+    const auto* first = reinterpret_cast<const unsigned char*>(p.data());
+    return std::vector<unsigned char>(first, first + p.size_bytes());
+  };
+  CHECK(bytes(false, false) != bytes(true, false));
+  CHECK(bytes(false, false) != bytes(false, true));
+}
+#endif

@@ -17,7 +17,6 @@ packages=(
   libsixel-dev          # rb run --tui --cells pixels: the screen as a sixel image
   libgif-dev            # rb render --animate OUT.gif: giflib writes the animated GIF
   libre2-dev            # rb test: output patterns matched in linear time (RE2)
-  libseccomp-dev        # the seccomp filter every run of a program is under (docs/confinement.md)
   zlib1g-dev libbrotli-dev   # static archives libpng and FreeType need (RB_STATIC_LIBS)
   dpkg-dev file         # cpack's Debian package (scripts/package.sh): dpkg-shlibdeps finds what rb links
 )
@@ -25,6 +24,7 @@ packages=(
 # of the test tools install).
 test_build_packages=(
   catch2                # unit tests
+  libseccomp-dev        # builds the seccomp filter every run of a program is under, at build time (docs/confinement.md)
 )
 test_packages=(
   libxml2-utils         # xmllint: the JUnit report is validated against its schema in the tests
@@ -40,7 +40,7 @@ test_packages=(
   emscripten xz-utils patch python3-fonttools   # scripts/web.sh: the core as WebAssembly for the web page's tests (testdata/web)
 )
 bench_packages=(
-  lua5.4 yabasic brandy hyperfine   # benchmark peers
+  lua5.4 luajit yabasic brandy hyperfine   # benchmark peers (LuaJIT's interpreter: luajit -joff)
   python3-tk xvfb       # Python's turtle, the pen benchmark's peer (bench/robot/run.sh)
   python3-pil           # Pillow, the shapes benchmark's peer (bench/shapes/run.sh)
 )

@@ -1,6 +1,6 @@
--- appends: s = s .. "x", 100,000 times; prints the length, 100000.
+-- appends: s = s .. "x", 150,000 times; prints the length, 150000.
 local s = ""
-for i = 1, 100000 do
+for i = 1, 150000 do
   s = s .. "x"
 end
 print(#s)

@@ -1,6 +1,6 @@
-// fib: fib(27) by the doubly recursive definition, a sub that returns its value
-// (311,809 calls); prints 196418.
-print Fib(27)
+// fib: fib(34) by the doubly recursive definition, a sub that returns its value
+// (18,454,929 calls); prints 5702887.
+print Fib(34)
 end
 
 sub Fib(n)

@@ -1,6 +1,6 @@
-// fib_sub: fib(27) by the doubly recursive definition, a sub run with `call` that passes its
-// result back through a by-reference (&) parameter (311,809 calls); prints 196418.
-call Fib(27, r)
+// fib_sub: fib(34) by the doubly recursive definition, a sub run with `call` that passes its
+// result back through a by-reference (&) parameter (18,454,929 calls); prints 5702887.
+call Fib(34, r)
 print r
 end
 

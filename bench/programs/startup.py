@@ -1,0 +1,2 @@
+# startup: one line that prints 1: what starting the interpreter costs.
+print(1)
