@@ -196,7 +196,8 @@
     }
     return 0;
   }
-  const input = {held: 0, keyWaiters: [], mouse: [0, 0, 0], clicks: [], clickWaiters: [], typed: []};
+  // Keys, the mouse and clicks go to the run (rb.start's run: its worker takes them).
+  let mouseButtons = 0;
   // The program's buttons and edit boxes as the run last showed them (WebHost::presentControls):
   // drawn over the screen; while one of its edit boxes has the keyboard, keys go into it.
   let controls = {buttons: [], edits: [], focus: ''};
@@ -226,21 +227,16 @@
     placeControls();
   }
   new ResizeObserver(placeControls).observe(canvas);
-  function keyDown(code) {
-    if (!code) return;
-    input.held = code;
-    const w = input.keyWaiters.splice(0);
-    w.forEach((r) => r(code));
-  }
   canvas.addEventListener('keydown', (e) => {
     const code = keyCode(e);
     if (!code || e.ctrlKey || e.metaKey) return;
     e.preventDefault();
-    if (run && controls.focus) input.typed.push(code);  // into the program's edit box
-    else keyDown(code);
+    if (!run) return;
+    if (controls.focus) run.typed(code);  // into the program's edit box
+    else run.keyDown(code);
   });
-  canvas.addEventListener('keyup', () => { input.held = 0; });
-  canvas.addEventListener('blur', () => { input.held = 0; });
+  canvas.addEventListener('keyup', () => { if (run) run.keyUp(); });
+  canvas.addEventListener('blur', () => { if (run) run.keyUp(); });
   function screenPoint(e) {
     const r = canvas.getBoundingClientRect();
     // object-fit: contain: the picture's box inside the element
@@ -248,26 +244,31 @@
     const ox = (r.width - 800 * scale) / 2, oy = (r.height - 600 * scale) / 2;
     return [Math.floor((e.clientX - r.left - ox) / scale), Math.floor((e.clientY - r.top - oy) / scale)];
   }
-  canvas.addEventListener('mousemove', (e) => { const [x, y] = screenPoint(e); input.mouse = [x, y, e.buttons & 7]; });
+  canvas.addEventListener('mousemove', (e) => {
+    const [x, y] = screenPoint(e);
+    mouseButtons = e.buttons & 7;
+    if (run) run.mouse(x, y, mouseButtons);
+  });
   canvas.addEventListener('mousedown', (e) => {
     const [x, y] = screenPoint(e);
     const bits = e.button === 0 ? 1 : e.button === 2 ? 2 : 4;
-    input.mouse = [x, y, (e.buttons & 7) | bits];
-    const c = [x, y, input.mouse[2]];
-    const w = input.clickWaiters.shift();
-    if (w) w(c); else input.clicks.push(c);
+    mouseButtons = (e.buttons & 7) | bits;
+    if (run) run.click(x, y, mouseButtons);
   });
-  canvas.addEventListener('mouseup', (e) => { input.mouse = [input.mouse[0], input.mouse[1], e.buttons & 7]; });
+  canvas.addEventListener('mouseup', (e) => {
+    const [x, y] = screenPoint(e);
+    mouseButtons = e.buttons & 7;
+    if (run) run.mouse(x, y, mouseButtons);
+  });
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 
   // ---------------------------------------------------------------- the run
-  let run = null;          // {stop, done}
-  let paused = false, resumeWaiters = [];
-  // Step: the run stops before each statement (the host asks stepping() at each yield and
-  // after each stop, and waits in atLine() until Step, Resume or Stop).
-  let stepMode = false;
+  let run = null;          // rb.start's run: {done, stop, pause, resume, step, ...}
+  // Paused: the run waits in a pause (Pause, or a Step done) and the debugger shows where;
+  // pausing: Pause was pressed and the run has not stopped yet.
+  let paused = false, pausing = false;
   let cancelInput = null, cancelDialog = null;
-  let outputText = '';
+  let waitingFor = '';
 
   function setRunning(on) {
     $('run').disabled = on;
@@ -275,25 +276,85 @@
     $('stop').disabled = !on;
     $('pause').disabled = !on;
     $('step').disabled = !on || !paused;
-    $('pause').textContent = paused ? 'Resume' : 'Pause';
+    $('pause').textContent = paused || pausing ? 'Resume' : 'Pause';
+  }
+  function showStatus() {
+    if (!run) return;
+    if (paused) return;  // showPaused says where
+    status.textContent = pausing ? 'pausing…' : waitingFor ? `waiting for ${waitingFor}` : 'running';
+  }
+
+  // The output pane: what the run prints is gathered and shown once a frame, in blocks of whole
+  // lines (a block is laid out once) and the line being printed; the pane keeps the last
+  // `output kept` KiB (the oldest blocks go).
+  const shown = {blocks: [], size: 0, pending: '', tail: null, frame: 0};
+  function outputKeep() { return Math.max(1, Number($('keepOutput').value) || 256) * 1024; }
+  function clearOutput() {
+    output.textContent = '';
+    shown.blocks = [];
+    shown.size = 0;
+    shown.pending = '';
+    shown.tail = document.createElement('span');
+    output.appendChild(shown.tail);
   }
   function appendOutput(text, cls) {
-    const keep = Math.max(1, Number($('keepOutput').value) || 256) * 1024;
-    outputText += text;
     if (cls) {
+      flushOutput();
       const span = document.createElement('span');
       span.className = cls;
       span.textContent = text;
       output.appendChild(span);
+      $('outputPane').scrollTop = $('outputPane').scrollHeight;
       return;
     }
-    if (outputText.length > keep) {
-      outputText = outputText.slice(outputText.length - keep);
-      output.textContent = outputText;
-    } else {
-      output.appendChild(document.createTextNode(text));
+    shown.pending += text;
+    if (shown.pending.length > 4 * outputKeep()) shown.pending = shown.pending.slice(-outputKeep());
+    if (!shown.frame) shown.frame = requestAnimationFrame(flushOutput);
+  }
+  function flushOutput() {
+    if (shown.frame) cancelAnimationFrame(shown.frame);
+    shown.frame = 0;
+    if (!shown.pending) return;
+    const keep = outputKeep();
+    let text = shown.tail.textContent + shown.pending;
+    shown.pending = '';
+    if (text.length > keep) {  // all that is kept is new
+      text = text.slice(-keep);
+      shown.blocks.forEach((b) => b.remove());
+      shown.blocks = [];
+      shown.size = 0;
+    }
+    const cut = text.lastIndexOf('\n') + 1;
+    if (cut > 0) {
+      const block = document.createElement('div');
+      block.textContent = text.slice(0, cut);
+      output.insertBefore(block, shown.tail);
+      shown.blocks.push(block);
+      shown.size += cut;
+    }
+    shown.tail.textContent = text.slice(cut);
+    while (shown.size > keep && shown.blocks.length) {
+      const first = shown.blocks[0], n = first.textContent.length;
+      if (shown.size - n >= keep) {
+        first.remove();
+        shown.blocks.shift();
+        shown.size -= n;
+      } else {
+        first.textContent = first.textContent.slice(shown.size - keep);
+        shown.size = keep;
+      }
     }
     $('outputPane').scrollTop = $('outputPane').scrollHeight;
+  }
+  // The run's frames: the newest is drawn once a frame.
+  let nextFrame = null, frameRequest = 0;
+  function showFrame(f) {
+    nextFrame = f;
+    if (!frameRequest) frameRequest = requestAnimationFrame(() => { frameRequest = 0; drawPending(); });
+  }
+  function drawPending() {
+    if (nextFrame) drawFrame(nextFrame);
+    nextFrame = null;
   }
   function drawFrame(f) {
     ctx.putImageData(new ImageData(f.rgba, f.width, f.height), 0, 0);
@@ -303,28 +364,39 @@
     ctx.fillRect(0, 0, 800, 600);
   }
   const io = {
-    heldKey: () => input.held,
-    takeTyped: () => input.typed.shift() || 0,
     controls: showControls,
-    waitKey: () => (input.held ? Promise.resolve(input.held) : new Promise((r) => input.keyWaiters.push(r))),
-    mouse: () => input.mouse,
-    takeClick: () => input.clicks.shift() || null,
-    waitClick: () => (input.clicks.length ? Promise.resolve(input.clicks.shift()) : new Promise((r) => input.clickWaiters.push(r))),
     inputLine: (prompt) => new Promise((resolve) => {
+      flushOutput();
       const form = $('inputForm'), line = $('inputLine');
       form.hidden = false;
       line.value = '';
       line.focus();
+      waitingFor = 'input';
+      showStatus();
       $('outputPane').scrollTop = $('outputPane').scrollHeight;
-      const finish = (value) => { form.hidden = true; form.onsubmit = null; cancelInput = null; resolve(value); };
+      const finish = (value) => {
+        form.hidden = true; form.onsubmit = null; cancelInput = null;
+        waitingFor = '';
+        showStatus();
+        resolve(value);
+      };
       form.onsubmit = (e) => { e.preventDefault(); finish(line.value); };
       cancelInput = () => finish(null);
     }),
     messageBox: (text, title) => new Promise((resolve) => {
+      flushOutput();
+      drawPending();
       const d = $('msgbox');
       $('msgTitle').textContent = title || 'Message';
       $('msgText').textContent = text;
-      const finish = () => { d.onclose = null; cancelDialog = null; if (d.open) d.close(); canvas.focus(); resolve(); };
+      waitingFor = 'an answer to the message box';
+      showStatus();
+      const finish = () => {
+        d.onclose = null; cancelDialog = null; if (d.open) d.close(); canvas.focus();
+        waitingFor = '';
+        showStatus();
+        resolve();
+      };
       d.onclose = finish;
       cancelDialog = finish;
       d.showModal();
@@ -414,23 +486,101 @@
     },
   };
 
-  // The run's yields wait here while paused.
-  function pauseGate(inner) {
-    return async (ms) => {
-      await inner(ms);
-      while (paused && run) await new Promise((r) => resumeWaiters.push(r));
-    };
+  // ---------------------------------------------------------------- the speed
+  // The slider from slow (left) to fast (right): the milliseconds each pixel or degree of robot
+  // motion takes (as the live terminal view paces it); the right end is instantaneous. The
+  // default, 2 ms, is the speed docs/web.md's figures are for.
+  const SPEED_MS = [40, 20, 10, 6, 4, 3, 2, 1, 0.5, 0.2, 0];
+  function speedMs() {
+    const i = Math.min(SPEED_MS.length - 1, Math.max(0, Math.round(Number($('speed').value))));
+    return SPEED_MS[i];
   }
+  function showSpeed() {
+    const ms = speedMs();
+    $('speed').title = ms ? `${ms} ms per pixel or degree of robot motion` : 'as fast as it goes (no animation)';
+    if (run) run.setSpeed(ms);
+  }
+  $('speed').addEventListener('input', showSpeed);
+  showSpeed();
 
-  // A stepped run stops here before the statement on `line`.
-  function stepAt(line) {
-    if (!run) return Promise.resolve();
-    paused = true;
-    setRunning(true);
-    editor.setStepLine(line);
-    status.textContent = `paused before line ${line}`;
-    return new Promise((r) => resumeWaiters.push(r));
+  // ---------------------------------------------------------------- the debugger
+  // Paused or stepping, the run shows where it stands, the variables (the core's look at the
+  // running program, as the live terminal view shows them) and the watch expressions, which the
+  // core computes with the program's variables (core/machine/watch.h). Watches are kept with the
+  // page.
+  const WATCHES = 'rb.watches';
+  let watchList = [];
+  try { watchList = JSON.parse(localStorage.getItem(WATCHES) || '[]').filter((w) => typeof w === 'string'); } catch (e) { watchList = []; }
+  function cell(row, text, cls) {
+    const td = document.createElement('td');
+    td.textContent = text;
+    if (cls) td.className = cls;
+    row.appendChild(td);
   }
+  function showPaused(info) {
+    paused = true;
+    pausing = false;
+    flushOutput();
+    drawPending();
+    setRunning(true);
+    editor.setStepLine(info.line);
+    status.textContent = info.where === 'before' ? `paused before line ${info.line}` : `paused in line ${info.line}`;
+    const panel = $('debugger');
+    panel.hidden = false;
+    $('debugWhere').textContent = info.where === 'before' ? `Paused before line ${info.line}`
+      : `Paused in line ${info.line} (inside the statement: Step finishes it)`;
+    const vars = $('variables');
+    vars.textContent = '';
+    let inSub = false;
+    for (const v of info.vars) {
+      if (v.local && !inSub) {
+        inSub = true;
+        const row = vars.insertRow();
+        cell(row, `in sub ${info.sub}`, 'sub');
+        row.firstChild.colSpan = 2;
+      }
+      const row = vars.insertRow();
+      cell(row, v.name, 'name');
+      cell(row, v.value, 'value');
+    }
+    if (!info.vars.length) cell(vars.insertRow(), 'no variables yet', 'none');
+    const list = $('watches');
+    list.textContent = '';
+    info.watches.forEach((w, i) => {
+      const li = document.createElement('li');
+      const x = document.createElement('button');
+      x.textContent = '×';
+      x.title = 'Stop watching ' + w.expr;
+      x.onclick = () => setWatches(watchList.filter((_, k) => k !== i));
+      li.appendChild(x);
+      li.appendChild(document.createTextNode(` ${w.expr} = `));
+      const v = document.createElement('span');
+      v.className = w.error !== undefined ? 'error' : 'value';
+      v.textContent = w.error !== undefined ? w.error : w.value;
+      li.appendChild(v);
+      list.appendChild(li);
+    });
+  }
+  function hidePaused() {
+    paused = false;
+    editor.setStepLine(0);
+    $('debugger').hidden = true;
+  }
+  function setWatches(list) {
+    watchList = list;
+    localStorage.setItem(WATCHES, JSON.stringify(list));
+    if (run) {
+      run.setWatches(list);
+      if (paused) run.refresh();
+    }
+  }
+  $('watchForm').onsubmit = (e) => {
+    e.preventDefault();
+    const text = $('watchInput').value.trim();
+    if (text && !watchList.includes(text)) setWatches([...watchList, text]);
+    $('watchInput').value = '';
+  };
+
   function limits() {
     return {
       maxSteps: Number($('maxSteps').value) || 0,
@@ -440,16 +590,14 @@
   }
   async function runProgram() {
     if (run) return;
-    output.textContent = '';
-    outputText = '';
+    clearOutput();
+    nextFrame = null;
     editor.setErrorLine(0);
     clearScreen();
-    input.clicks = [];
-    input.typed = [];
-    input.held = 0;
     showControls({buttons: [], edits: [], focus: ''});
-    paused = false;
-    stepMode = false;
+    paused = pausing = false;
+    waitingFor = '';
+    $('debugger').hidden = true;
     status.textContent = 'running';
     const started = performance.now();
     canvas.focus();
@@ -457,12 +605,17 @@
       io,
       png: false,
       svg: true,
-      stepMs: () => Number($('speed').value),
+      stepMs: speedMs(),
+      watches: watchList,
       onOutput: (t) => appendOutput(t),
-      onFrame: drawFrame,
-      wrapYield: pauseGate,
-      stepping: () => stepMode,
-      atLine: stepAt,
+      onFrame: showFrame,
+      onPaused: showPaused,
+      onResumed: () => { if (paused) { hidePaused(); showStatus(); setRunning(true); } },
+      onWaiting: (what) => {
+        waitingFor = what === 'key' ? 'a key' : what === 'click' ? 'a click' : what;
+        if (what) { flushOutput(); drawPending(); }
+        showStatus();
+      },
     }));
     run = r;
     setRunning(true);
@@ -474,15 +627,19 @@
     }
     run = null;
     lastSvg = result.svg || null;
-    paused = false;
-    stepMode = false;
-    editor.setErrorLine(0);  // the stepped line
-    resumeWaiters.splice(0).forEach((w) => w());
+    hidePaused();
+    pausing = false;
+    waitingFor = '';
+    if (cancelInput) cancelInput();
+    if (cancelDialog) cancelDialog();
     setRunning(false);
+    flushOutput();
+    nextFrame = null;
     if (result.frame) drawFrame(result.frame);
     const secs = ((performance.now() - started) / 1000).toFixed(2);
-    // The diagnostics again (a check waits while a run is on); the run has ended already.
+    // The diagnostics again (the text may have changed during the run).
     if (result.status !== 'rejected') rb.check(editor.value).then(listDiagnostics);
+    const printed = output.textContent;
     if (result.status === 'rejected') {
       listDiagnostics(result.diagnostics);
       const first = result.diagnostics.find((d) => d.severity === 'error');
@@ -490,18 +647,15 @@
       appendOutput(result.error, 'error');
     } else if (result.error) {
       editor.setErrorLine(result.errorLine || 0);
-      appendOutput((outputText && !outputText.endsWith('\n') ? '\n' : '') + result.error, 'error');
+      appendOutput((printed && !printed.endsWith('\n') ? '\n' : '') + result.error, 'error');
     }
-    status.textContent = `${result.status} (${secs} s, ${result.steps || 0} steps)`;
+    const steps = typeof result.steps === 'number' ? `, ${result.steps} steps` : '';
+    status.textContent = `${result.status} (${secs} s${steps})`;
     window.rbLastRun = result;
   }
   function stopProgram() {
     if (!run) return;
     run.stop();
-    paused = false;
-    resumeWaiters.splice(0).forEach((w) => w());
-    input.keyWaiters.splice(0).forEach((w) => w(0));
-    input.clickWaiters.splice(0).forEach((w) => w([0, 0, 0]));
     if (cancelInput) cancelInput();
     if (cancelDialog) cancelDialog();
     serial.woken();
@@ -510,21 +664,24 @@
   $('stop').onclick = stopProgram;
   $('pause').onclick = () => {
     if (!run) return;
-    paused = !paused;
-    if (!paused) {
-      stepMode = false;
-      editor.setErrorLine(0);
-      resumeWaiters.splice(0).forEach((w) => w());
+    if (paused || pausing) {
+      pausing = false;
+      hidePaused();
+      run.resume();
+    } else {
+      pausing = true;
+      run.pause();
     }
     setRunning(true);
-    status.textContent = paused ? 'paused' : 'running';
+    showStatus();
   };
   $('step').onclick = () => {
     if (!run || !paused) return;
-    stepMode = true;
-    paused = false;
+    hidePaused();
+    pausing = true;  // until the run stops again
     status.textContent = 'stepping';
-    resumeWaiters.splice(0).forEach((w) => w());
+    setRunning(true);
+    run.step();
   };
   window.addEventListener('keydown', (e) => {
     if (e.key === 'Escape' && run && document.activeElement === canvas && e.shiftKey) stopProgram();
@@ -544,6 +701,7 @@
     editor.value = fromLink !== null ? fromLink : saved !== null ? saved : (examples[0] ? examples[0].source : '');
     await rb.ready();
     listDiagnostics(await rb.check(editor.value));
+    rb.prepare();  // the live run's worker, loaded and warmed up before the first Run
     status.textContent = 'ready';
     return true;
   })();

@@ -52,13 +52,22 @@ class Quiet(http.server.SimpleHTTPRequestHandler):
     def log_message(self, *args):
         pass
 
+    def end_headers(self):
+        # A server that makes the page cross-origin isolated itself, as a deployment may; without
+        # them the page is isolated only once its service worker is in control (web/sw.js).
+        if self.server.isolated:
+            self.send_header("Cross-Origin-Opener-Policy", "same-origin")
+            self.send_header("Cross-Origin-Embedder-Policy", "require-corp")
+        super().end_headers()
+
 
 class Env:
-    def __init__(self, args, chromium):
+    def __init__(self, args, chromium, isolated=True):
         self.args = args
         self.chromium = chromium
         handler = functools.partial(Quiet, directory=args.site)
         self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+        self.server.isolated = isolated
         threading.Thread(target=self.server.serve_forever, daemon=True).start()
         self.url = f"http://127.0.0.1:{self.server.server_address[1]}/index.html"
         self.browser = Browser(chromium, args.work)
@@ -216,6 +225,69 @@ def case_stop(env):
     env.expect_quiet()
 
 
+# While a run goes on: a 50 ms timer after another on the page, each one's delay past its 50 ms
+# noted, until the run ends (or `seconds` have passed, then Stop, timed).
+TICKER_JS = """
+(async () => {
+  const lates = [];
+  let on = true;
+  const ticker = (async () => {
+    while (on) {
+      const t = performance.now();
+      await new Promise((r) => setTimeout(r, 50));
+      lates.push(performance.now() - t - 50);
+    }
+  })();
+  const done = rbPage.runProgram();
+  let stop = null;
+  if (%(seconds)s > 0) {
+    await Promise.race([done, new Promise((r) => setTimeout(r, %(seconds)s * 1000))]);
+    const t = performance.now();
+    rbPage.stopProgram();
+    await done;
+    stop = performance.now() - t;
+  }
+  await done;
+  on = false;
+  await ticker;
+  const out = document.getElementById('output').textContent;
+  return {late: Math.max(...lates), timers: lates.length, stop, status: rbLastRun.status,
+          shown: out.length, end: out.slice(-12), output: rbLastRun.output.length};
+})()
+"""
+
+
+def case_never_frozen(env):
+    """A live run never holds up the page, in both ways the page runs programs (a worker on the
+    fast core with shared memory when the page is cross-origin isolated, else the Asyncify core
+    in a worker): a timer set during an endless printing loop, an endless computing loop and
+    30,000 prints fires within 100 ms, Stop ends the endless ones within 200 ms, and the output
+    pane keeps the last `output kept` KiB of a long output."""
+    for isolated, mode in ((False, "async"), (True, "sab")):
+        # The first visit is not isolated (the service worker is not in control yet); then the
+        # server sends the headers.
+        env.server.isolated = isolated
+        b = env.open()
+        got = b.js("rb.prepare()")
+        expect(got == mode, f"the page runs programs in {got!r} mode, not {mode!r}")
+        b.js("document.getElementById('keepOutput').value = '16'; true")
+        for prog in ("i = 0\nwhile 1\n  print i\n  i = i + 1\nwend\n", "x = 0\nwhile 1\n  x = x + 1\nwend\n"):
+            b.js(f"rbPage.setSource({json.dumps(prog)}); true")
+            r = b.js(TICKER_JS % {"seconds": 1.5}, timeout=60)
+            expect(r["timers"] >= 10 and r["late"] < 100, f"{mode}: {prog!r}: a timer fired {r['late']:.0f} ms late ({r})")
+            expect(r["status"] == "stopped" and r["stop"] < 200, f"{mode}: {prog!r}: Stop took {r['stop']:.0f} ms ({r})")
+            expect(r["shown"] <= 16 * 1024, f"{mode}: {prog!r}: the pane shows {r['shown']} characters")
+        # (Fewer on the Asyncify core, three times as slow: the suite stays quick.)
+        n = 30000 if mode == "sab" else 8000
+        b.js(f"rbPage.setSource('for i = 1 to {n}\\n  print i\\nnext\\n'); true")
+        r = b.js(TICKER_JS % {"seconds": 0}, timeout=120)
+        expect(r["status"] == "finished" and r["late"] < 100, f"{mode}: {n} prints: a timer fired {r['late']:.0f} ms late ({r})")
+        expect(r["end"].endswith(f"{n - 1}\n{n}\n") and 16 * 1024 - 8 <= r["shown"] <= 16 * 1024,
+               f"{mode}: the pane does not show the last 16 KiB of the output: {r}")
+        expect(r["output"] == sum(len(str(i)) + 1 for i in range(1, n + 1)), f"{mode}: the run's output is cut: {r}")
+    env.expect_quiet()
+
+
 def case_step(env):
     """Pause, then Step runs one statement at a time: the run stops before each line, marks it in
     the editor, and has printed only what the statements before it print; Resume runs on."""
@@ -225,6 +297,9 @@ def case_step(env):
     b.js("document.getElementById('pause').click(); true")
     out = lambda: b.js("document.getElementById('output').textContent")
     state = lambda: b.js("document.getElementById('status').textContent")
+    # The run pauses where it is when it next looks (before line 1, or inside the delay).
+    wait_for(b, "/^paused (before|in) line 1$/.test(document.getElementById('status').textContent)",
+             "Pause did not pause the run in line 1")
 
     def step_to(line):
         b.js("document.getElementById('step').click(); true")
@@ -506,7 +581,7 @@ def case_svg(env):
     env.expect_quiet()
 
 
-CASES = {"loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
+CASES = {"never_frozen": case_never_frozen, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
          "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial, "offline": case_offline}
 
 
@@ -527,7 +602,7 @@ def main():
         return 77
     shutil.rmtree(args.work, ignore_errors=True)
     os.makedirs(args.work)
-    env = Env(args, chromium)
+    env = Env(args, chromium, isolated=os.environ.get("RB_PAGE_ISOLATED", "1") != "0")
     try:
         CASES[args.case](env)
     except Failure as e:

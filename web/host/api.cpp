@@ -68,8 +68,10 @@ std::unique_ptr<Loaded> load(const char* source, bool lint, bool keepCode, bool 
   out->program = loadProgram(kProgramName, source, reader, standardBuiltins(), LoadOptions{}, out->diags);
   CompileOptions compile;
   compile.keepCode = keepCode;
-  compile.lineTracing = lineTracing;  // the page's runs: the host hears each statement (Step)
-  compile.finishTraced = true;        // Step shows the line, not the variables
+  // The page's live runs: the host hears each statement while the user steps, and the code is
+  // not finished, so that the debugger shows every variable as the program wrote it (as the
+  // live terminal view does).
+  compile.lineTracing = lineTracing;
   out->compiled = compileChecked(*out->program, compile, lint, out->diags);
   return out;
 }
@@ -135,8 +137,12 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
   host.attachMachine(machine);
   machine.canvas().keepDisplayList(svg != 0);  // the SVG's shapes (as rb render -o OUT.svg)
   Interpreter interpreter(*l->compiled, machine);
-  RunResult result = interpreter.run(RunLimits::of(static_cast<uint64_t>(maxSteps), timeoutSeconds,
-                                                   static_cast<uint64_t>(maxMemoryMiB)));
+  host.attachInterpreter(interpreter);
+  RunLimits limits = RunLimits::of(static_cast<uint64_t>(maxSteps), timeoutSeconds, static_cast<uint64_t>(maxMemoryMiB));
+  // A live run looks at the page (Stop, Pause) at least every few milliseconds, even when its
+  // statements are slow ones (drawing, printing into a full screen, long strings).
+  if (live) limits.checkInterval = 1024;
+  RunResult result = interpreter.run(limits);
   host.flushOutput();
   host.present();
   if (svg) host.presentSvg();
