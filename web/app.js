@@ -553,7 +553,7 @@
       x.title = 'Stop watching ' + w.expr;
       x.onclick = () => setWatches(watchList.filter((_, k) => k !== i));
       li.appendChild(x);
-      li.appendChild(document.createTextNode(` ${w.expr} = `));
+      li.appendChild(document.createTextNode(w.error !== undefined ? ` ${w.expr}: ` : ` ${w.expr} = `));
       const v = document.createElement('span');
       v.className = w.error !== undefined ? 'error' : 'value';
       v.textContent = w.error !== undefined ? w.error : w.value;

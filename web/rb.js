@@ -307,7 +307,7 @@
     let settled = false, resolveDone, rejectDone, stopTimer = 0, framesGot = 0, ackFrame = 0;
     const done = new Promise((res, rej) => { resolveDone = res; rejectDone = rej; });
 
-    // In message mode what is sent before the run has begun follows its start message.
+    // In message mode what is sent before the run has begun goes with its start message.
     let begun = false;
     const pending = [];
     const post = (m) => { if (settled) return; if (begun) w.postMessage(m); else pending.push(m); };
@@ -438,9 +438,8 @@
     setWatches(options.watches || []);
     entry.ready.then(() => {
       if (settled) return;
-      w.postMessage({type: 'run', source, shared, options: runOptions(options)});
+      w.postMessage({type: 'run', source, shared, options: runOptions(options), before: pending.splice(0)});
       begun = true;
-      pending.splice(0).forEach((m) => w.postMessage(m));
     }, (e) => end(finishedBadly(got, 'error', e.message)));
     return run;
   }

@@ -202,6 +202,7 @@ onmessage = async (e) => {
       typed = [];
       answerText = watchText = '';
       pauseGo = null;
+      for (const before of m.before || []) take(before);  // 'async' mode: the fields set so far
       let r;
       try {
         r = await run(m.source, m.options, true);
@@ -214,20 +215,27 @@ onmessage = async (e) => {
       postMessage({type: 'done', result: r.result, svg: r.svg}, r.svg && r.svg.rgba ? [r.svg.rgba.buffer] : []);
       return;
     }
-    // 'async' mode: the page's fields, events, answers and watches
-    case 'set': ctrl[m.i] = m.v; break;
-    case 'add': ctrl[m.i]++; break;
-    case 'event': {
-      const widx = ctrl[LIVE.WIDX];
-      if (widx - readIdx >= LIVE.RING_N) break;
-      const o = LIVE.RING + (widx % LIVE.RING_N) * 4;
-      ctrl[o] = m.kind; ctrl[o + 1] = m.a; ctrl[o + 2] = m.b; ctrl[o + 3] = m.c;
-      ctrl[LIVE.WIDX] = widx + 1;
-      break;
-    }
-    case 'answer': answerText = m.text; ctrl[LIVE.ANSWER_ID] = m.id; break;
-    case 'watches': watchText = m.text; break;
-    default: return;
+    default:
+      if (!take(m)) return;
   }
   for (const check of [...waiters]) check(false);
 };
+
+// 'async' mode: the page's fields, events, answers and watches.
+function take(m) {
+  switch (m.type) {
+    case 'set': ctrl[m.i] = m.v; return true;
+    case 'add': ctrl[m.i]++; return true;
+    case 'event': {
+      const widx = ctrl[LIVE.WIDX];
+      if (widx - readIdx >= LIVE.RING_N) return true;
+      const o = LIVE.RING + (widx % LIVE.RING_N) * 4;
+      ctrl[o] = m.kind; ctrl[o + 1] = m.a; ctrl[o + 2] = m.b; ctrl[o + 3] = m.c;
+      ctrl[LIVE.WIDX] = widx + 1;
+      return true;
+    }
+    case 'answer': answerText = m.text; ctrl[LIVE.ANSWER_ID] = m.id; return true;
+    case 'watches': watchText = m.text; return true;
+    default: return false;
+  }
+}

@@ -345,6 +345,88 @@ def case_error_line(env):
     env.expect_quiet()
 
 
+def case_debugger(env):
+    """Paused, the page shows where the run stands, its variables (current inside a robot motion,
+    as the core has them) and watch expressions; Step finishes the statement and stops before
+    the next; the status says what a run waits for; the speed slider runs slow (left) to fast
+    (right); a crash reports the statements it ran."""
+    b = env.open()
+    state = lambda: b.js("document.getElementById('status').textContent")  # noqa: E731
+    expect("one statement" in b.js("document.getElementById('step').title"), "Step's tooltip")
+    expect("Pause" in b.js("document.getElementById('pause').title") or
+           "pause" in b.js("document.getElementById('pause').title"), "Pause's tooltip")
+    # The slowest speed: the first side takes seconds; paused inside it.
+    b.js("document.getElementById('speed').value = '0'; document.getElementById('speed').dispatchEvent(new Event('input')); true")
+    prog = ("rLocate 400, 300\nn = 0\nfor side = 1 to 4\n  rForward 100\n  rTurn 90\n  n = n + 1\nnext\n"
+            "print \"done\"\n")
+    b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
+    time.sleep(0.5)
+    b.js("document.getElementById('pause').click(); true")
+    wait_for(b, "document.getElementById('status').textContent.startsWith('paused')", "Pause did not pause")
+    expect(state() == "paused in line 4", f"paused inside the first side, the status is {state()!r}")
+    variables = "[...document.querySelectorAll('#variables tr')].map((r) => r.textContent)"
+    expect(b.js(variables) == ["n0", "side1"], f"the variables shown: {b.js(variables)}")
+    expect(b.js("document.getElementById('debugger').hidden") is False, "the debugger is hidden")
+    # A watch, computed by the core with the program's variables.
+    b.js("document.getElementById('watchInput').value = 'side * 10 + n'; "
+         "document.getElementById('watchForm').requestSubmit(); true")
+    watches = "[...document.querySelectorAll('#watches li')].map((l) => l.textContent)"
+    wait_for(b, f"{watches}.length === 1 && {watches}[0].includes('= 10')", f"the watch shows {b.js(watches)}")
+    b.js("document.getElementById('watchInput').value = 'nothing + 1'; "
+         "document.getElementById('watchForm').requestSubmit(); true")
+    wait_for(b, f"{watches}.length === 2 && {watches}[1].endsWith(\": the program has no variable 'nothing'\")",
+             f"the watches show {b.js(watches)}")
+    b.js("document.querySelectorAll('#watches li button')[1].click(); true")
+    wait_for(b, f"{watches}.length === 1", "the watch was not removed")
+    # Step: the side is finished, then one statement at a time, the variables current.
+    b.js("document.getElementById('speed').value = '10'; document.getElementById('speed').dispatchEvent(new Event('input')); true")
+    b.js("document.getElementById('step').click(); true")
+    wait_for(b, "document.getElementById('status').textContent === 'paused before line 5'",
+             f"Step did not stop before line 5: {state()!r}")
+    for line in (6, 7, 4):
+        b.js("document.getElementById('step').click(); true")
+        wait_for(b, f"document.getElementById('status').textContent === 'paused before line {line}'",
+                 f"Step did not stop before line {line}: {state()!r}")
+    expect(b.js(variables) == ["n1", "side2"], f"before the second side the variables are {b.js(variables)}")
+    expect(b.js(f"{watches}[0]").endswith("= 21"), f"the watch shows {b.js(watches)}")
+    b.js("document.getElementById('pause').click(); true")  # Resume
+    b.js("window.__done.then(() => true)", timeout=30)
+    expect(b.js("rbLastRun.status") == "finished", f"the run ended {b.js('rbLastRun.status')}")
+    expect(b.js("document.getElementById('debugger').hidden"), "the debugger stays after the run")
+    # What a run waits for.
+    for prog, what, act in (("waitKey k\n", "waiting for a key", "key"), ("waitClick x, y, b\n", "waiting for a click", "click"),
+                            ("input a\n", "waiting for input", "input")):
+        b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
+        wait_for(b, f"document.getElementById('status').textContent === {json.dumps(what)}", f"{prog!r}: the status is {state()!r}")
+        if act == "key":
+            b.js("document.getElementById('screen').focus(); true")
+            b.call("Input.dispatchKeyEvent", {"type": "keyDown", "key": "a", "code": "KeyA", "text": "a",
+                                              "windowsVirtualKeyCode": 65}, session=True)
+            b.call("Input.dispatchKeyEvent", {"type": "keyUp", "key": "a", "code": "KeyA", "windowsVirtualKeyCode": 65},
+                   session=True)
+        elif act == "click":
+            click(b, 10, 10)
+        else:
+            b.js("document.getElementById('inputLine').value = '1'; document.getElementById('inputForm').requestSubmit(); true")
+        b.js("window.__done.then(() => true)", timeout=20)
+        expect(b.js("rbLastRun.status") == "finished", f"{prog!r} ended {b.js('rbLastRun.status')}")
+    # Right is faster: a side at the middle of the slider takes longer than at its right end.
+    timed = "rbPage.runProgram().then(() => rbLastRun.status)"
+    b.js("rbPage.setSource('rLocate 400, 300\\nrForward 60\\n'); true")
+    took = {}
+    for value in ("5", "10"):
+        b.js(f"document.getElementById('speed').value = '{value}'; document.getElementById('speed').dispatchEvent(new Event('input')); true")
+        t = time.monotonic()
+        expect(b.js(timed) == "finished", "the side did not finish")
+        took[value] = time.monotonic() - t
+    expect(took["5"] > took["10"] + 0.1, f"the slider's middle is not slower than its right end: {took}")
+    # A crash into the wall: the statements it ran, not "0 steps".
+    r = env.run_page("rLocate 400, 300\nx = 1\nrForward 1000\n")
+    expect(r["status"] == "error", f"the crash ended {r}")
+    expect(re.fullmatch(r"error \([0-9.]+ s, 3 steps\)", state()), f"after the crash the status is {state()!r}")
+    env.expect_quiet()
+
+
 def client_point(b, x, y):
     """The page coordinates of screen pixel (x, y)'s centre on the scaled canvas."""
     return b.js(f"(() => {{ const r = document.getElementById('screen').getBoundingClientRect(); "
@@ -523,8 +605,12 @@ def case_serial(env):
 
 def case_offline(env):
     """Once loaded, the page works offline: with its server gone, the page loads again from the
-    browser's cache (its service worker) and runs programs, on the page and in rb.run's worker."""
+    browser's cache (its service worker) and runs programs, on the page and in rb.run's worker.
+    The service worker makes the page cross-origin isolated (a server that sends no headers,
+    as GitHub Pages), so its runs use shared memory."""
+    env.server.isolated = False
     b = env.open()
+    expect(not b.js("crossOriginIsolated"), "the first visit is isolated without the headers")
     ready = b.js("Promise.race([navigator.serviceWorker.ready.then(() => true), "
                  "new Promise((r) => setTimeout(() => r(false), 10000))])")
     expect(ready, "no service worker took the page within 10 s")
@@ -533,6 +619,7 @@ def case_offline(env):
     env.server.server_close()
     env.open()
     expect(b.js("navigator.serviceWorker.controller !== null"), "the reloaded page is not the service worker's")
+    expect(b.js("crossOriginIsolated && rb.liveMode === 'sab'"), "the service worker's page is not cross-origin isolated")
     r = env.run_page('print "offline "; 6 * 7\n')
     expect(r["status"] == "finished" and r["output"] == "offline \t42\n", f"offline, the run gave {r}")
     got = b.js("rb.run('print 1 + 1\\n').then((r) => r.output)")
@@ -581,7 +668,7 @@ def case_svg(env):
     env.expect_quiet()
 
 
-CASES = {"never_frozen": case_never_frozen, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
+CASES = {"never_frozen": case_never_frozen, "debugger": case_debugger, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
          "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial, "offline": case_offline}
 
 
