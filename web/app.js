@@ -99,7 +99,8 @@
   }
   let checkTimer = 0;
   function changed() {
-    localStorage.setItem(STORE, editor.value);
+    saveCurrent();
+    if (notice.kind === 'example') hideNotice();  // an edit makes the example the student's
     if (editor === textAreaEditor) { errorLine = 0; renderEditor(); }
     clearTimeout(checkTimer);
     // During a run the check waits for its end (runProgram checks then).
@@ -119,6 +120,180 @@
   function setSource(text) {
     editor.value = text;
     if (editor === textAreaEditor) changed();
+  }
+  // Another program's text: no undo back into the one before.
+  function resetSource(text) {
+    if (editor.reset) editor.reset(text); else editor.value = text;
+    if (editor === textAreaEditor) renderEditor();
+    listDiagnosticsSoon();
+  }
+  function listDiagnosticsSoon() {
+    clearTimeout(checkTimer);
+    checkTimer = setTimeout(async () => listDiagnostics(await rb.check(editor.value)), 0);
+  }
+
+  // ---------------------------------------------------------------- notices
+  // A line under the header that says what just happened to the student's work, with what can
+  // be done about it: keep or drop a shared program's copy, undo loading an example or a delete.
+  const notice = {kind: ''};
+  function showNotice(kind, text, actions) {
+    notice.kind = kind;
+    $('noticeText').textContent = text;
+    const box = $('noticeActions');
+    box.textContent = '';
+    for (const [label, act] of actions) {
+      const b = document.createElement('button');
+      b.textContent = label;
+      b.onclick = () => { hideNotice(); act(); };
+      box.appendChild(b);
+    }
+    $('notice').hidden = false;
+  }
+  function hideNotice() {
+    notice.kind = '';
+    $('notice').hidden = true;
+  }
+  $('noticeClose').onclick = hideNotice;
+
+  // ---------------------------------------------------------------- the programs kept
+  // The page keeps several programs in the browser's local storage (rb.programs: their names and
+  // texts, and the one open), each saved on every change. A share link, a file opened and New
+  // add one; nothing replaces a program but the student's own edits and loading an example,
+  // which the notice can undo.
+  const PROGRAMS = 'rb.programs';
+  function readBook() {
+    try {
+      const b = JSON.parse(localStorage.getItem(PROGRAMS));
+      if (b && Array.isArray(b.programs)) return b;
+    } catch (e) { /* not ours: start again */ }
+    return null;
+  }
+  function writeBook() {
+    try {
+      localStorage.setItem(PROGRAMS, JSON.stringify(book));
+    } catch (e) {
+      status.textContent = 'not saved: the browser\'s storage for this page is full';
+    }
+  }
+  let book = readBook() || {programs: [], current: ''};
+  const current = () => book.programs.find((p) => p.id === book.current);
+  function newId() { return Date.now().toString(36) + Math.random().toString(36).slice(2, 8); }
+  function freeName(name) {
+    const taken = new Set(book.programs.map((p) => p.name));
+    if (!taken.has(name)) return name;
+    for (let i = 2; ; i++) if (!taken.has(`${name} ${i}`)) return `${name} ${i}`;
+  }
+  // Writes the open program's text; the other programs as the storage has them (another tab
+  // may have changed them).
+  function saveCurrent() {
+    const mine = current();
+    if (!mine) return;
+    mine.source = editor.value;
+    const fresh = readBook();
+    if (fresh) {
+      const theirs = fresh.programs.find((p) => p.id === mine.id);
+      if (theirs) Object.assign(theirs, mine); else fresh.programs.push(mine);
+      fresh.current = mine.id;
+      book = fresh;
+    }
+    writeBook();
+  }
+  function listPrograms() {
+    const sel = $('programs');
+    sel.textContent = '';
+    for (const p of book.programs) {
+      const o = document.createElement('option');
+      o.value = p.id;
+      o.textContent = p.name;
+      sel.appendChild(o);
+    }
+    sel.value = book.current;
+  }
+  function openProgram(id) {
+    if (run) stopProgram();
+    saveCurrent();
+    if (!book.programs.some((p) => p.id === id)) return;
+    book.current = id;
+    writeBook();
+    listPrograms();
+    resetSource(current().source);
+  }
+  function addProgram(name, source) {
+    saveCurrent();
+    const p = {id: newId(), name: freeName(name), source};
+    book.programs.push(p);
+    writeBook();
+    openProgram(p.id);
+    return p;
+  }
+  function deleteProgram(id) {
+    saveCurrent();
+    const i = book.programs.findIndex((p) => p.id === id);
+    if (i < 0) return null;
+    const [gone] = book.programs.splice(i, 1);
+    if (!book.programs.length) book.programs.push({id: newId(), name: 'program 1', source: ''});
+    if (book.current === id) {
+      book.current = book.programs[Math.min(i, book.programs.length - 1)].id;
+      writeBook();
+      listPrograms();
+      resetSource(current().source);
+    } else {
+      writeBook();
+      listPrograms();
+    }
+    return gone;
+  }
+  $('programs').onchange = () => openProgram($('programs').value);
+  $('newProgram').onclick = () => { $('programMenu').open = false; addProgram('program', ''); editor.focus(); };
+  $('renameProgram').onclick = () => {
+    $('programMenu').open = false;
+    const d = $('nameDialog');
+    $('nameInput').value = current().name;
+    d.onclose = () => {
+      const name = $('nameInput').value.trim();
+      if (d.returnValue === 'ok' && name && name !== current().name) {
+        current().name = freeName(name);
+        writeBook();
+        listPrograms();
+      }
+    };
+    d.showModal();
+    $('nameInput').select();
+  };
+  $('deleteProgram').onclick = () => {
+    $('programMenu').open = false;
+    const at = book.programs.findIndex((p) => p.id === book.current);
+    const gone = deleteProgram(book.current);
+    if (gone) {
+      showNotice('delete', `Deleted “${gone.name}”.`, [['Undo', () => {
+        saveCurrent();
+        book.programs.splice(Math.min(at, book.programs.length), 0, gone);
+        writeBook();
+        openProgram(gone.id);
+      }]]);
+    }
+  };
+  // A shared program opens as a copy beside the student's own (the same text opens the copy
+  // made before); the link leaves the address bar, so a reload does not make another.
+  async function openShared() {
+    const text = await programFromHash().catch(() => null);
+    if (text === null) return false;
+    history.replaceState(null, '', location.href.split('#')[0]);
+    const before = book.current;
+    const same = book.programs.find((p) => p.source === text);
+    if (same) {
+      if (same.id !== book.current) openProgram(same.id);
+      return true;
+    }
+    const copy = addProgram('shared program', text);
+    showNotice('shared', `Opened a shared program as “${copy.name}”, beside your own programs.`, [
+      ['Keep', () => {}],
+      ['Drop', () => {
+        deleteProgram(copy.id);
+        if (book.programs.some((p) => p.id === before)) openProgram(before);
+      }],
+    ]);
+    return true;
   }
 
   // ---------------------------------------------------------------- share links, files, examples
@@ -148,9 +323,13 @@
     history.replaceState(null, '', link);
     try { await navigator.clipboard.writeText(link); status.textContent = 'link copied'; } catch (e) { status.textContent = 'link in the address bar'; }
   };
-  window.addEventListener('hashchange', async () => { const p = await programFromHash(); if (p !== null) setSource(p); });
+  window.addEventListener('hashchange', () => { openShared(); });
   $('open').onclick = () => $('file').click();
-  $('file').onchange = async () => { const f = $('file').files[0]; if (f) setSource(await f.text()); $('file').value = ''; };
+  $('file').onchange = async () => {
+    const f = $('file').files[0];
+    if (f) addProgram(f.name.replace(/\.(bas|txt)$/i, ''), await f.text());
+    $('file').value = '';
+  };
   function download(name, href) {
     const a = document.createElement('a');
     a.href = href;
@@ -159,7 +338,8 @@
     a.click();
     a.remove();
   }
-  $('save').onclick = () => download('program.bas', URL.createObjectURL(new Blob([editor.value], {type: 'text/plain'})));
+  $('save').onclick = () => download(`${(current() || {name: 'program'}).name.replace(/[\\/:*?"<>|]+/g, '_')}.bas`,
+    URL.createObjectURL(new Blob([editor.value], {type: 'text/plain'})));
   $('png').onclick = () => download('screen.png', canvas.toDataURL('image/png'));
   // The SVG is the screen as the last run left it, made by the core as `rb render -o OUT.svg`
   // makes it (lines, shapes and text as vectors).
@@ -174,10 +354,18 @@
     o.textContent = `${ex.name}: ${ex.title}`;
     $('examples').appendChild(o);
   }
+  // An example replaces the open program's text (the editor's undo brings it back too).
   $('examples').onchange = () => {
     const ex = examples[Number($('examples').value)];
-    if (ex) setSource(ex.source);
     $('examples').value = '';
+    if (!ex) return;
+    const before = editor.value, into = current();
+    setSource(ex.source);
+    if (before.trim() && before !== ex.source) {
+      showNotice('example', `Loaded the example ${ex.name} into “${into.name}”.`, [['Undo', () => {
+        if (book.current === into.id) setSource(before);
+      }]]);
+    }
   };
 
   // ---------------------------------------------------------------- keys and the mouse
@@ -588,8 +776,10 @@
       maxMemory: Number($('maxMemory').value) || 0,
     };
   }
+  let latest = null;  // the last run started (its SVG comes after its end)
   async function runProgram() {
     if (run) return;
+    lastSvg = null;
     clearOutput();
     nextFrame = null;
     editor.setErrorLine(0);
@@ -610,6 +800,11 @@
       onOutput: (t) => appendOutput(t),
       onFrame: showFrame,
       onPaused: showPaused,
+      onSvg: (text) => {
+        if (latest !== r) return;
+        lastSvg = text;
+        if (!run) setRunning(false);
+      },
       onResumed: () => { if (paused) { hidePaused(); showStatus(); setRunning(true); } },
       onWaiting: (what) => {
         waitingFor = what === 'key' ? 'a key' : what === 'click' ? 'a click' : what;
@@ -617,7 +812,7 @@
         showStatus();
       },
     }));
-    run = r;
+    run = latest = r;
     setRunning(true);
     let result;
     try {
@@ -626,7 +821,6 @@
       result = {status: 'error', error: String(e), output: ''};
     }
     run = null;
-    lastSvg = result.svg || null;
     hidePaused();
     pausing = false;
     waitingFor = '';
@@ -696,9 +890,18 @@
   if ('serviceWorker' in navigator && window.isSecureContext) navigator.serviceWorker.register('sw.js').catch(() => {});
   window.rbPage.ready = (async () => {
     clearScreen();
-    const fromLink = await programFromHash().catch(() => null);
-    const saved = localStorage.getItem(STORE);
-    editor.value = fromLink !== null ? fromLink : saved !== null ? saved : (examples[0] ? examples[0].source : '');
+    // The programs kept, the single one of earlier pages (rb.source) among them, or the first
+    // example as the first program.
+    if (!book.programs.length) {
+      const saved = localStorage.getItem(STORE);
+      book.programs.push({id: newId(), name: 'my program',
+                          source: saved !== null ? saved : (examples[0] ? examples[0].source : '')});
+    }
+    if (!current()) book.current = book.programs[0].id;
+    writeBook();
+    listPrograms();
+    resetSource(current().source);
+    await openShared();
     await rb.ready();
     listDiagnostics(await rb.check(editor.value));
     rb.prepare();  // the live run's worker, loaded and warmed up before the first Run

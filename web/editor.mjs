@@ -30,7 +30,8 @@ const robotBasic = StreamLanguage.define({
       if (first && stream.peek() === ':') { stream.next(); return 'labelName'; }
       if (first && word === 'rem') { stream.skipToEnd(); return 'comment'; }
       if (KEYWORDS.has(word)) return 'keyword';
-      if (/^r[A-Z]/.test(w[0])) return 'function(variableName)';
+      // (A tag's modifier follows it: 'variableName.function' is tags.function(tags.variableName).)
+      if (/^r[A-Z]/.test(w[0])) return 'variableName.function';
       return 'variableName';
     }
     stream.next();
@@ -63,19 +64,14 @@ const errorLine = StateField.define({
 
 window.RbEditor = {
   create(parent, {doc, onChange, onRun}) {
-    const view = new EditorView({
-      parent,
-      state: EditorState.create({
-        doc,
-        extensions: [
-          lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), highlightActiveLine(),
-          bracketMatching(), robotBasic, syntaxHighlighting(defaultHighlightStyle), lintGutter(), errorLine,
-          keymap.of([{key: 'Mod-Enter', run: () => { onRun(); return true; }}, indentWithTab,
-                     ...defaultKeymap, ...historyKeymap]),
-          EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),
-        ],
-      }),
-    });
+    const extensions = [
+      lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), highlightActiveLine(),
+      bracketMatching(), robotBasic, syntaxHighlighting(defaultHighlightStyle), lintGutter(), errorLine,
+      keymap.of([{key: 'Mod-Enter', run: () => { onRun(); return true; }}, indentWithTab,
+                 ...defaultKeymap, ...historyKeymap]),
+      EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),
+    ];
+    const view = new EditorView({parent, state: EditorState.create({doc, extensions})});
     const pos = (line, col) => {
       const l = view.state.doc.line(Math.min(Math.max(1, line), view.state.doc.lines));
       return Math.min(l.to, l.from + Math.max(0, (col || 1) - 1));
@@ -84,6 +80,8 @@ window.RbEditor = {
       view,
       get value() { return view.state.doc.toString(); },
       set value(text) { view.dispatch({changes: {from: 0, to: view.state.doc.length, insert: text}}); },
+      // Another program: a fresh state, with no undo back into the text before.
+      reset(text) { view.setState(EditorState.create({doc: text, extensions})); },
       setDiagnostics(list) {
         const diags = list.filter((d) => d.line > 0 && d.severity !== 'note').map((d) => {
           const from = pos(d.line, d.col);

@@ -388,23 +388,35 @@
           break;
         case 'done':
           if (got.output.length > LIVE_OUTPUT_KEEP) got.output = got.output.slice(-LIVE_OUTPUT_KEEP);
-          got.svg = m.svg;
-          settled = true;  // the worker is free again: keep it for the next run
+          settled = true;
           clearTimeout(stopTimer);
           if (liveRun === run) liveRun = null;
-          if (!spare) spare = entry; else w.terminate();
-          finish(m.result, got, options).then(resolveDone, rejectDone);
+          // The worker takes the next run once it has made this one's SVG.
+          if (!spare) { spare = entry; kept = true; }
+          finish(m.result, got, Object.assign({}, options, {svg: false})).then(resolveDone, rejectDone);
           break;
       }
     };
+    // After the run's end: its SVG (options.svg), made after the page heard of the end, and the
+    // worker free again (kept for the next run).
+    w.addEventListener('message', function after(e) {
+      if (e.data.type === 'svg') {
+        if (options.onSvg) svgText(e.data.svg).then((text) => options.onSvg(text));
+      } else if (e.data.type === 'idle') {
+        w.removeEventListener('message', after);
+        if (!kept && !killed) w.terminate();
+      }
+    });
     w.onerror = (e) => {
       e.preventDefault();
       w.terminate();
       end(finishedBadly(got, 'error', 'the run failed: ' + (e.message || 'the worker stopped')));
     };
     // A run stopped where it does not look at Stop (one long statement): its worker is ended.
+    let killed = false, kept = false;
     const kill = () => {
       if (settled) return;
+      killed = true;
       w.terminate();
       if (!spare) spare = liveWorker();
       end(finishedBadly(got, 'stopped', null));
@@ -469,8 +481,9 @@
       return job;
     },
     // options: {io: {inputLine, messageBox, controls, serialOpen, serialSend, serialTake,
-    // serialClose}, onOutput, onFrame, onPaused, onWaiting, stepMs, stepping, watches, seed,
-    // maxSteps, timeout, maxMemory, svg, png}
+    // serialClose}, onOutput, onFrame, onPaused, onResumed, onWaiting, onSvg, stepMs, stepping,
+    // watches, seed, maxSteps, timeout, maxMemory, svg, png}. The result's svg is null: with
+    // options.svg the SVG comes after the end, to onSvg(text).
     start(source, options = {}) {
       if (isNode || isWorker) throw new Error('rb.start runs on a page');
       return startLive(source, options);

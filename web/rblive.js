@@ -106,7 +106,12 @@ const hooks = {
   },
   // The page draws one frame in each of its own: one more may wait there, not a heap of them.
   frameWanted: () => framesSent - Atomics.load(ctrl, LIVE.DRAWN) < 2,
-  svg: (text, rgba, width, height) => { svg = {text, rgba, width, height}; },
+  svg: (text, rgba, width, height) => {
+    svg = {text, rgba, width, height};
+    postMessage({type: 'svg', svg}, rgba ? [rgba.buffer] : []);
+  },
+  // The run has ended (the SVG comes after).
+  finished: (json) => postMessage({type: 'done', result: JSON.parse(json)}),
   controls: (c) => postMessage({type: 'controls', controls: c}),
   stopped,
   stepMs: () => Atomics.load(ctrl, LIVE.STEPUS) / 1000,
@@ -212,7 +217,8 @@ onmessage = async (e) => {
       } finally {
         waiters.clear();
       }
-      postMessage({type: 'done', result: r.result, svg: r.svg}, r.svg && r.svg.rgba ? [r.svg.rgba.buffer] : []);
+      if (r.result.status === 'rejected' || r.result.status === 'usage') postMessage({type: 'done', result: r.result});
+      postMessage({type: 'idle'});
       return;
     }
     default:

@@ -116,6 +116,12 @@ def case_loads(env):
     expect(b.js("document.getElementById('status').textContent") == "ready", "the page is not ready")
     expect(b.js("RB_EXAMPLES.length") >= 5, "the seed's figures are not among the examples")
     env.expect_quiet()
+    # Robot commands highlighted: no warning from the highlighter either.
+    b.js("rbPage.setSource('rLocate 100, 100\\nrForward 10\\n'); true")
+    b.js("new Promise((r) => setTimeout(() => r(true), 300))")
+    warnings = [json.dumps(e["params"].get("args", []))[:200] for e in b.events
+                if e.get("method") == "Runtime.consoleAPICalled" and e["params"].get("type") == "warning"]
+    expect(not warnings, "the console shows warnings:\n" + "\n".join(warnings))
 
 
 def case_square(env):
@@ -188,6 +194,74 @@ def case_share(env):
     env.open(link)
     got = b.js("rbPage.source")
     expect(got == text, f"the editor holds {got!r}")
+    env.expect_quiet()
+
+
+def case_programs(env):
+    """Work is never lost: a share link opens as a copy beside the student's own program (Keep or
+    Drop), not in its place; the page keeps several programs (new, rename, delete and its undo)
+    across reloads; loading an example can be undone, and the editor's undo never empties it."""
+    b = env.open()
+    names = "[...document.getElementById('programs').options].map((o) => o.textContent)"
+    notice = "document.getElementById('notice').hidden ? '' : document.getElementById('noticeText').textContent"
+
+    def reopen(url=None):
+        b.call("Page.navigate", {"url": "about:blank"}, session=True)
+        b.wait_event("Page.loadEventFired")
+        env.open(url)
+
+    def press(label):
+        b.js(f"[...document.querySelectorAll('#noticeActions button')].find((x) => x.textContent === {json.dumps(label)}).click(); true")
+
+    # The editor's undo at once: the text the page opened with stays.
+    first = b.js("rbPage.source")
+    b.js("document.querySelector('.cm-content').focus(); true")
+    b.call("Input.dispatchKeyEvent", {"type": "keyDown", "key": "z", "code": "KeyZ", "modifiers": 2,
+                                      "windowsVirtualKeyCode": 90}, session=True)
+    b.call("Input.dispatchKeyEvent", {"type": "keyUp", "key": "z", "code": "KeyZ", "modifiers": 2,
+                                      "windowsVirtualKeyCode": 90}, session=True)
+    expect(b.js("rbPage.source") == first and first, f"undo right after loading gave {b.js('rbPage.source')!r}")
+    mine = 'print "mine"\n'
+    b.js(f"rbPage.setSource({json.dumps(mine)}); true")
+    link = b.js("rbPage.shareLink('print \"shared\"\\n')")
+    reopen(link)
+    expect(b.js("rbPage.source") == 'print "shared"\n', f"the shared program is not open: {b.js('rbPage.source')!r}")
+    expect(b.js(names) == ["my program", "shared program"], f"the programs: {b.js(names)}")
+    expect("beside your own" in b.js(notice), f"the notice: {b.js(notice)!r}")
+    expect("#" not in b.js("location.href"), "the link stays in the address bar")
+    press("Drop")
+    expect(b.js(names) == ["my program"] and b.js("rbPage.source") == mine,
+           f"after Drop: {b.js(names)}, {b.js('rbPage.source')!r}")
+    reopen(link)
+    press("Keep")
+    reopen()  # a reload: the programs kept, no second copy
+    expect(b.js(names) == ["my program", "shared program"] and b.js("rbPage.source") == 'print "shared"\n',
+           f"after a reload: {b.js(names)}, {b.js('rbPage.source')!r}")
+    # New, rename, delete and undo it.
+    b.js("document.getElementById('newProgram').click(); true")
+    expect(b.js(names) == ["my program", "shared program", "program"] and b.js("rbPage.source") == "",
+           f"after New: {b.js(names)}")
+    b.js("rbPage.setSource('print 3\\n'); document.getElementById('renameProgram').click(); "
+         "document.getElementById('nameInput').value = 'third'; "
+         "document.querySelector('#nameDialog button[value=ok]').click(); true")
+    wait_for(b, f"{names}[2] === 'third'", f"after Rename: {b.js(names)}")
+    b.js("document.getElementById('programs').value = document.getElementById('programs').options[0].value; "
+         "document.getElementById('programs').dispatchEvent(new Event('change')); true")
+    expect(b.js("rbPage.source") == mine, f"my program holds {b.js('rbPage.source')!r}")
+    b.js("document.getElementById('deleteProgram').click(); true")
+    expect(b.js(names) == ["shared program", "third"], f"after Delete: {b.js(names)}")
+    press("Undo")
+    expect(b.js(names) == ["my program", "shared program", "third"] and b.js("rbPage.source") == mine,
+           f"after undoing the delete: {b.js(names)}, {b.js('rbPage.source')!r}")
+    # An example replaces the open program's text; Undo brings it back.
+    b.js("const e = document.getElementById('examples'); e.value = '0'; e.dispatchEvent(new Event('change')); true")
+    expect(b.js("rbPage.source") == b.js("RB_EXAMPLES[0].source"), "the example was not loaded")
+    press("Undo")
+    expect(b.js("rbPage.source") == mine, f"undoing the example gave {b.js('rbPage.source')!r}")
+    reopen()
+    kept = b.js("JSON.parse(localStorage.getItem('rb.programs')).programs.map((p) => [p.name, p.source])")
+    expect(kept == [["my program", mine], ["shared program", 'print "shared"\n'], ["third", "print 3\n"]],
+           f"the programs kept: {kept}")
     env.expect_quiet()
 
 
@@ -651,7 +725,8 @@ def case_svg(env):
         want = open(out, encoding="utf-8").read()
         r = env.run_page(text)
         expect(r["status"] == "finished", f"{name} ended {r}")
-        expect(not b.js("document.getElementById('svg').disabled"), f"{name}: the SVG button is off after the run")
+        # The SVG is made after the run's end is shown.
+        wait_for(b, "!document.getElementById('svg').disabled", f"{name}: the SVG button stays off after the run")
         b.js("window.__blobs = []; document.getElementById('svg').click(); true")
         got = b.js("window.__blobs.length === 1 && window.__blobs[0].type === 'image/svg+xml' "
                    "? window.__blobs[0].text() : null")
@@ -668,7 +743,7 @@ def case_svg(env):
     env.expect_quiet()
 
 
-CASES = {"never_frozen": case_never_frozen, "debugger": case_debugger, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share,
+CASES = {"never_frozen": case_never_frozen, "debugger": case_debugger, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share, "programs": case_programs,
          "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial, "offline": case_offline}
 
 

@@ -145,7 +145,6 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
   RunResult result = interpreter.run(limits);
   host.flushOutput();
   host.present();
-  if (svg) host.presentSvg();
   const char* status = "finished";
   switch (result.status) {
     case RunStatus::Finished: status = "finished"; break;
@@ -162,7 +161,12 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
     out += ",\"error\":";
     jsonDiagnostic(out, l->program->sources, *result.error);
   }
-  return give(out + "}");
+  out += '}';
+  // The page hears how the run ended before the SVG is made (it can take a while: the shapes of
+  // 40,000 SetPixels), which it then gets for its SVG button.
+  host.finished(out);
+  if (svg) host.presentSvg();
+  return give(out);
 }
 
 }  // extern "C"

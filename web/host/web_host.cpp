@@ -45,6 +45,9 @@ EM_JS(char*, rb_js_watches, (), {
   return p;
 });
 EM_JS(void, rb_js_frame, (const uint8_t* rgba, int width, int height), { Module.rbHooks.frame(rgba, width, height); });
+EM_JS(void, rb_js_finished, (const char* json, int size), {
+  if (Module.rbHooks.finished) Module.rbHooks.finished(UTF8ToString(json, size));
+});
 // Whether the page has drawn the frames sent so far (frames while the run computes wait for it).
 EM_JS(int, rb_js_frame_wanted, (), { return !Module.rbHooks.frameWanted || Module.rbHooks.frameWanted() ? 1 : 0; });
 EM_JS(void, rb_js_svg, (const char* svg, int size, const uint8_t* rgba, int width, int height), {
@@ -520,6 +523,10 @@ void WebHost::present(bool force) {
       rgba_[static_cast<size_t>(y) * w + static_cast<size_t>(x)] = robot;
     });
   rb_js_frame(reinterpret_cast<const uint8_t*>(rgba_.data()), w, h);
+}
+
+void WebHost::finished(const std::string& json) {
+  if (live_) rb_js_finished(json.data(), static_cast<int>(json.size()));
 }
 
 void WebHost::presentSvg() {

@@ -74,6 +74,8 @@ class WebHost : public Host {
   /// the screen's pixels (flip is on, a flood fill, ...), its <image> links to kScreenHref and the
   /// pixels (RGBA, without the robot) go with it: the page puts their PNG in that link's place.
   void presentSvg();
+  /// A live run has ended: how (rb_run's JSON) goes to the page at once, before the SVG.
+  void finished(const std::string& json);
   static constexpr const char* kScreenHref = "rb:screen.png";
   /// How long a robot on Web Serial has for each reply: rb run's --robot-timeout default.
   static constexpr double kRobotTimeoutSeconds = 2;
