@@ -390,12 +390,9 @@
   // drawn over the screen; while one of its edit boxes has the keyboard, keys go into it.
   let controls = {buttons: [], edits: [], focus: ''};
   function placeControls() {
-    const layer = $('controls');
     const box = $('screenBox').getBoundingClientRect();
-    const r = canvas.getBoundingClientRect();
-    const scale = Math.min(r.width / 800, r.height / 600);
-    const x = r.left - box.left + (r.width - 800 * scale) / 2, y = r.top - box.top + (r.height - 600 * scale) / 2;
-    layer.style.transform = `translate(${x}px, ${y}px) scale(${scale})`;
+    const p = pictureBox();
+    $('controls').style.transform = `translate(${p.left - box.left}px, ${p.top - box.top}px) scale(${p.scale})`;
   }
   function showControls(c) {
     controls = c;
@@ -414,7 +411,28 @@
     c.edits.forEach((e) => add('rb-edit' + (e.name === c.focus ? ' focus' : ''), e, e.text));
     placeControls();
   }
-  new ResizeObserver(placeControls).observe(canvas);
+  new ResizeObserver(() => { fitScreen(); placeControls(); }).observe(canvas);
+  // The 800x600 screen fitted in its box. Shown smaller it is smoothed (the browser averages
+  // neighbouring pixels as it scales the canvas), so that a 1-pixel line or small text never
+  // falls between the pixels shown, as it does when each shown pixel is the nearest one; shown
+  // larger each pixel stays sharp. (The browser's compositor scales it: no work for the page.)
+  function fitScreen() {
+    canvas.classList.toggle('sharp', pictureBox().scale >= 1);
+  }
+  // Where the picture is on the page (CSS pixels): its top left corner and a screen pixel's size.
+  function pictureBox() {
+    const r = canvas.getBoundingClientRect();
+    const w = canvas.clientWidth, h = canvas.clientHeight, scale = Math.min(w / 800, h / 600);
+    return {left: r.left + canvas.clientLeft + (w - 800 * scale) / 2, top: r.top + canvas.clientTop + (h - 600 * scale) / 2, scale};
+  }
+  $('larger').onclick = () => {
+    document.body.classList.toggle('larger');
+    $('larger').setAttribute('aria-pressed', String(document.body.classList.contains('larger')));
+  };
+  $('fullscreen').onclick = () => {
+    if (document.fullscreenElement) document.exitFullscreen();
+    else $('screenBox').requestFullscreen().then(() => canvas.focus(), () => {});
+  };
   canvas.addEventListener('keydown', (e) => {
     const code = keyCode(e);
     if (!code || e.ctrlKey || e.metaKey) return;
@@ -426,24 +444,23 @@
   canvas.addEventListener('keyup', () => { if (run) run.keyUp(); });
   canvas.addEventListener('blur', () => { if (run) run.keyUp(); });
   function screenPoint(e) {
-    const r = canvas.getBoundingClientRect();
-    // object-fit: contain: the picture's box inside the element
-    const scale = Math.min(r.width / 800, r.height / 600);
-    const ox = (r.width - 800 * scale) / 2, oy = (r.height - 600 * scale) / 2;
-    return [Math.floor((e.clientX - r.left - ox) / scale), Math.floor((e.clientY - r.top - oy) / scale)];
+    const p = pictureBox();
+    return [Math.floor((e.clientX - p.left) / p.scale), Math.floor((e.clientY - p.top) / p.scale)];
   }
-  canvas.addEventListener('mousemove', (e) => {
+  // Pointer events: their positions keep fractions of a pixel (the screen's pixels are smaller
+  // than the page's when it is shown smaller), and a touch screen's touches are clicks too.
+  canvas.addEventListener('pointermove', (e) => {
     const [x, y] = screenPoint(e);
     mouseButtons = e.buttons & 7;
     if (run) run.mouse(x, y, mouseButtons);
   });
-  canvas.addEventListener('mousedown', (e) => {
+  canvas.addEventListener('pointerdown', (e) => {
     const [x, y] = screenPoint(e);
     const bits = e.button === 0 ? 1 : e.button === 2 ? 2 : 4;
     mouseButtons = (e.buttons & 7) | bits;
     if (run) run.click(x, y, mouseButtons);
   });
-  canvas.addEventListener('mouseup', (e) => {
+  canvas.addEventListener('pointerup', (e) => {
     const [x, y] = screenPoint(e);
     mouseButtons = e.buttons & 7;
     if (run) run.mouse(x, y, mouseButtons);
@@ -882,7 +899,7 @@
   });
 
   // ---------------------------------------------------------------- start
-  window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash,
+  window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash, screen: canvas,
     get source() { return editor.value; },
     get running() { return run !== null; }, ready: null};
   // Offline once loaded: the service worker keeps the site's files (web/sw.js). Browsers run

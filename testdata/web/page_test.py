@@ -29,8 +29,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from replay_browser import CANVAS_JS as REPLAY_CANVAS_JS  # noqa: E402
 from replay_browser import Browser, Failure, expect, find_chromium, first_difference, read_png  # noqa: E402
 
-# The canvas as RGB (__rgb, __b64: replay_browser.py's), and a PNG data URL's pixels as RGB.
-CANVAS_JS = REPLAY_CANVAS_JS + """
+# The screen's pixels as RGB (__rgb, __b64: replay_browser.py's, from the page's 800x600 screen,
+# which its canvas shows scaled), and a PNG data URL's pixels as RGB.
+CANVAS_JS = REPLAY_CANVAS_JS.replace("document.getElementById('screen')", "rbPage.screen") + """
 window.__pngRgb = async (url) => {
   const img = new Image();
   img.src = url;
@@ -501,11 +502,67 @@ def case_debugger(env):
     env.expect_quiet()
 
 
+def case_screen(env):
+    """The screen stays readable at 1366x768 (the screen shown smaller than its 800x600): every
+    1-pixel line is still seen, each row of it, as it is not when the shown pixels are the
+    nearest of the screen's; Larger gives the screen more room and Full screen the whole
+    display."""
+    b = env.browser
+    b.call("Emulation.setDeviceMetricsOverride", {"width": 1366, "height": 768, "deviceScaleFactor": 1, "mobile": False},
+           session=True)
+    env.open()
+    xs, ys = list(range(100, 256, 6)), list(range(420, 576, 6))
+    prog = "".join(f"line {x}, 100, {x}, 400\n" for x in xs) + "".join(f"line 300, {y}, 700, {y}\n" for y in ys)
+    r = env.run_page(prog)
+    expect(r["status"] == "finished", f"the lines ended {r}")
+    box = b.js("(() => { const c = document.getElementById('screen'), r = c.getBoundingClientRect(); "
+               "return {left: r.left + c.clientLeft, top: r.top + c.clientTop, w: c.clientWidth, h: c.clientHeight}; })()")
+    scale = min(box["w"] / 800, box["h"] / 600)
+    expect(scale < 0.95, f"the screen is shown at {scale:.2f}: nothing to test at this size")
+    ox = box["left"] + (box["w"] - 800 * scale) / 2
+    oy = box["top"] + (box["h"] - 600 * scale) / 2
+    width, height, rgb = b.screenshot(1366, 768)
+
+    def grey(px, py):
+        i = (py * width + px) * 3
+        return (rgb[i] + rgb[i + 1] + rgb[i + 2]) // 3
+
+    lost = []
+    for x in xs:  # each row of each vertical line has a dark pixel where the line is
+        cols = range(int(ox + x * scale) - 1, int(ox + (x + 1) * scale) + 2)
+        rows = range(int(oy + 100 * scale) + 2, int(oy + 400 * scale) - 2)
+        faint = [py for py in rows if min(grey(px, py) for px in cols) > 200]
+        if faint:
+            lost.append(f"x={x}: {len(faint)} of {len(rows)} rows")
+    for y in ys:
+        rows = range(int(oy + y * scale) - 1, int(oy + (y + 1) * scale) + 2)
+        cols = range(int(ox + 300 * scale) + 2, int(ox + 700 * scale) - 2)
+        faint = [px for px in cols if min(grey(px, py) for py in rows) > 200]
+        if faint:
+            lost.append(f"y={y}: {len(faint)} of {len(cols)} columns")
+    expect(not lost, f"at scale {scale:.3f} lines fade out: {'; '.join(lost)}")
+    # Larger: more room; Full screen: the whole display.
+    before = b.js("document.getElementById('screen').clientWidth")
+    b.js("document.getElementById('larger').click(); true")
+    wait_for(b, f"document.getElementById('screen').clientWidth > {before} + 100", "Larger left the screen as it was")
+    b.js("document.getElementById('larger').click(); true")
+    cx, cy = b.js("(() => { const r = document.getElementById('fullscreen').getBoundingClientRect(); "
+                  "return [r.left + r.width / 2, r.top + r.height / 2]; })()")
+    for kind in ("mousePressed", "mouseReleased"):
+        b.call("Input.dispatchMouseEvent", {"type": kind, "x": cx, "y": cy, "button": "left", "clickCount": 1}, session=True)
+    wait_for(b, "document.fullscreenElement && document.fullscreenElement.id === 'screenBox' && "
+                "document.getElementById('screen').clientHeight >= innerHeight - 2", "Full screen did not fill the display")
+    b.js("document.exitFullscreen().then(() => true)")
+    env.expect_quiet()
+
+
 def client_point(b, x, y):
-    """The page coordinates of screen pixel (x, y)'s centre on the scaled canvas."""
-    return b.js(f"(() => {{ const r = document.getElementById('screen').getBoundingClientRect(); "
-                f"const s = Math.min(r.width / 800, r.height / 600); "
-                f"return [r.left + (r.width - 800 * s) / 2 + {x + 0.5} * s, r.top + (r.height - 600 * s) / 2 + {y + 0.5} * s]; }})()")
+    """The page coordinates of screen pixel (x, y)'s centre on the scaled canvas (the picture
+    fitted in the canvas's content box)."""
+    return b.js(f"(() => {{ const c = document.getElementById('screen'), r = c.getBoundingClientRect(); "
+                f"const w = c.clientWidth, h = c.clientHeight, s = Math.min(w / 800, h / 600); "
+                f"return [r.left + c.clientLeft + (w - 800 * s) / 2 + {x + 0.5} * s, "
+                f"r.top + c.clientTop + (h - 600 * s) / 2 + {y + 0.5} * s]; }})()")
 
 
 def click(b, x, y):
@@ -743,7 +800,7 @@ def case_svg(env):
     env.expect_quiet()
 
 
-CASES = {"never_frozen": case_never_frozen, "debugger": case_debugger, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share, "programs": case_programs,
+CASES = {"never_frozen": case_never_frozen, "debugger": case_debugger, "screen": case_screen, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share, "programs": case_programs,
          "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial, "offline": case_offline}
 
 

@@ -330,7 +330,9 @@ void WebHost::wait(double ms) {
     return;
   }
   flushOutput();
-  present();
+  // The screen as it is, unless the page has not drawn the frame before (robot motion sleeps
+  // every few milliseconds: the page gets frames as fast as it draws them, no faster).
+  present(false);
   // In pieces, so that a Stop during a long delay ends it within one piece.
   while (sleepDebtMs_ > 0 && !stopRequested()) {
     double piece = std::min(sleepDebtMs_, 50.0);
@@ -339,6 +341,7 @@ void WebHost::wait(double ms) {
     sleepDebtMs_ -= wallSeconds() * 1000 - before;
     afterPage();
     pauseInside();
+    if (sleepDebtMs_ > 0) present(false);  // a frame the page was not ready for before
   }
   sleepDebtMs_ = 0;
   lastYieldMs_ = lastFrameMs_ = wallSeconds() * 1000;
