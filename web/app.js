@@ -796,6 +796,7 @@
   let latest = null;  // the last run started (its SVG comes after its end)
   async function runProgram() {
     if (run) return;
+    clearTimeout(checkTimer);  // the end of the run checks the text
     lastSvg = null;
     clearOutput();
     nextFrame = null;
@@ -848,8 +849,15 @@
     nextFrame = null;
     if (result.frame) drawFrame(result.frame);
     const secs = ((performance.now() - started) / 1000).toFixed(2);
-    // The diagnostics again (the text may have changed during the run).
-    if (result.status !== 'rejected') rb.check(editor.value).then(listDiagnostics);
+    // The diagnostics again (the text may have changed during the run), and a runtime error
+    // marked at its place among them.
+    const ran = editor.value;
+    if (result.status !== 'rejected') {
+      rb.check(ran).then((list) => {
+        if (editor.value !== ran) return listDiagnostics(list);
+        listDiagnostics(result.errorDiagnostic ? [result.errorDiagnostic, ...list] : list);
+      });
+    }
     const printed = output.textContent;
     if (result.status === 'rejected') {
       listDiagnostics(result.diagnostics);

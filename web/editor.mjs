@@ -72,9 +72,18 @@ window.RbEditor = {
       EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),
     ];
     const view = new EditorView({parent, state: EditorState.create({doc, extensions})});
+    // rb's columns count the line's UTF-8 bytes (1-based); the editor's positions count UTF-16
+    // code units: a line with "é" or "ü" before the column puts them apart.
     const pos = (line, col) => {
       const l = view.state.doc.line(Math.min(Math.max(1, line), view.state.doc.lines));
-      return Math.min(l.to, l.from + Math.max(0, (col || 1) - 1));
+      let bytes = Math.max(0, (col || 1) - 1), i = 0;
+      const text = l.text;
+      while (bytes > 0 && i < text.length) {
+        const c = text.codePointAt(i);
+        bytes -= c < 0x80 ? 1 : c < 0x800 ? 2 : c < 0x10000 ? 3 : 4;
+        i += c >= 0x10000 ? 2 : 1;
+      }
+      return Math.min(l.to, l.from + i);
     };
     return {
       view,

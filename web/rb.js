@@ -214,6 +214,7 @@
     else if (result.status === 'rejected') error = errors.map((d) => d.text).join('');
     return Object.assign(result, {
       output,
+      errorDiagnostic: result.error && result.error.line ? result.error : null,
       error,
       errorLine: result.error ? result.error.line : errors.length ? errors[0].line : null,
       frame,

@@ -179,6 +179,7 @@ std::string Interpreter::slotName(uint32_t op) const {
 // ---------------------------------------------------------------- errors (cold)
 
 RB_COLD void Interpreter::undefined(uint32_t op) const {
+  undefinedOp_ = op;
   std::string name = slotName(op);
   if (name.empty()) throw RuntimeError("a value is missing");
   // Did you mean a variable that has a value (as rb check suggests, now from what ran)?
@@ -446,6 +447,7 @@ RunResult Interpreter::run(const RunLimits& limits) {
   bases_.set(Base::Frame, stack_.data());
   bases_.set(Base::Const, const_cast<Value*>(prog_.constants.data()));
   errorPc_ = kNoPc;
+  undefinedOp_ = kNoOperand;
   stepsDone_ = 0;
   chunk_ = std::max<int64_t>(1, limits_.checkInterval);
   if (limits_.maxSteps && static_cast<uint64_t>(chunk_) > limits_.maxSteps)
@@ -493,6 +495,7 @@ RunResult Interpreter::run(const RunLimits& limits) {
     } else {
       result.status = RunStatus::RuntimeError;
       SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
+      if (undefinedOp_ != kNoOperand) loc = variableReadNear(loc, undefinedOp_);
       result.error = Diagnostic{Severity::Error, loc, e.message(), e.code()};
       result.error->notes = callChain();
     }
@@ -512,6 +515,20 @@ RunResult Interpreter::run(const RunLimits& limits) {
   if (result.status == RunStatus::RuntimeError) counted += statementsBegun(pc);
   result.steps = counted < 0 ? 0 : static_cast<uint64_t>(counted);
   return result;
+}
+
+SourceLoc Interpreter::variableReadNear(SourceLoc at, uint32_t op) const {
+  SourceLoc best = at;
+  uint32_t bestDistance = UINT32_MAX;
+  for (const Program::VariableRead& r : prog_.variableReads) {
+    if (r.loc.file != at.file || r.loc.line != at.line || runOperand(r.operand) != op) continue;
+    const uint32_t distance = r.loc.col > at.col ? r.loc.col - at.col : at.col - r.loc.col;
+    if (distance < bestDistance) {
+      best = r.loc;
+      bestDistance = distance;
+    }
+  }
+  return best;
 }
 
 int64_t Interpreter::statementsBegun(uint32_t pc) const {

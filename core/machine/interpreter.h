@@ -147,6 +147,9 @@ class Interpreter {
   std::vector<Diagnostic> callChain() const;
   /// Line instructions from the last control transfer before `pc` up to `pc` (see run()).
   int64_t statementsBegun(uint32_t pc) const;
+  /// Where the program reads variable `op` on the line of `at`, nearest `at` (an error about
+  /// the variable points there); `at` when the compiler noted none.
+  SourceLoc variableReadNear(SourceLoc at, uint32_t op) const;
   std::string slotName(uint32_t op) const;
   Value& arrayOperand(uint32_t op);
   size_t elementOffset(ArrObj& a, uint32_t arrOp, const Value* idx, uint32_t n);
@@ -177,6 +180,8 @@ class Interpreter {
   /// Where a runtime error being thrown belongs when that is not the current instruction (a
   /// sub that returned no value to an expression: the call's instruction); kNoPc otherwise.
   uint32_t errorPc_ = kNoPc;
+  /// The variable a runtime error says has no value (undefined()), or kNoOperand.
+  mutable uint32_t undefinedOp_ = kNoOperand;
 
   RunLimits limits_;
   uint64_t stepsDone_ = 0;   ///< steps counted before the current chunk

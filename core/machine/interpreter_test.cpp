@@ -20,9 +20,9 @@ TEST_CASE("a program runs in-process with a test host", "[interpreter]") {
   auto o = runProgram("for i = 1 to 3\n  s = s + i\nnext\n");
   CHECK(o.loaded);
   CHECK(o.diagnostics ==
-        "test.bas:2:9: error: variable 's' is used before it is given a value [rb-runtime-error]\n"
+        "test.bas:2:7: error: variable 's' is used before it is given a value [rb-runtime-error]\n"
         "    2 |   s = s + i\n"
-        "      |         ^\n");
+        "      |       ^\n");
   auto ok = runProgram("s = 0\nfor i = 1 to 3\n  s = s + i\nnext\nprint s\n");
   CHECK(ok.out == "6\n");
   CHECK(ok.result.status == RunStatus::Finished);
@@ -282,6 +282,22 @@ TEST_CASE("finished code runs as the plain code does: output, errors and every s
       CHECK(c.result.steps == b.result.steps);
     }
   }
+}
+
+TEST_CASE("a variable with no value is reported at its name, where rb check warns", "[interpreter]") {
+  auto o = runProgram("x = 1\nprint x + zz\n");
+  CHECK(o.result.status == RunStatus::RuntimeError);
+  REQUIRE(o.result.error);
+  CHECK(o.result.error->loc.line == 2);
+  CHECK(o.result.error->loc.col == 11);  // zz, not the + at 9
+  // The same name twice on a line: the reading nearest the operator that failed.
+  auto twice = runProgram("y = 2\nprint (y - 1) * (q + q)\n");
+  REQUIRE(twice.result.error);
+  CHECK(twice.result.error->loc.col == 18);
+  // Other errors stay at their operator.
+  auto zero = runProgram("x = 0\nprint 3 / x\n");
+  REQUIRE(zero.result.error);
+  CHECK(zero.result.error->loc.col == 9);
 }
 
 TEST_CASE("a runtime error in line-traced code counts the statements begun", "[interpreter]") {

@@ -414,6 +414,16 @@ def case_error_line(env):
     expect(listed == ["2"], f"the errors listed are at lines {listed}")
     marked = b.js("document.querySelectorAll('.cm-lint-marker-error').length")
     expect(marked == 1, f"the gutter marks {marked} errors")
+    # A variable with no value: the runtime error is marked where rb check's warning is, on the
+    # name (not the operator), and both where the name is on a line with accents before it (rb's
+    # columns count UTF-8 bytes, the editor's UTF-16 code units).
+    r = env.run_page('s = "héllo wörld" + zz\nprint s\n')
+    expect(r["status"] == "error" and "program.bas:1:23:" in r["error"], f"the error is {r['error']!r}")
+    listed = "[...document.querySelectorAll('#diagnostics li')].map((e) => e.textContent.split(': ').slice(0, 2).join(' '))"
+    wait_for(b, f"{listed}.length === 2", "the error and the warning are not both listed")
+    expect(b.js(listed) == ["1:23 error", "1:23 warning"], f"the error and the warning are listed at {b.js(listed)}")
+    marks = "[...document.querySelectorAll('.cm-lintRange')].map((e) => e.textContent)"
+    expect(b.js(marks) == ["z"], f"the editor marks {b.js(marks)}, not the name")
     # The same limits as rb run: --max-steps.
     r = b.js("rb.run('while 1\\nwend\\n', {maxSteps: 1000}).then((r) => r.error)")
     expect("stopped after 1000 steps (the --max-steps limit)" in r, f"the step limit said {r!r}")
