@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -291,7 +292,9 @@ class Grader {
   const std::string& sourceOf(size_t index) const { return index == SIZE_MAX ? solutionSource_ : sources_[index]; }
   RunOutcome collect(const Task& task, const JobOutcome& outcome) const;
   void finishProgram(size_t index);
-  void writePicture(ProgramResult& result, const std::vector<RunOutcome>& runs);
+  /// `screen`: the first run's final screen as an image (made once, when first asked for).
+  void writePicture(ProgramResult& result, const std::vector<RunOutcome>& runs,
+                    const std::function<std::shared_ptr<const render::RgbImage>()>& screen);
   std::string describeProcess(const JobOutcome& o, const Job& job) const;
   LimitNames commentLimits(const CommentSpec& spec) const;
   FilteredArgs commentArgs(const CommentSpec& spec, const std::string& program) const;
@@ -330,7 +333,8 @@ class Grader {
   std::vector<std::optional<CommentSpec>> specs_;
   std::vector<std::vector<RunOutcome>> runs_;
   std::vector<size_t> pending_;  ///< runs still to come, per program
-  std::optional<render::RgbImage> solutionImage_;  ///< the solution's screen, for pictures
+  std::shared_ptr<const render::RgbImage> solutionImage_;  ///< the solution's screen, for pictures
+  PicturePainter painter_;  ///< the pictures' fonts, loaded once
   size_t finished_ = 0, toGrade_ = 0;
 };
 
@@ -1079,11 +1083,16 @@ void Grader::finishProgram(size_t index) {
   if (first.record) r.marks = lineMarks(*first.record, r.program);
   // A program that did not compile (or run) has no picture: there is nothing of its own to show.
   const bool ran = first.record && first.record->status != "rejected" && first.record->status != "not-run";
-  if (!opts_.picturesDir.empty() && ran) writePicture(r, runs);
+  std::shared_ptr<const render::RgbImage> shown;  // the first run's final screen, made once
+  auto screenImage = [&]() {
+    if (!shown && first.screen) shown = std::make_shared<const render::RgbImage>(imageOf(*first.screen));
+    return shown;
+  };
+  if (!opts_.picturesDir.empty() && ran) writePicture(r, runs, screenImage);
   if (opts_.screens && !opts_.picturesDir.empty() && first.screen && ran) {
     fs::path to = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".screen.png");
     std::string error;
-    if (render::writePngFile(to.string(), halfSize(imageOf(*first.screen)), error)) r.screen = to.string();
+    if (render::writePngFile(to.string(), halfSize(*screenImage()), error)) r.screen = to.string();
     else result_.writeErrors.push_back(error);
   }
   if (!first.replayFile.empty()) {
@@ -1102,14 +1111,15 @@ void Grader::finishProgram(size_t index) {
   if (opts_.progress) opts_.progress(finished_, toGrade_);
 }
 
-void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs) {
+void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs,
+                          const std::function<std::shared_ptr<const render::RgbImage>()>& screen) {
   const RunOutcome& run = runs[0];
   if (!run.record) return;
   PictureInput in;
   in.student = run.record->trail;
   in.robotRadius = run.record->radius;
   in.studentView = opts_.studentPictures;
-  if (run.screen) in.studentScreen = imageOf(*run.screen);
+  if (run.screen && opts_.studentPictures) in.studentScreen = screen();
   in.title = fs::path(r.program).filename().string() + (r.student.empty() ? "" : " (" + r.student + ")");
   if (run.record->located) in.studentEnd = run.record->pos;
   in.studentPath = run.record->path;
@@ -1118,12 +1128,12 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
     in.reference = sol.trail;
     if (sol.located) in.referenceEnd = sol.pos;
     if (refs_.solution[0].screen && !opts_.studentPictures) {
-      if (!solutionImage_) solutionImage_ = imageOf(*refs_.solution[0].screen);
+      if (!solutionImage_) solutionImage_ = std::make_shared<const render::RgbImage>(imageOf(*refs_.solution[0].screen));
       in.background = solutionImage_;
     }
   } else if (assignment_) {
     // No solution to compare with: the program's own screen behind its path (the world's walls).
-    if (run.screen && !opts_.studentPictures) in.background = imageOf(*run.screen);
+    if (run.screen && !opts_.studentPictures) in.background = screen();
     for (const Check* c : allChecks(*assignment_))
       if (c->kind == Check::Trail) {
         in.reference = c->reference;
@@ -1148,9 +1158,9 @@ void Grader::writePicture(ProgramResult& r, const std::vector<RunOutcome>& runs)
   }
   fs::path out = fs::path(opts_.picturesDir) / fs::path(r.name).replace_extension(".png");
   std::string error;
-  if (render::writePngFile(out.string(), feedbackPicture(in), error)) {
+  if (render::writePngFile(out.string(), painter_.picture(in), error)) {
     r.picture = out.string();
-    std::vector<std::string> drawn = legendEntries(in);
+    std::vector<std::string> drawn = painter_.legend(in);
     r.pictureCaption = "Drawn: ";
     for (size_t i = 0; i < drawn.size(); ++i) r.pictureCaption += (i ? "; " : "") + drawn[i];
     r.pictureCaption += drawn.empty() ? "nothing but the screen." : ".";

@@ -36,6 +36,22 @@ std::string verdictText(const std::string& verdict) {
   return verdict;
 }
 
+/// A verdict as a symbol and a word, never a colour alone: the symbol is for the eye (screen
+/// readers skip it), the word for everyone.
+std::string verdictBadge(const std::string& verdict) {
+  const char* symbol = verdict == "pass" ? "&#10003;" : verdict == "skip" ? "&#8211;" : "&#10007;";
+  return "<span class=\"verdict " + htmlEscape(verdict) + "\"><span aria-hidden=\"true\">" + symbol + " </span>" +
+         verdictText(verdict) + "</span>";
+}
+
+/// A check's mark: a symbol and a word (passed, failed, not checked).
+std::string checkMark(const CheckResult& c) {
+  const char* mark = !c.checked ? "&#8211;" : c.passed ? "&#10003;" : "&#10007;";
+  const char* word = !c.checked ? "not checked" : c.passed ? "passed" : "failed";
+  return std::string("<span class=\"mark\" aria-hidden=\"true\">") + mark + "</span> <span class=\"word\">" + word +
+         "</span> ";
+}
+
 std::string displayName(const ProgramResult& p) {
   return p.student.empty() ? p.program : p.student;
 }
@@ -57,7 +73,7 @@ std::string head(const std::string& title, const std::string& nonce, const char*
 }
 
 const char* kCommonStyle = R"(
-:root { color-scheme: light; --pass: #1b7f3b; --fail: #b3261e; --other: #6b6b6b; }
+:root { color-scheme: light; --pass: #1b7f3b; --fail: #b3261e; --other: #6b6b6b; --focus: #0b57d0; }
 body { font: 15px/1.4 system-ui, sans-serif; margin: 0; background: #f4f4f2; color: #1d1d1d; }
 header { background: #20313f; color: #fff; padding: 12px 20px; }
 header h1 { margin: 0 0 4px; font-size: 22px; }
@@ -69,15 +85,19 @@ ul.checks { list-style: none; padding: 0; margin: 6px 0 0; font-size: 13px; }
 ul.checks li { display: flex; gap: 6px; }
 ul.checks li .pts { margin-left: auto; color: #555; white-space: nowrap; }
 .mark { display: inline-block; width: 1.1em; text-align: center; font-weight: 700; }
-li.pass .mark, tr.pass .mark { color: var(--pass); }
-li.fail .mark, tr.fail .mark { color: var(--fail); }
+.word { font-size: 12px; }
+li.pass .mark, tr.pass .mark, tr.pass .word { color: var(--pass); }
+li.fail .mark, tr.fail .mark, tr.fail .word { color: var(--fail); }
 li.unchecked .mark, tr.unchecked .mark { color: var(--other); }
+:focus-visible { outline: 3px solid var(--focus); outline-offset: 2px; }
+header :focus-visible { outline-color: #ffd33d; }
 )";
 
 const char* kClassStyle = R"(
 #controls { display: flex; flex-wrap: wrap; gap: 10px 18px; align-items: center; padding: 10px 20px;
             background: #e6e9ec; border-bottom: 1px solid #cdd2d6; position: sticky; top: 0; z-index: 1; }
 #controls input[type=number] { width: 5em; }
+@media (max-height: 500px) { #controls { position: static; } }
 #cards { display: grid; grid-template-columns: repeat(auto-fill, minmax(230px, 1fr)); gap: 14px; padding: 16px 20px; }
 .card { background: #fff; border: 1px solid #d4d4d0; border-radius: 6px; padding: 10px; overflow-wrap: anywhere;
         content-visibility: auto; contain-intrinsic-size: auto 560px; }
@@ -88,7 +108,7 @@ const char* kClassStyle = R"(
 .card a.open:hover h2 { text-decoration: underline; }
 .card img, .card .noimage { width: 100%; aspect-ratio: 4 / 3; height: auto; display: block; background: #fafafa;
                             border: 1px solid #e2e2e2; }
-.card .noimage { display: flex; align-items: center; justify-content: center; color: #888; font-size: 13px; }
+.card .noimage { display: flex; align-items: center; justify-content: center; color: #595959; font-size: 13px; }
 .card h2 { font-size: 16px; margin: 8px 0 0; }
 .card .file { color: #555; font-size: 12px; margin: 0; }
 .card .result { margin: 6px 0 0; display: flex; gap: 8px; align-items: center; }
@@ -108,11 +128,11 @@ table.checks .feedback { white-space: pre-wrap; font-family: ui-monospace, monos
 figure { display: inline-block; margin: 0 16px 16px 0; vertical-align: top; max-width: calc(50% - 16px); }
 figure img { max-width: 100%; border: 1px solid #ccc; background: #fff; }
 figcaption { font-size: 13px; color: #444; }
-iframe.replay { width: 100%; height: 820px; border: 1px solid #ccc; background: #fff; }
+iframe.replay { width: 100%; height: 820px; max-height: 90vh; border: 1px solid #ccc; background: #fff; }
 pre, .source { background: #fff; border: 1px solid #ddd; padding: 8px; overflow-x: auto; font: 13px/1.45 ui-monospace, monospace;
                white-space: pre; tab-size: 4; margin: 0; }
 .source .l { display: block; }
-.source .n { display: inline-block; width: 4em; color: #999; text-align: right; margin-right: 1em; user-select: none; }
+.source .n { display: inline-block; width: 4em; color: #6b6b6b; text-align: right; margin-right: 1em; user-select: none; }
 .source .l.bad { background: #fde3e1; }
 .source .l.bad .n { color: var(--fail); font-weight: 700; }
 .source .msg { display: block; color: var(--fail); padding-left: 5em; white-space: pre-wrap; font-style: italic; }
@@ -212,8 +232,7 @@ std::string card(const ClassResult& r, size_t i, const std::string& page, const 
   out += "<h2>" + htmlEscape(name) + "</h2>";
   if (!p.student.empty()) out += "<p class=\"file\">" + htmlEscape(p.program) + "</p>";
   out += page.empty() ? "</div>\n" : "</a>\n";
-  out += "<p class=\"result\"><span class=\"verdict " + htmlEscape(p.verdict) + "\">" + verdictText(p.verdict) +
-         "</span>";
+  out += "<p class=\"result\">" + verdictBadge(p.verdict);
   if (r.assignment) out += "<span class=\"points\">" + number(p.points) + " / " + number(p.maxPoints) + "</span>";
   out += "</p>\n";
   std::string reason = shownReason(p, r.studentView);
@@ -224,10 +243,9 @@ std::string card(const ClassResult& r, size_t i, const std::string& page, const 
     for (const CheckResult& raw : p.checks) {
       CheckResult c = shownCheck(raw, r.studentView);
       const char* cls = !c.checked ? "unchecked" : c.passed ? "pass" : "fail";
-      const char* mark = !c.checked ? "&#8211;" : c.passed ? "&#10003;" : "&#10007;";
-      out += "<li class=\"" + std::string(cls) + "\" title=\"" + htmlEscape(c.message) + "\"><span class=\"mark\">" +
-             mark + "</span><span class=\"name\">" + htmlEscape(c.name) + "</span>";
-      if (r.assignment) out += "<span class=\"pts\">" + number(c.earned) + "/" + number(c.points) + "</span>";
+      out += "<li class=\"" + std::string(cls) + "\" title=\"" + htmlEscape(c.message) + "\">" + checkMark(c) +
+             "<span class=\"name\">" + htmlEscape(c.name) + "</span>";
+      if (r.assignment) out += " <span class=\"pts\">" + number(c.earned) + "/" + number(c.points) + "</span>";
       out += "</li>";
     }
     out += "</ul>\n";
@@ -295,7 +313,7 @@ std::string classPage(const ClassResult& r, const std::vector<std::string>& page
   out += "</select></label>\n<label>Sort by <select id=\"sort\"><option value=\"file\">file</option>"
          "<option value=\"name\">name</option><option value=\"points-desc\">points, most first</option>"
          "<option value=\"points-asc\">points, fewest first</option><option value=\"result\">result, failed "
-         "first</option></select></label>\n<span id=\"shown\"></span>\n</div>\n<main id=\"cards\">\n";
+         "first</option></select></label>\n<span id=\"shown\" role=\"status\"></span>\n</div>\n<main id=\"cards\">\n";
   for (size_t i = 0; i < r.programs.size(); ++i) out += card(r, i, i < pages.size() ? pages[i] : "", dir);
   out += "</main>\n<script nonce=\"" + nonce + "\">" + kClassScript + "</script>\n</body>\n</html>\n";
   return out;
@@ -310,7 +328,7 @@ std::string programPage(const ClassResult& r, size_t index, const std::string* s
   out += "<body>\n<header><p><a href=\"../index.html\" id=\"back\">&#8592; " + htmlEscape(r.title) +
          ": the class</a></p><h1>" + htmlEscape(name) + "</h1><p>";
   if (!p.student.empty()) out += htmlEscape(p.program) + " &#183; ";
-  out += "<span class=\"verdict " + htmlEscape(p.verdict) + "\">" + verdictText(p.verdict) + "</span>";
+  out += verdictBadge(p.verdict);
   if (r.assignment) out += " &#183; " + number(p.points) + " of " + number(p.maxPoints) + " points";
   bool ran = p.verdict != "skip" && p.verdict != "missing" && !(p.checks.empty() && p.verdict == "fail");
   if (ran) {
@@ -329,14 +347,13 @@ std::string programPage(const ClassResult& r, size_t index, const std::string* s
     out += "</section>\n";
   }
   if (!p.checks.empty()) {
-    out += "<section id=\"checks\"><h2>Checks</h2>\n<table class=\"checks\"><tr><th></th><th>check</th>";
+    out += "<section id=\"checks\"><h2>Checks</h2>\n<table class=\"checks\"><tr><th>result</th><th>check</th>";
     if (r.assignment) out += "<th>points</th>";
     out += "<th>what rb found</th></tr>\n";
     for (const CheckResult& raw : p.checks) {
       CheckResult c = shownCheck(raw, r.studentView);
       const char* cls = !c.checked ? "unchecked" : c.passed ? "pass" : "fail";
-      const char* mark = !c.checked ? "&#8211;" : c.passed ? "&#10003;" : "&#10007;";
-      out += "<tr class=\"" + std::string(cls) + "\"><td><span class=\"mark\">" + mark + "</span></td><td>" +
+      out += "<tr class=\"" + std::string(cls) + "\"><td>" + checkMark(c) + "</td><td>" +
              htmlEscape(c.name) + (c.hidden ? " (hidden)" : "") + (c.required ? " (required)" : "") + "</td>";
       if (r.assignment) out += "<td>" + number(c.earned) + " / " + number(c.points) + "</td>";
       out += "<td>" + htmlEscape(c.message);
@@ -381,7 +398,7 @@ std::string programPage(const ClassResult& r, size_t index, const std::string* s
     out += p.verdict == "missing" ? "<p>No submission.</p>\n"
                                   : "<p>" + htmlEscape(p.program) + " could not be read.</p>\n";
   } else {
-    out += "<div class=\"source\">";
+    out += "<div class=\"source\" tabindex=\"0\" role=\"region\" aria-label=\"source\">";
     std::string text = source->substr(0, kSourceCap);
     size_t line = 1, mark = 0;
     for (size_t at = 0; at < text.size() || line == 1;) {
@@ -407,12 +424,16 @@ std::string programPage(const ClassResult& r, size_t index, const std::string* s
   if (!p.output.empty()) {
     out += "<section id=\"output\"><h2>Output</h2>\n";
     if (!p.inputs.empty()) out += "<p>&gt; marks a line where input showed its prompt and read [text].</p>\n";
-    out += "<pre>" + htmlEscape(outputTranscript(p)) + "</pre></section>\n";
+    out += "<pre tabindex=\"0\" role=\"region\" aria-label=\"output\">" + htmlEscape(outputTranscript(p)) +
+           "</pre></section>\n";
   }
-  if (!p.errors.empty()) out += "<section id=\"errors\"><h2>Error output</h2>\n<pre>" + htmlEscape(p.errors) + "</pre></section>\n";
+  if (!p.errors.empty())
+    out += "<section id=\"errors\"><h2>Error output</h2>\n<pre tabindex=\"0\" role=\"region\" aria-label=\"error "
+           "output\">" + htmlEscape(p.errors) + "</pre></section>\n";
   if (p.verdict != "missing" && p.verdict != "skip")
     out += "<section id=\"feedback\"><h2>Feedback for the student</h2>\n<p>What rb test --feedback writes for "
-           "this program.</p>\n<pre>" + htmlEscape(studentFeedback(p, r)) + "</pre></section>\n";
+           "this program.</p>\n<pre tabindex=\"0\" role=\"region\" aria-label=\"feedback\">" +
+           htmlEscape(studentFeedback(p, r)) + "</pre></section>\n";
   out += "</main>\n</body>\n</html>\n";
   return out;
 }

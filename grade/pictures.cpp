@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <string_view>
+#include <unordered_set>
 
 #include "screen/font.h"
 #include "text.h"
@@ -65,11 +68,16 @@ constexpr Box kLegendBox{0, kArena, kWidth - 1, kHeight - 1};
 /// How much of each pixel one layer of the picture covers (0..1), before it is painted in one
 /// colour. A shape made of pieces (a trail's segments) is covered once, so its anti-aliased
 /// edges do not darken where the pieces overlap. Nothing outside `clip` is ever covered: the
-/// arena's drawing never spills into the legend.
+/// arena's drawing never spills into the legend. The amounts are kept in tiles of 32 x 32
+/// pixels made when something first covers them: a layer is mostly empty (a trail, a ring), and
+/// a picture has a dozen layers, which as whole arrays cost more in fresh pages than in drawing.
 class Coverage {
  public:
-  explicit Coverage(Box clip)
-      : clip_(clip), a_(clip.empty() ? 0 : static_cast<size_t>(clip.width()) * static_cast<size_t>(clip.height()), 0.0F) {}
+  explicit Coverage(Box clip) : clip_(clip) {
+    if (clip.empty()) return;
+    tilesX_ = (clip.width() + kTile - 1) / kTile;
+    tiles_.resize(static_cast<size_t>(tilesX_) * static_cast<size_t>((clip.height() + kTile - 1) / kTile));
+  }
 
   const Box& clip() const { return clip_; }
   /// The pixels a shape may cover, given its bounds in picture coordinates.
@@ -78,7 +86,9 @@ class Coverage {
   }
   void cover(int x, int y, double amount) {
     if (amount <= 0 || x < clip_.x0 || x > clip_.x1 || y < clip_.y0 || y > clip_.y1) return;
-    float& p = a_[index(x, y)];
+    std::unique_ptr<float[]>& tile = tiles_[tileOf(x, y)];
+    if (!tile) tile = std::make_unique<float[]>(kTile * kTile);  // zeroed
+    float& p = tile[cellOf(x, y)];
     p = std::max(p, static_cast<float>(std::min(amount, 1.0)));
     if (dirty_.empty()) {
       dirty_ = {x, y, x, y};
@@ -87,32 +97,28 @@ class Coverage {
       dirty_.y0 = std::min(dirty_.y0, y), dirty_.y1 = std::max(dirty_.y1, y);
     }
   }
-  double at(int x, int y) const { return a_[index(x, y)]; }
   /// Every pixel within one pixel of a covered one (a halo around text).
   Coverage grown() const {
     Coverage g(clip_);
-    for (int y = dirty_.y0; y <= dirty_.y1; ++y)
-      for (int x = dirty_.x0; x <= dirty_.x1; ++x)
-        if (at(x, y) > 0)
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) g.cover(x + dx, y + dy, 1);
+    visit(dirty_, [&](int x, int y, float a) {
+      if (a > 0)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) g.cover(x + dx, y + dy, 1);
+    });
     return g;
   }
   /// Paints the covered pixels in `colour`, `opacity` of the way over what is there.
   void paint(render::RgbImage& img, uint32_t colour, double opacity = 1) const {
-    for (int y = dirty_.y0; y <= dirty_.y1; ++y)
-      for (int x = dirty_.x0; x <= dirty_.x1; ++x) {
-        double a = at(x, y) * opacity;
-        if (a <= 0) continue;
-        img.set(x, y, a >= 1 ? colour : mix(img.pixel(x, y), colour, a));
-      }
+    visit(dirty_, [&](int x, int y, float amount) {
+      double a = amount * opacity;
+      if (a <= 0) return;
+      img.set(x, y, a >= 1 ? colour : mix(img.pixel(x, y), colour, a));
+    });
   }
   /// How many covered pixels `box` holds (where a label would hide something).
   int count(const Box& box) const {
-    Box b = box.clipped(clip_);
     int n = 0;
-    for (int y = b.y0; y <= b.y1; ++y)
-      for (int x = b.x0; x <= b.x1; ++x) n += at(x, y) > 0.25 ? 1 : 0;
+    visit(box.clipped(clip_), [&](int, int, float a) { n += a > 0.25 ? 1 : 0; });
     return n;
   }
 
@@ -125,12 +131,34 @@ class Coverage {
   }
 
  private:
-  size_t index(int x, int y) const {
-    return static_cast<size_t>(y - clip_.y0) * static_cast<size_t>(clip_.width()) + static_cast<size_t>(x - clip_.x0);
+  static constexpr int kTile = 32;
+  size_t tileOf(int x, int y) const {
+    return static_cast<size_t>((y - clip_.y0) / kTile) * static_cast<size_t>(tilesX_) +
+           static_cast<size_t>((x - clip_.x0) / kTile);
+  }
+  size_t cellOf(int x, int y) const {
+    return static_cast<size_t>((y - clip_.y0) % kTile) * kTile + static_cast<size_t>((x - clip_.x0) % kTile);
+  }
+  /// Calls f(x, y, amount) for every pixel of `b` (inside the clip) in a tile that was made.
+  template <class F>
+  void visit(const Box& b, F&& f) const {
+    if (b.empty()) return;
+    const int tx0 = (b.x0 - clip_.x0) / kTile, tx1 = (b.x1 - clip_.x0) / kTile;
+    const int ty0 = (b.y0 - clip_.y0) / kTile, ty1 = (b.y1 - clip_.y0) / kTile;
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        const float* tile = tiles_[static_cast<size_t>(ty) * static_cast<size_t>(tilesX_) + static_cast<size_t>(tx)].get();
+        if (!tile) continue;
+        const int x0 = std::max(b.x0, clip_.x0 + tx * kTile), x1 = std::min(b.x1, clip_.x0 + tx * kTile + kTile - 1);
+        const int y0 = std::max(b.y0, clip_.y0 + ty * kTile), y1 = std::min(b.y1, clip_.y0 + ty * kTile + kTile - 1);
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) f(x, y, tile[cellOf(x, y)]);
+      }
   }
   Box clip_;
   Box dirty_;
-  std::vector<float> a_;
+  int tilesX_ = 0;
+  std::vector<std::unique_ptr<float[]>> tiles_;
 };
 
 /// Coverage of a pixel whose centre is `d` from a line's middle, for a line `halfWidth` wide on
@@ -155,10 +183,39 @@ void segment(Coverage& c, P2 a, P2 b, double halfWidth) {
   }
 }
 
+/// The pieces of a path once each: a piece driven again (a program going round a square
+/// 25,000 times) covers nothing new, since coverage keeps the most any piece gives a pixel.
+class PieceSet {
+ public:
+  /// True the first time the piece from a to b is seen.
+  bool first(P2 a, P2 b) {
+    Piece p{};
+    const double v[4] = {a.x, a.y, b.x, b.y};
+    std::memcpy(p.bits, v, sizeof v);
+    return seen_.insert(p).second;
+  }
+
+ private:
+  struct Piece {
+    uint64_t bits[4];
+    friend bool operator==(const Piece&, const Piece&) = default;
+  };
+  struct Hash {
+    size_t operator()(const Piece& p) const {
+      uint64_t h = 0;
+      for (uint64_t v : p.bits) h = (h ^ v) * 0x9E3779B97F4A7C15ull, h ^= h >> 29;
+      return static_cast<size_t>(h);
+    }
+  };
+  std::unordered_set<Piece, Hash> seen_;
+};
+
 void polylines(Coverage& c, const Polylines& lines, double halfWidth) {
+  PieceSet drawn;
   for (const Polyline& l : lines) {
-    if (l.size() == 1) segment(c, l[0], l[0], halfWidth);
-    for (size_t i = 1; i < l.size(); ++i) segment(c, l[i - 1], l[i], halfWidth);
+    if (l.size() == 1 && drawn.first(l[0], l[0])) segment(c, l[0], l[0], halfWidth);
+    for (size_t i = 1; i < l.size(); ++i)
+      if (drawn.first(l[i - 1], l[i])) segment(c, l[i - 1], l[i], halfWidth);
   }
 }
 
@@ -249,12 +306,17 @@ uint32_t fade(uint32_t rgb) {
 uint32_t darker(uint32_t rgb) { return Coverage::mix(rgb, 0x000000, 0.3); }
 
 /// The screen faded into the arena (only a whole 800 x 600 screen).
-void fadedScreen(render::RgbImage& img, const std::optional<render::RgbImage>& screen) {
+void fadedScreen(render::RgbImage& img, const std::shared_ptr<const render::RgbImage>& screen) {
   if (!screen || screen->width != kWidth || screen->height != kArena ||
       screen->rgb.size() != static_cast<size_t>(kWidth) * kArena * 3)
     return;
-  for (int y = 0; y < kArena; ++y)
-    for (int x = 0; x < kWidth; ++x) img.set(x, y, fade(screen->pixel(x, y)));
+  // fade() a byte at a time: the arena is the picture's first rows, as wide as the screen.
+  uint8_t lighter[256];
+  for (uint32_t c = 0; c < 256; ++c) lighter[c] = static_cast<uint8_t>(fade(c) & 0xFF);
+  const size_t bytes = static_cast<size_t>(kWidth) * kArena * 3;
+  const uint8_t* from = screen->rgb.data();
+  uint8_t* to = img.rgb.data();
+  for (size_t i = 0; i < bytes; ++i) to[i] = lighter[from[i]];
 }
 
 /// The fonts draw Latin-1: UTF-8 text (assignment files) is decoded, a character beyond
@@ -623,19 +685,28 @@ void drawLegend(render::RgbImage& img, const std::vector<LegendItem>& items, Wri
 
 }  // namespace
 
-std::vector<std::string> legendEntries(const PictureInput& in) {
-  Writer w;
+struct PicturePainter::Impl {
+  Writer writer;
+};
+
+PicturePainter::PicturePainter() : impl_(std::make_unique<Impl>()) {}
+PicturePainter::~PicturePainter() = default;
+
+std::vector<std::string> legendEntries(const PictureInput& in) { return PicturePainter().legend(in); }
+render::RgbImage feedbackPicture(const PictureInput& in) { return PicturePainter().picture(in); }
+
+std::vector<std::string> PicturePainter::legend(const PictureInput& in) {
   std::vector<std::string> out;
-  for (const LegendItem& it : legendItems(in, w)) out.push_back(utf8(it.text));
+  for (const LegendItem& it : legendItems(in, impl_->writer)) out.push_back(utf8(it.text));
   return out;
 }
 
-render::RgbImage feedbackPicture(const PictureInput& in) {
+render::RgbImage PicturePainter::picture(const PictureInput& in) {
   render::RgbImage img;
   img.width = kWidth;
   img.height = kHeight;
   img.rgb.assign(static_cast<size_t>(kWidth) * kHeight * 3, 0xFF);
-  Writer w;
+  Writer& w = impl_->writer;
 
   // The ground: the solution's final screen for the teacher, the student's own for them.
   fadedScreen(img, in.studentView ? in.studentScreen : in.background);

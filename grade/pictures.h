@@ -5,6 +5,7 @@
 // the assignment asked for (waypoints, regions to reach or avoid).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,8 +42,9 @@ struct PictureInput {
   /// The student's robot's path (its centre, from the recording), drawn whatever the pen did.
   record::Polylines studentPath;
   record::Polylines reference;                ///< the solution's trail (or the trail check's)
-  std::optional<render::RgbImage> background; ///< the solution's final screen, shown faded
-  std::optional<render::RgbImage> studentScreen; ///< the student's final screen (student view)
+  /// The solution's final screen, shown faded (shared: a class's pictures all show the same one).
+  std::shared_ptr<const render::RgbImage> background;
+  std::shared_ptr<const render::RgbImage> studentScreen; ///< the student's final screen (student view)
   std::optional<record::P2> studentEnd;       ///< where the student's robot ended
   std::optional<record::P2> referenceEnd;
   double robotRadius = 20;
@@ -81,6 +83,23 @@ render::RgbImage feedbackPicture(const PictureInput& input);
 /// / "keep out: <label>"). Regions without a label, or too many to fit the strip with theirs,
 /// are named by their role only ("goal region(s)", "area(s) to avoid"). Texts are UTF-8.
 std::vector<std::string> legendEntries(const PictureInput& input);
+
+/// feedbackPicture() and legendEntries() for many pictures: the fonts loaded and the glyphs
+/// drawn for one picture are kept for the next (a class's pictures share most of their words).
+/// The pictures are the same as feedbackPicture's.
+class PicturePainter {
+ public:
+  PicturePainter();
+  ~PicturePainter();
+  PicturePainter(const PicturePainter&) = delete;
+  PicturePainter& operator=(const PicturePainter&) = delete;
+  render::RgbImage picture(const PictureInput& input);
+  std::vector<std::string> legend(const PictureInput& input);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 /// Colours of the picture (0xRRGGBB), for the documentation and tests.
 constexpr uint32_t kReferenceColour = 0x8FD98F;

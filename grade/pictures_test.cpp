@@ -77,8 +77,8 @@ PictureInput everything() {
   PictureInput in;
   in.reference = {{{300, 400}, {300, 200}, {500, 200}, {500, 400}, {300, 400}}};
   in.student = {{{300, 400}, {300, 200}, {500, 200}, {500, 400}}};
-  in.background = solid(kBackground);
-  in.studentScreen = solid(kStudentScreen);
+  in.background = std::make_shared<const RgbImage>(solid(kBackground));
+  in.studentScreen = std::make_shared<const RgbImage>(solid(kStudentScreen));
   in.referenceEnd = P2{300, 400};
   in.studentEnd = P2{500, 400};
   in.waypoints = {{300, 400}, {300, 200}, {500, 200}, {500, 400}, {300, 400}};
@@ -352,9 +352,10 @@ TEST_CASE("pictures: region labels and the title are written in the arena", "[gr
   CHECK(t.pixel(5, 5) == kWhite);
 
   // Not over what the program printed at the top left: the next corner free of drawing.
-  titled.background = solid(kWhite);
+  RgbImage printedScreen = solid(kWhite);
   for (int y = 0; y < 15; ++y)
-    for (int x = 0; x < 120; ++x) titled.background->set(x, y, 0x000000);
+    for (int x = 0; x < 120; ++x) printedScreen.set(x, y, 0x000000);
+  titled.background = std::make_shared<const RgbImage>(std::move(printedScreen));
   PictureInput untitled = titled;
   untitled.title.clear();
   RgbImage printed = feedbackPicture(titled), bare = feedbackPicture(untitled);
@@ -401,4 +402,28 @@ TEST_CASE("pictures: trails at any angle, and dots", "[grade][pictures]") {
   INFO(line << " pixels in the student's colour");
   CHECK(line > 670);
   CHECK(line < 2 * 670 + 50);
+}
+
+TEST_CASE("pictures: a path driven again, and a painter used again, draw the same picture", "[grade][pictures]") {
+  PictureInput once = everything();
+  once.student = {{{300, 400}, {300, 200}, {500, 200}, {500, 400}, {300, 400}}};  // a closed square
+  once.studentPath = once.student;
+  PictureInput again = once;
+  // Round the square five more times, in one polyline and in pieces of their own.
+  for (int lap = 0; lap < 5; ++lap) {
+    again.student[0].insert(again.student[0].end(), once.student[0].begin() + 1, once.student[0].end());
+    again.studentPath.push_back(once.student[0]);
+  }
+  const RgbImage a = feedbackPicture(once);
+  CHECK(differences(feedbackPicture(again), a, 0, 0, 799, kPictureHeight - 1) == 0);
+  // One painter for a class: its fonts and glyphs kept from picture to picture change nothing.
+  PicturePainter painter;
+  PictureInput other = everything();
+  other.studentView = true;
+  other.title = "class/another name with other glyphs.bas";
+  const RgbImage b = feedbackPicture(other);
+  CHECK(differences(painter.picture(once), a, 0, 0, 799, kPictureHeight - 1) == 0);
+  CHECK(differences(painter.picture(other), b, 0, 0, 799, kPictureHeight - 1) == 0);
+  CHECK(differences(painter.picture(once), a, 0, 0, 799, kPictureHeight - 1) == 0);
+  CHECK(painter.legend(other) == legendEntries(other));
 }

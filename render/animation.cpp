@@ -743,6 +743,53 @@ std::vector<uint32_t> robotCorrections(const RecordedStep& s, const QuantizedPos
   return differ;
 }
 
+/// robotCorrections() remembered by its inputs, the robot's drawn state (placed, centre,
+/// heading, radius: its colour changes no pixel) and the quantized pose: a program that goes
+/// round the same path (a loop of 100,000 steps) draws a few poses again and again, each
+/// rasterized twice for nothing. At most kMaxPoses poses are kept (then it starts afresh).
+class CorrectionCache {
+ public:
+  const std::vector<uint32_t>& get(const RecordedStep& s, const QuantizedPose& q) {
+    const Key key = keyOf(s, q);
+    auto it = map_.find(key);
+    if (it != map_.end()) return it->second;
+    if (map_.size() >= kMaxPoses) map_.clear();
+    return map_.emplace(key, robotCorrections(s, q)).first->second;
+  }
+
+ private:
+  static constexpr size_t kMaxPoses = 1 << 16;
+  struct Key {
+    uint64_t pose[4];  ///< x, y, heading, radius, bit for bit (a NaN is itself)
+    int64_t quantized[6];
+    bool located, visible;
+    friend bool operator==(const Key&, const Key&) = default;
+  };
+  struct Hash {
+    size_t operator()(const Key& k) const {
+      uint64_t h = k.located | uint64_t{k.visible} << 1;
+      auto mix = [&h](uint64_t v) {
+        h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+        h *= 0xbf58476d1ce4e5b9ull;
+      };
+      for (uint64_t v : k.pose) mix(v);
+      for (int64_t v : k.quantized) mix(static_cast<uint64_t>(v));
+      return static_cast<size_t>(h ^ (h >> 31));
+    }
+  };
+  static Key keyOf(const RecordedStep& s, const QuantizedPose& q) {
+    Key k{};
+    const double pose[4] = {s.x, s.y, s.heading, s.radius};
+    std::memcpy(k.pose, pose, sizeof pose);
+    const int64_t quantized[6] = {q.x, q.y, q.r, q.dx, q.dy, q.heading};
+    std::memcpy(k.quantized, quantized, sizeof quantized);
+    k.located = s.located;
+    k.visible = q.visible;
+    return k;
+  }
+  std::unordered_map<Key, std::vector<uint32_t>, Hash> map_;
+};
+
 const char* statusName(RunStatus s) {
   switch (s) {
     case RunStatus::Finished: return "finished";
@@ -780,13 +827,16 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   // the page keeps screens of its own to seek).
   size_t runs = 0;
   {
-    std::vector<Colour> screen(kPixels, colours::kWhite);
+    // Screens in large memory (one huge page each where there are some, not 470 page faults).
+    Pixels screen(kPixels, colours::kWhite), now;
     std::vector<ScreenRun> changes;
     for (size_t k = 0; k < frames.size(); ++k) {
       const RecordedFrame& f = frames[k];
       const std::vector<ScreenRun>* list = &f.runs;
       if (k > 0 && f.full) {
-        const std::vector<Colour> now = screenFromRuns(f.runs, kPixels);
+        now.clear();
+        for (const ScreenRun& r : f.runs) now.insert(now.end(), std::min<size_t>(r.count, kPixels - now.size()), r.colour);
+        now.resize(kPixels, colours::kWhite);
         changes.clear();
         for (size_t i = 0; i < kPixels;) {
           size_t j = i;
@@ -799,7 +849,7 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
           }
           i = j;
         }
-        screen = now;
+        screen.swap(now);
         list = &changes;
       } else {
         size_t at = 0;
@@ -856,10 +906,11 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   size_t corrections = 0;
   {
     Packer c;
+    CorrectionCache cache;
     size_t before = 0;
     for (size_t i = 0; i < n; ++i) {
       if (!poseChanged[i] || (!steps[i].located)) continue;
-      const std::vector<uint32_t> differ = robotCorrections(steps[i], poses[i]);
+      const std::vector<uint32_t>& differ = cache.get(steps[i], poses[i]);
       if (differ.empty()) continue;
       c.u(i - before);
       before = i;
@@ -987,19 +1038,30 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   html += "</style>\n</head>\n<body>\n";
   html +=
       "<header><h1 id=\"title\"></h1><span id=\"ending\"></span></header>\n"
-      "<main>\n<section id=\"stage\">\n<canvas id=\"screen\" width=\"800\" height=\"600\"></canvas>\n"
+      "<main>\n<section id=\"stage\" aria-label=\"the replay\">\n"
+      "<canvas id=\"screen\" width=\"800\" height=\"600\" role=\"img\" aria-label=\"the screen\" "
+      "aria-describedby=\"describe\"></canvas>\n"
       "<div id=\"controls\">"
-      "<button id=\"back\" title=\"one recorded step back (Left)\">&#x25C0; step</button>"
-      "<button id=\"play\" title=\"play or pause (Space)\">&#x25B6; play</button>"
-      "<button id=\"forward\" title=\"one recorded step forward (Right)\">step &#x25B6;</button>"
+      "<button id=\"back\" title=\"one recorded step back (Left)\" aria-keyshortcuts=\"ArrowLeft\">"
+      "<span aria-hidden=\"true\">&#x25C0; </span>step back</button>"
+      "<button id=\"play\" title=\"play or pause (Space)\" aria-keyshortcuts=\"Space\">"
+      "<span aria-hidden=\"true\">&#x25B6; </span>play</button>"
+      "<button id=\"forward\" title=\"one recorded step forward (Right)\" aria-keyshortcuts=\"ArrowRight\">"
+      "step on<span aria-hidden=\"true\"> &#x25B6;</span></button>"
       "<input id=\"timeline\" type=\"range\" min=\"0\" max=\"0\" value=\"0\" aria-label=\"timeline\">"
       "<label>speed <select id=\"speed\"><option>0.25</option><option>0.5</option><option selected>1</option>"
       "<option>2</option><option>4</option><option>8</option><option>16</option></select></label>"
-      "</div>\n<div id=\"position\"></div>\n<div id=\"banner\" hidden></div>\n</section>\n"
+      "</div>\n<div id=\"position\"></div>\n"
+      "<p id=\"keys\">Keys: Space plays or pauses; Left and Right step back and on; Home and End go to the first "
+      "and the last step.</p>\n<div id=\"banner\" hidden></div>\n"
+      "<div id=\"describe\" class=\"sr-only\" aria-live=\"polite\" aria-atomic=\"true\"></div>\n"
+      "<div id=\"alert\" class=\"sr-only\" role=\"alert\"></div>\n</section>\n"
       "<aside>\n<h2>Robot</h2><div id=\"pose\"></div>\n"
       "<h2>Sensors last read</h2><table id=\"sensors\"></table>\n"
-      "<h2>Source</h2><div id=\"source\" class=\"pane\"></div>\n"
-      "<h2>Output</h2><pre id=\"output\" class=\"pane\"></pre>\n<div id=\"inputs\"></div>\n</aside>\n</main>\n"
+      "<h2 id=\"source-h\">Source</h2><div id=\"source\" class=\"pane\" tabindex=\"0\" role=\"region\" "
+      "aria-labelledby=\"source-h\"></div>\n"
+      "<h2 id=\"output-h\">Output</h2><pre id=\"output\" class=\"pane\" tabindex=\"0\" role=\"region\" "
+      "aria-labelledby=\"output-h\"></pre>\n<div id=\"inputs\"></div>\n</aside>\n</main>\n"
       "<noscript>The replay needs JavaScript.</noscript>\n";
   html += "<script type=\"application/json\" id=\"rb-meta\">" + meta + "</script>\n";
   html += "<script type=\"application/octet-stream\" id=\"rb-data\">";
@@ -1013,8 +1075,10 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
 namespace {
 
 const char kPlayerStyle[] = R"CSS(
-:root{color-scheme:light dark;--fg:#1d1d1f;--bg:#fafafa;--pane:#fff;--line:#d0d0d4;--hi:#fff3b0;--err:#b00020}
-@media (prefers-color-scheme:dark){:root{--fg:#e8e8ea;--bg:#18181a;--pane:#202024;--line:#3a3a40;--hi:#5a4a00;--err:#ff6b81}}
+:root{color-scheme:light dark;--fg:#1d1d1f;--bg:#fafafa;--pane:#fff;--line:#d0d0d4;--hi:#fff3b0;--err:#b00020;
+ --muted:#5f5f66;--focus:#0b57d0}
+@media (prefers-color-scheme:dark){:root{--fg:#e8e8ea;--bg:#18181a;--pane:#202024;--line:#3a3a40;--hi:#5a4a00;--err:#ff6b81;
+ --muted:#a0a0a8;--focus:#8ab4f8}}
 *{box-sizing:border-box}
 body{margin:0;font:14px/1.4 system-ui,sans-serif;color:var(--fg);background:var(--bg)}
 header{display:flex;gap:1em;align-items:baseline;padding:.5em 1em;border-bottom:1px solid var(--line)}
@@ -1032,10 +1096,14 @@ aside{flex:1 1 320px;min-width:280px}
 .pane{background:var(--pane);border:1px solid var(--line);margin:0;max-height:16em;overflow:auto;position:relative;
  font:12px/1.45 ui-monospace,'DejaVu Sans Mono',monospace;white-space:pre}
 #source div{padding:0 .5em}#source div.now{background:var(--hi)}#source div.err{outline:2px solid var(--err)}
-#source span.n{display:inline-block;min-width:3.5em;opacity:.5;user-select:none}
+#source span.n{display:inline-block;min-width:3.5em;color:var(--muted);user-select:none}
+#source div.now span.n{color:inherit}
 #output{padding:.3em .5em;white-space:pre-wrap}
 #pose,#sensors{font-variant-numeric:tabular-nums}
 #sensors td{padding:0 .8em 0 0}#sensors tr.fresh{font-weight:bold}
+#keys{font-size:.9em;margin:.3em 0 0}
+:focus-visible{outline:3px solid var(--focus);outline-offset:2px}
+.sr-only{position:absolute;width:1px;height:1px;padding:0;margin:-1px;overflow:hidden;clip:rect(0 0 0 0);white-space:nowrap;border:0}
 )CSS";
 
 const char kPlayerScript[] = R"JS(
@@ -1213,6 +1281,71 @@ function start(d) {
   const fmt = (v) => (Math.round(v * 100) / 100).toFixed(2);
   const where = (file, line) => (file === meta.file ? 'line ' + line : 'line ' + line + ' of an included file');
 
+  // The screen as text for screen readers (#describe, aria-live polite): the step and its line,
+  // the robot's pose and pen, the sensors last read and the last line printed, from the
+  // recording. While playing it is said at most every 2 s; after a step by hand, a moment after
+  // the last one; the end at once, with the run's error (#alert, role alert) and its line.
+  const said = {text: '', at: -Infinity, pending: null, timer: 0};
+  function sayNow() {
+    clearTimeout(said.timer);
+    said.timer = 0;
+    const text = said.pending;
+    said.pending = null;
+    if (text === null || text === said.text) return;
+    $('describe').textContent = text;
+    said.text = text;
+    said.at = performance.now();
+  }
+  function say(text, byHand) {
+    said.pending = text;
+    if (said.timer && !byHand) return;  // the timer set says the latest
+    clearTimeout(said.timer);
+    said.timer = setTimeout(sayNow, byHand ? 250 : Math.max(0, said.at + 2000 - performance.now()));
+  }
+  const num = (v) => String(Math.round(v * 10) / 10);
+  // The last line printed by step i that is not blank (at most 200 bytes of it).
+  function lastPrinted(i) {
+    let e = Math.min(d.out[i], d.output.length);
+    for (let looked = 0; e > 0 && looked < 65536;) {
+      let b = e;
+      while (b > 0 && d.output[b - 1] !== 10) b--;
+      const line = decoder.decode(d.output.subarray(b, Math.min(e, b + 200))).replace(/\r$/, '');
+      if (line.trim()) return line;
+      looked += e - b + 1;
+      e = b - 1;
+    }
+    return '';
+  }
+  // The last reading of each sensor before step i: [sensor, event], the latest first.
+  function readings(i) {
+    const s = d.step[i];
+    const rows = [];
+    for (let k = 0; k < byName.length; k++) {
+      const list = byName[k];
+      let lo = 0, hi = list.length;
+      while (lo < hi) { const mid = (lo + hi) >> 1; if (d.evStep[list[mid]] < s) lo = mid + 1; else hi = mid; }
+      if (lo > 0) rows.push([k, list[lo - 1]]);
+    }
+    rows.sort((a, b) => d.evStep[b[1]] - d.evStep[a[1]] || a[0] - b[0]);
+    return rows;
+  }
+  function endText() {
+    return meta.error ? ended + ' at ' + where(meta.error.file, meta.error.line) + ': ' + meta.error.message : ended + '.';
+  }
+  function describe(i) {
+    const f = d.flags[i];
+    const parts = ['Step ' + (i + 1) + ' of ' + n + (i === n - 1 ? ', the end: ' + endText()
+        : ', ' + where(d.file[i], d.line[i]) + ' about to run.')];
+    parts.push(f & 1 ? 'Robot at x ' + num(d.qx[i] / meta.posQ) + ', y ' + num(d.qy[i] / meta.posQ) + ', heading ' +
+        num(d.qh[i] / meta.posQ) + ' degrees, pen ' + (f & 2 ? 'down' : 'up') + '.' : 'The robot is not placed yet.');
+    const rows = readings(i).slice(0, 5);
+    if (rows.length) parts.push('Last read: ' + rows.map(([k, e]) => meta.sensorNames[k] + ' ' + d.evValue[e] +
+        ' (statement ' + (d.evStep[e] + 1) + ')').join(', ') + '.');
+    const printed = lastPrinted(i);
+    if (printed) parts.push('Printed: ' + printed);
+    return parts.join(' ');
+  }
+
   let current = -1, lineShown = null, errShown = null, outShown = -1;
   function panes(i) {
     const s = d.step[i];
@@ -1234,7 +1367,7 @@ function start(d) {
       banner.hidden = false;
       if (meta.error) {
         banner.className = '';
-        banner.textContent = ended + ' at ' + where(meta.error.file, meta.error.line) + ': ' + meta.error.message;
+        banner.textContent = endText();
         if (meta.error.file === meta.file && meta.error.line > 0 && meta.error.line <= lineEls.length) {
           errShown = lineEls[meta.error.line - 1];
           errShown.classList.add('err');
@@ -1251,14 +1384,7 @@ function start(d) {
         ? 'x ' + fmt(d.qx[i] / meta.posQ) + '  y ' + fmt(d.qy[i] / meta.posQ) + '  heading ' +
           fmt(d.qh[i] / meta.posQ) + '\u00b0  pen ' + (f & 2 ? 'down' : 'up')
         : 'not placed yet (rLocate)';
-    const rows = [];
-    for (let k = 0; k < byName.length; k++) {
-      const list = byName[k];
-      let lo = 0, hi = list.length;
-      while (lo < hi) { const mid = (lo + hi) >> 1; if (d.evStep[list[mid]] < s) lo = mid + 1; else hi = mid; }
-      if (lo > 0) rows.push([k, list[lo - 1]]);
-    }
-    rows.sort((a, b) => d.evStep[b[1]] - d.evStep[a[1]] || a[0] - b[0]);
+    const rows = readings(i);
     const table = $('sensors');
     table.replaceChildren(...rows.map(([k, e]) => {
       const tr = document.createElement('tr');
@@ -1297,7 +1423,16 @@ function start(d) {
     for (const p of robotPixels(i)) view[p] = c;
     ctx.putImageData(image, 0, 0);
     timeline.value = String(i);
+    timeline.setAttribute('aria-valuetext', 'step ' + (i + 1) + ' of ' + n);
     panes(i);
+    if (i === n - 1 && (playing || !said.text.includes(', the end: '))) {
+      // The end: said at once, the error too.
+      said.pending = describe(i);
+      sayNow();
+      if (meta.error) { $('alert').textContent = ''; $('alert').textContent = endText(); }
+    } else {
+      say(describe(i), !playing);
+    }
   }
 
   // Playing: the animation's frames at their times, times the speed.
@@ -1324,7 +1459,7 @@ function start(d) {
     if (playing) return;
     if (current >= n - 1) show(0);
     playing = true;
-    playButton.textContent = '\u25A0 pause';
+    playWord('\u25A0 ', 'pause');
     next = firstAfter(current);
     baseMs = next > 0 ? d.playMs[next - 1] : 0;
     anchor = performance.now();
@@ -1335,7 +1470,13 @@ function start(d) {
     playing = false;
     if (timer) clearTimeout(timer);
     timer = 0;
-    playButton.textContent = '\u25B6 play';
+    playWord('\u25B6 ', 'play');
+  }
+  function playWord(symbol, word) {
+    const span = document.createElement('span');
+    span.setAttribute('aria-hidden', 'true');
+    span.textContent = symbol;
+    playButton.replaceChildren(span, word);
   }
   playButton.addEventListener('click', () => (playing ? pause() : play()));
   $('back').addEventListener('click', () => { pause(); show(current - 1); });

@@ -1,6 +1,7 @@
 #include "png_writer.h"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +26,13 @@ namespace {
 
 constexpr int kScreenW = Canvas::kWidth;
 constexpr int kScreenH = Canvas::kHeight;
+
+// How pictures are compressed (bench/README.md, "Issue 38", has the measurements that chose
+// these). zlib's level 3 is its fastest matcher with a longer chain than level 1: as fast on
+// screens, a little smaller. Z_RLE was faster still on plain screens but 70 times larger on a
+// patterned one, and level 6 (libpng's default) took 3 to 4 times as long.
+constexpr int kPaletteLevel = 3;
+constexpr int kRgbLevel = 3;
 
 }  // namespace
 
@@ -137,29 +145,171 @@ RgbImage imageFromRuns(const std::vector<ColourRun>& runs, int width, int height
   return image;
 }
 
-std::vector<uint8_t> encodePng(const RgbImage& image) {
-  png_image png;
-  std::memset(&png, 0, sizeof png);
-  png.version = PNG_IMAGE_VERSION;
-  png.width = static_cast<png_uint_32>(image.width);
-  png.height = static_cast<png_uint_32>(image.height);
-  png.format = PNG_FORMAT_RGB;
-  // Screens compress well: start with a buffer an eighth of the raw size and grow it to the
-  // size libpng asks for only when that is too small, instead of compressing twice.
-  std::vector<uint8_t> out(image.rgb.size() / 8 + 4096);
-  png_alloc_size_t size = out.size();
-  if (!png_image_write_to_memory(&png, out.data(), &size, 0, image.rgb.data(), 0, nullptr)) {
-    if (size <= out.size()) throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
-    out.resize(size);
-    std::memset(&png, 0, sizeof png);
-    png.version = PNG_IMAGE_VERSION;
-    png.width = static_cast<png_uint_32>(image.width);
-    png.height = static_cast<png_uint_32>(image.height);
-    png.format = PNG_FORMAT_RGB;
-    if (!png_image_write_to_memory(&png, out.data(), &size, 0, image.rgb.data(), 0, nullptr))
-      throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
+namespace {
+
+/// What one PNG is written from: plain data only, since libpng reports errors with longjmp,
+/// which must not cross anything with a destructor.
+struct PngJob {
+  int width = 0, height = 0;
+  int bitDepth = 8;
+  int colourType = PNG_COLOR_TYPE_RGB;
+  const png_color* palette = nullptr;
+  int paletteSize = 0;
+  const uint8_t* rows = nullptr;  ///< height rows of `stride` bytes
+  size_t stride = 0;
+  int filters = PNG_FILTER_NONE;
+  int level = 6;
+  int strategy = Z_DEFAULT_STRATEGY;
+  std::vector<uint8_t>* out = nullptr;
+  const char* error = nullptr;  ///< why it failed
+};
+
+void pngError(png_structp png, png_const_charp message) {
+  auto* job = static_cast<PngJob*>(png_get_error_ptr(png));
+  job->error = message && std::strstr(message, "memory") ? "out of memory" : "libpng failed";
+  png_longjmp(png, 1);
+}
+void pngWarning(png_structp, png_const_charp) {}
+
+void pngWrite(png_structp png, png_bytep data, size_t size) {
+  auto* job = static_cast<PngJob*>(png_get_io_ptr(png));
+  bool grown = true;
+  try {
+    job->out->insert(job->out->end(), data, data + size);
+  } catch (const std::bad_alloc&) {
+    grown = false;
   }
-  out.resize(size);
+  if (!grown) png_error(png, "out of memory");
+}
+void pngFlush(png_structp) {}
+
+/// Writes the job's PNG into *job.out; false (with job.error) when libpng fails.
+bool runPngJob(PngJob& job) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job, pngError, pngWarning);
+  if (!png) {
+    job.error = "out of memory";
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    job.error = "out of memory";
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, &job, pngWrite, pngFlush);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(job.width), static_cast<png_uint_32>(job.height), job.bitDepth,
+               job.colourType, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (job.palette) {
+    png_set_PLTE(png, info, job.palette, job.paletteSize);
+    png_set_check_for_invalid_index(png, 0);  // every index is one of the palette's, by making
+  }
+  png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, job.filters);
+  png_set_compression_level(png, job.level);
+  png_set_compression_strategy(png, job.strategy);
+  png_write_info(png, info);
+  for (int y = 0; y < job.height; ++y)
+    png_write_row(png, const_cast<png_bytep>(job.rows + static_cast<size_t>(y) * job.stride));
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+/// The image's colours in the order they first appear, and each pixel's index among them;
+/// false when it has more than 256.
+bool paletteOf(const RgbImage& image, std::vector<uint32_t>& colours, std::vector<uint8_t>& indices) {
+  // An open-addressed table of the colours seen: key + 1 (0: empty) and its index.
+  constexpr uint32_t kSlots = 1024;  // 256 colours at most: a quarter full
+  uint32_t keys[kSlots] = {};
+  uint8_t values[kSlots];
+  const size_t count = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
+  indices.resize(count);
+  colours.clear();
+  const uint8_t* p = image.rgb.data();
+  uint32_t last = 0xFFFFFFFF;
+  uint8_t lastIndex = 0;
+  for (size_t i = 0; i < count; ++i, p += 3) {
+    const uint32_t rgb = static_cast<uint32_t>(p[0]) << 16 | static_cast<uint32_t>(p[1]) << 8 | p[2];
+    if (rgb != last) {
+      uint32_t slot = (rgb * 0x9E3779B1u) >> 22;
+      while (keys[slot] != 0 && keys[slot] != rgb + 1) slot = (slot + 1) & (kSlots - 1);
+      if (keys[slot] == 0) {
+        if (colours.size() == 256) return false;
+        keys[slot] = rgb + 1;
+        values[slot] = static_cast<uint8_t>(colours.size());
+        colours.push_back(rgb);
+      }
+      last = rgb;
+      lastIndex = values[slot];
+    }
+    indices[i] = lastIndex;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodePng(const RgbImage& image) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgb.size() < static_cast<size_t>(image.width) * static_cast<size_t>(image.height) * 3)
+    throw std::runtime_error("cannot encode PNG: the image has no pixels");
+  PngJob job;
+  job.width = image.width;
+  job.height = image.height;
+  std::vector<uint8_t> out;
+  // Screens compress well: a buffer of an eighth of the raw size is rarely outgrown.
+  out.reserve(image.rgb.size() / 8 + 4096);
+  job.out = &out;
+  std::vector<uint32_t> colours;
+  std::vector<uint8_t> indices, packed;
+  std::vector<png_color> palette;
+  if (paletteOf(image, colours, indices)) {
+    // A palette image (RobotBASIC's screens have a few colours): one byte a pixel at most, 1, 2
+    // or 4 bits where the colours are that few; unfiltered, as the PNG specification advises
+    // for palettes.
+    const size_t n = colours.size();
+    job.bitDepth = n <= 2 ? 1 : n <= 4 ? 2 : n <= 16 ? 4 : 8;
+    job.colourType = PNG_COLOR_TYPE_PALETTE;
+    for (uint32_t c : colours)
+      palette.push_back({static_cast<png_byte>(c >> 16), static_cast<png_byte>(c >> 8), static_cast<png_byte>(c)});
+    job.palette = palette.data();
+    job.paletteSize = static_cast<int>(palette.size());
+    const size_t width = static_cast<size_t>(image.width);
+    if (job.bitDepth == 8) {
+      job.rows = indices.data();
+      job.stride = width;
+    } else {
+      const int perByte = 8 / job.bitDepth;
+      job.stride = (width + static_cast<size_t>(perByte) - 1) / static_cast<size_t>(perByte);
+      packed.assign(job.stride * static_cast<size_t>(image.height), 0);
+      for (size_t y = 0; y < static_cast<size_t>(image.height); ++y) {
+        const uint8_t* from = indices.data() + y * width;
+        uint8_t* to = packed.data() + y * job.stride;
+        for (size_t x = 0; x < width; ++x)
+          to[x / static_cast<size_t>(perByte)] |= static_cast<uint8_t>(
+              from[x] << ((perByte - 1 - static_cast<int>(x % static_cast<size_t>(perByte))) * job.bitDepth));
+      }
+      job.rows = packed.data();
+    }
+    job.filters = PNG_FILTER_NONE;
+    job.level = kPaletteLevel;
+  } else {
+    // More colours (a photograph-like screen, an anti-aliased drawing): RGB, each row with the
+    // "up" filter alone instead of libpng's trial of all five, and a fast deflate.
+    job.colourType = PNG_COLOR_TYPE_RGB;
+    job.rows = image.rgb.data();
+    job.stride = static_cast<size_t>(image.width) * 3;
+    job.filters = PNG_FILTER_UP;
+    job.level = kRgbLevel;
+  }
+  if (!runPngJob(job)) {
+    if (job.error && std::strcmp(job.error, "out of memory") == 0) throw std::bad_alloc();
+    throw std::runtime_error(std::string("cannot encode PNG: ") + (job.error ? job.error : "libpng failed"));
+  }
   return out;
 }
 

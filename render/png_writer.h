@@ -62,8 +62,13 @@ std::vector<ColourRun> composeRuns(const Pixels& pixels, const RobotView& robot)
 /// The image the runs describe (width x height pixels; what the runs do not cover is black).
 RgbImage imageFromRuns(const std::vector<ColourRun>& runs, int width, int height);
 
-/// The image as the bytes of a PNG file (8-bit RGB, no time stamp, so the same image always
-/// gives the same bytes). Throws std::runtime_error when libpng fails (out of memory).
+/// The image as the bytes of a PNG file, no time stamp, so the same image always gives the same
+/// bytes. An image of at most 256 colours (most screens) is written with a palette of them in
+/// the order they first appear, at 1, 2, 4 or 8 bits a pixel (the fewest that hold them),
+/// unfiltered; one of more colours as 8-bit RGB, each row with the "up" filter. Both with
+/// zlib's level 3 and an sRGB chunk. Decoded, either gives back the image's pixels exactly.
+/// Throws std::runtime_error when libpng fails or the image has no pixels, std::bad_alloc when
+/// memory runs out.
 std::vector<uint8_t> encodePng(const RgbImage& image);
 
 /// Encodes the image and writes it to `path`. On failure returns false with a message naming

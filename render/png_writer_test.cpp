@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include "render_test_support.h"
@@ -188,6 +189,94 @@ TEST_CASE("png: the same screen always encodes to the same bytes", "[render][png
   auto decoded = readPngFile(file.str(), error);
   REQUIRE(decoded);
   CHECK(decoded->rgb == noisy.rgb);
+}
+
+namespace {
+
+/// The colour type and bit depth an encoded PNG declares (its IHDR chunk comes first).
+std::pair<int, int> typeAndDepth(const std::vector<uint8_t>& png) {
+  REQUIRE(png.size() > 33);
+  return {png[25], png[24]};
+}
+
+/// Encodes `img`, writes it, decodes it with libpng and checks every pixel.
+std::vector<uint8_t> roundTrip(const RgbImage& img) {
+  std::vector<uint8_t> bytes = encodePng(img);
+  test::TempFile file("roundtrip.png");
+  std::string error;
+  REQUIRE(writePngFile(file.str(), img, error));
+  std::optional<RgbImage> decoded = readPngFile(file.str(), error);
+  INFO(error);
+  REQUIRE(decoded);
+  CHECK(decoded->width == img.width);
+  CHECK(decoded->height == img.height);
+  CHECK(decoded->rgb == img.rgb);
+  return bytes;
+}
+
+/// A width x height image of `colours` different colours (each used at least once when there
+/// are pixels enough), in runs of random lengths as a screen has them, or scattered.
+RgbImage imageOfColours(int width, int height, size_t colours, bool runs, uint32_t seed) {
+  RgbImage img;
+  img.width = width;
+  img.height = height;
+  img.rgb.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+  uint32_t state = seed;
+  auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+  std::vector<uint32_t> palette;  // distinct: an odd multiplier is one-to-one modulo 2^24
+  for (uint32_t i = 0; i < colours; ++i) palette.push_back(((i + seed) * 0x9E3779B1u) & 0xFFFFFF);
+  size_t n = static_cast<size_t>(width) * static_cast<size_t>(height), left = 0;
+  uint32_t c = palette[0];
+  for (size_t i = 0; i < n; ++i) {
+    if (i < palette.size()) c = palette[i];  // every colour once, first
+    else if (!runs || left-- == 0) c = palette[next() % palette.size()], left = next() % 40;
+    img.set(static_cast<int>(i % static_cast<size_t>(width)), static_cast<int>(i / static_cast<size_t>(width)), c);
+  }
+  return img;
+}
+
+}  // namespace
+
+TEST_CASE("png: up to 256 colours as a palette of as few bits as hold them, more as RGB; the same pixels", "[render][png]") {
+  constexpr int kPalette = 3, kRgb = 2;
+  struct Case {
+    size_t colours;
+    int type, depth;
+  };
+  for (Case k : {Case{1, kPalette, 1}, Case{2, kPalette, 1}, Case{3, kPalette, 2}, Case{4, kPalette, 2},
+                 Case{5, kPalette, 4}, Case{16, kPalette, 4}, Case{17, kPalette, 8}, Case{255, kPalette, 8},
+                 Case{256, kPalette, 8}, Case{257, kRgb, 8}, Case{5000, kRgb, 8}}) {
+    for (bool runs : {true, false})
+      for (auto [w, h] : {std::pair{200, 150}, std::pair{37, 29}, std::pair{1, 300}, std::pair{300, 1}}) {
+        if (static_cast<size_t>(w) * static_cast<size_t>(h) < k.colours) continue;
+        INFO(k.colours << " colours, " << w << " x " << h << (runs ? ", in runs" : ", scattered"));
+        const RgbImage img = imageOfColours(w, h, k.colours, runs, static_cast<uint32_t>(k.colours * 7 + w));
+        const std::vector<uint8_t> png = roundTrip(img);
+        CHECK(typeAndDepth(png) == std::pair{k.type, k.depth});
+      }
+  }
+  SECTION("Figure 1.7 with the robot on top (white, green, blue): a palette of 2 bits") {
+    auto run = runFigure17();
+    const std::vector<uint8_t> png = roundTrip(composeImage(run->canvas().pixels(), run->robot(), 1));
+    CHECK(typeAndDepth(png) == std::pair{kPalette, 2});  // white, green, blue
+  }
+  SECTION("a screen of a million colours, scaled: RGB") {
+    Pixels noise(static_cast<size_t>(Canvas::kWidth) * Canvas::kHeight);
+    uint32_t state = 99;
+    for (Colour& c : noise) c = (state = state * 1664525u + 1013904223u) >> 12;
+    const std::vector<uint8_t> png = roundTrip(screenImage(noise, 2));
+    CHECK(typeAndDepth(png) == std::pair{kRgb, 8});
+  }
+}
+
+TEST_CASE("png: an image without pixels is an error, not a crash", "[render][png]") {
+  RgbImage empty;
+  CHECK_THROWS_AS(encodePng(empty), std::runtime_error);
+  RgbImage shortImage;
+  shortImage.width = 10;
+  shortImage.height = 10;
+  shortImage.rgb.resize(20);
+  CHECK_THROWS_AS(encodePng(shortImage), std::runtime_error);
 }
 
 TEST_CASE("png: write and read errors name the file", "[render][png]") {

@@ -146,6 +146,17 @@ std::string applyLandlock(const KernelRules& rules, int abi) {
   return problem;
 }
 
+/// A rule's condition: argument `arg` masked with `mask` equals `value` (libseccomp's SCMP_A0
+/// and SCMP_A1 macros build the same with C99 compound literals, which are not C++).
+scmp_arg_cmp masked(unsigned arg, uint64_t mask, uint64_t value) {
+  scmp_arg_cmp c{};
+  c.arg = arg;
+  c.op = SCMP_CMP_MASKED_EQ;
+  c.datum_a = mask;
+  c.datum_b = value;
+  return c;
+}
+
 /// The seccomp filter: everything is allowed but what a RobotBASIC program never needs, which
 /// fails with EPERM (so a started program sees an ordinary error, not a kill).
 std::string applySeccomp(const KernelRules& rules) {
@@ -177,7 +188,7 @@ std::string applySeccomp(const KernelRules& rules) {
   int clone = seccomp_syscall_resolve_name("clone");
   for (uint64_t flag : {uint64_t{CLONE_NEWNS}, uint64_t{CLONE_NEWCGROUP}, uint64_t{CLONE_NEWUTS}, uint64_t{CLONE_NEWIPC},
                         uint64_t{CLONE_NEWUSER}, uint64_t{CLONE_NEWPID}, uint64_t{CLONE_NEWNET}})
-    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), clone, 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag)) != 0) ++failed;
+    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), clone, 1, masked(0, flag, flag)) != 0) ++failed;
   if (!rules.allowSpawn) {
     // No other program, and no second process: only threads (CLONE_THREAD) may be made.
     deny("execve");
@@ -186,13 +197,13 @@ std::string applySeccomp(const KernelRules& rules) {
     deny("vfork");
     if (!kSanitized &&
         seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), clone, 1,
-                         SCMP_A0(SCMP_CMP_MASKED_EQ, uint64_t{CLONE_THREAD}, uint64_t{0})) != 0)
+                         masked(0, uint64_t{CLONE_THREAD}, uint64_t{0})) != 0)
       ++failed;
   }
   // Typing into the terminal rb runs in (TIOCSTI) or the console's keyboard (TIOCLINUX).
   int ioctl = seccomp_syscall_resolve_name("ioctl");
   for (uint64_t request : {uint64_t{TIOCSTI}, uint64_t{TIOCLINUX}})
-    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), ioctl, 1, SCMP_A1(SCMP_CMP_MASKED_EQ, 0xFFFFFFFFu, request)) != 0)
+    if (seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), ioctl, 1, masked(1, 0xFFFFFFFFu, request)) != 0)
       ++failed;
   std::string problem;
   if (failed) problem = "seccomp refused " + std::to_string(failed) + " rule(s)";

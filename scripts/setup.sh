@@ -80,11 +80,13 @@ else
 fi
 
 # Test tools from npm, pinned by tools/package-lock.json: Microsoft's SARIF Multitool, which
-# validates rb's SARIF against the schema and GitHub code scanning's rules. npm runs no install
+# validates rb's SARIF against the schema and GitHub code scanning's rules, and axe-core, whose
+# WCAG 2.1 rules testdata/a11y runs on the pages in headless Chromium. npm runs no install
 # scripts here, so the tool's binary is made executable by hand.
 if [ "$with_tools" = 1 ]; then
   tools="$(cd "$(dirname "$0")/../tools" && pwd)"
   if [ ! -x "$tools/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool" ] ||
+     [ ! -f "$tools/node_modules/axe-core/axe.min.js" ] ||
      [ "$tools/package-lock.json" -nt "$tools/node_modules/.package-lock.json" ]; then
     echo "setup: npm ci in tools/"
     (cd "$tools" && npm ci --no-audit --no-fund --ignore-scripts)

@@ -72,9 +72,14 @@
       if (d.line) marks.set(d.line, d.severity === 'error' ? 'err' : marks.get(d.line) || 'warn');
       const li = document.createElement('li');
       li.className = d.severity;
-      li.textContent = `${d.line}:${d.col}: ${d.severity}: ${d.message}${d.code ? ' [' + d.code + ']' : ''}`;
       li.dataset.line = d.line;
-      li.onclick = () => editor.goToLine(d.line);
+      // A button: the keyboard reaches it (Tab) and Enter goes to the line, as a click does.
+      const b = document.createElement('button');
+      b.type = 'button';
+      b.textContent = `${d.line}:${d.col}: ${d.severity}: ${d.message}${d.code ? ' [' + d.code + ']' : ''}`;
+      b.title = `Go to line ${d.line}`;
+      b.onclick = () => editor.goToLine(d.line);
+      li.appendChild(b);
       ul.appendChild(li);
     }
     editor.setDiagnostics(list);
@@ -107,14 +112,14 @@
     checkTimer = setTimeout(async () => { if (!run) listDiagnostics(await rb.check(editor.value)); }, 250);
   }
   source.addEventListener('input', changed);
+  // Tab indents; Esc, then Tab within 2 s, leaves the text (as in the CodeMirror editor).
+  let escapedAt = -Infinity;
   source.addEventListener('keydown', (e) => {
-    if (e.key === 'Tab') {
+    if (e.key === 'Escape') escapedAt = performance.now();
+    if (e.key === 'Tab' && performance.now() - escapedAt > 2000) {
       e.preventDefault();
       source.setRangeText('    ', source.selectionStart, source.selectionEnd, 'end');
       changed();
-    } else if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) {
-      e.preventDefault();
-      runProgram();
     }
   });
   function setSource(text) {
@@ -394,21 +399,39 @@
     const p = pictureBox();
     $('controls').style.transform = `translate(${p.left - box.left}px, ${p.top - box.top}px) scale(${p.scale})`;
   }
-  function showControls(c) {
+  // The controls are buttons of the page too, for the keyboard: Tab reaches them after the
+  // screen, and Enter or Space presses one where it is (its middle), as a click there does; an
+  // edit box so pressed takes the keys typed next on the screen, which gets the focus. The mouse
+  // goes through them to the screen (pointer-events: none). `inFlight`: keys the page sent for an
+  // edit box that the run had not taken when it showed these controls; until it has, the page's
+  // own account of which box has the keys stands (see the screen's keydown).
+  function showControls(c, inFlight) {
+    if (inFlight > 0) c = Object.assign({}, c, {focus: controls.focus});
     controls = c;
     const layer = $('controls');
+    const had = layer.contains(document.activeElement) ? document.activeElement.dataset.key : null;
     layer.textContent = '';
-    const add = (cls, item, text) => {
-      const d = document.createElement('div');
+    const add = (cls, item, text, label, edit) => {
+      const d = document.createElement('button');
+      d.type = 'button';
       d.className = cls;
       d.dataset.name = item.name;
+      d.dataset.key = (edit ? 'edit:' : 'button:') + item.name;
       Object.assign(d.style, {left: `${item.x}px`, top: `${item.y}px`, width: `${item.w}px`, height: `${item.h}px`});
       d.textContent = text;
+      d.setAttribute('aria-label', label);
+      d.addEventListener('click', (e) => {
+        if (e.detail !== 0 || !run) return;  // only the keyboard's clicks (a mouse's went to the screen)
+        pressAt(item.x + Math.floor(item.w / 2), item.y + Math.floor(item.h / 2));
+        if (edit) canvas.focus();
+      });
       layer.appendChild(d);
+      if (d.dataset.key === had) d.focus();
     };
     // In the order added: the last added is on top, as a press finds it (core/input).
-    c.buttons.forEach((b) => add('rb-button', b, b.name));
-    c.edits.forEach((e) => add('rb-edit' + (e.name === c.focus ? ' focus' : ''), e, e.text));
+    c.buttons.forEach((b) => add('rb-button', b, b.name, `the program's button ${b.name}`, false));
+    c.edits.forEach((e) => add('rb-edit' + (e.name === c.focus ? ' focus' : ''), e, e.text,
+                               `the program's edit box ${e.name}: ${e.text || 'empty'}`, true));
     placeControls();
   }
   new ResizeObserver(() => { fitScreen(); placeControls(); }).observe(canvas);
@@ -436,10 +459,20 @@
   canvas.addEventListener('keydown', (e) => {
     const code = keyCode(e);
     if (!code || e.ctrlKey || e.metaKey) return;
+    // Tab and Shift+Tab move the focus on, as anywhere on the page (the screen is no trap); only
+    // while one of the program's edit boxes has the keyboard does Tab go into it (and give the
+    // keyboard back, by core/input's rules).
+    if (e.key === 'Tab' && !(run && controls.focus)) return;
     e.preventDefault();
     if (!run) return;
-    if (controls.focus) run.typed(code);  // into the program's edit box
-    else run.keyDown(code);
+    if (controls.focus) {  // into the program's edit box
+      run.typed(code);
+      // Enter, Tab and Esc give the keyboard back (core/input's rules): the page knows it at
+      // once, so that a Tab typed next moves the focus on even before the run has taken them.
+      if (code === NAMED.Enter || code === NAMED.Tab || code === NAMED.Escape) showControls(Object.assign({}, controls, {focus: ''}));
+    } else {
+      run.keyDown(code);
+    }
   });
   canvas.addEventListener('keyup', () => { if (run) run.keyUp(); });
   canvas.addEventListener('blur', () => { if (run) run.keyUp(); });
@@ -466,6 +499,13 @@
     if (run) run.mouse(x, y, mouseButtons);
   });
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  // A press of the left button at screen pixel (x, y) and its release, as the mouse gives them.
+  function pressAt(x, y) {
+    if (!run) return;
+    const r = run;
+    r.click(x, y, mouseButtons | 1);
+    setTimeout(() => r.mouse(x, y, mouseButtons), 100);
+  }
 
   // ---------------------------------------------------------------- the run
   let run = null;          // rb.start's run: {done, stop, pause, resume, step, ...}
@@ -480,7 +520,7 @@
     $('svg').disabled = on || !lastSvg;
     $('stop').disabled = !on;
     $('pause').disabled = !on;
-    $('step').disabled = !on || !paused;
+    $('step').disabled = !on;
     $('pause').textContent = paused || pausing ? 'Resume' : 'Pause';
   }
   function showStatus() {
@@ -501,6 +541,44 @@
     shown.pending = '';
     shown.tail = document.createElement('span');
     output.appendChild(shown.tail);
+  }
+
+  // ---------------------------------------------------------------- the screen as text
+  // What a screen reader says of the screen (#screenText, aria-live polite): the robot's pose
+  // and pen, the sensors the program read last and the last line it printed, from the core's
+  // state (WebHost::stateJson, sent as the run goes). Said at most every SAY_EVERY_MS while a
+  // run goes, at once when it ends; errors are said at once (#alert, role alert) with their line.
+  const SAY_EVERY_MS = 2000;
+  const said = {text: '', at: -Infinity, pending: null, timer: 0};
+  function describeState(s) {
+    if (!s) return '';
+    const parts = [];
+    if (!s.placed) parts.push('The robot is not placed.');
+    else parts.push(`Robot at x ${s.x}, y ${s.y}, heading ${s.heading} degrees, pen ${s.pen ? 'down' : 'up'}.`);
+    if (s.sensors && s.sensors.length)
+      parts.push('Last read: ' + s.sensors.slice(0, 5).map((r) => `${r.name} ${r.value} (line ${r.line})`).join(', ') + '.');
+    if (s.printed) parts.push(`Printed: ${s.printed}`);
+    return parts.join(' ');
+  }
+  function sayNow() {
+    clearTimeout(said.timer);
+    said.timer = 0;
+    const text = said.pending;
+    said.pending = null;
+    if (text === null || text === said.text) return;
+    $('screenText').textContent = text;
+    said.text = text;
+    said.at = performance.now();
+  }
+  function say(text, now) {
+    said.pending = text;
+    const wait = said.at + SAY_EVERY_MS - performance.now();
+    if (now || wait <= 0) sayNow();
+    else if (!said.timer) said.timer = setTimeout(sayNow, wait);
+  }
+  function alertError(text) {
+    $('alert').textContent = '';
+    if (text) $('alert').textContent = text;
   }
   function appendOutput(text, cls) {
     if (cls) {
@@ -702,7 +780,9 @@
   }
   function showSpeed() {
     const ms = speedMs();
-    $('speed').title = ms ? `${ms} ms per pixel or degree of robot motion` : 'as fast as it goes (no animation)';
+    const text = ms ? `${ms} ms per pixel or degree of robot motion` : 'as fast as it goes (no animation)';
+    $('speed').title = text;
+    $('speed').setAttribute('aria-valuetext', text);
     if (run) run.setSpeed(ms);
   }
   $('speed').addEventListener('input', showSpeed);
@@ -807,6 +887,7 @@
     waitingFor = '';
     $('debugger').hidden = true;
     status.textContent = 'running';
+    alertError('');
     const started = performance.now();
     canvas.focus();
     const r = rb.start(editor.value, Object.assign(limits(), {
@@ -829,6 +910,7 @@
         if (what) { flushOutput(); drawPending(); }
         showStatus();
       },
+      onState: (st) => say(describeState(st)),
     }));
     run = latest = r;
     setRunning(true);
@@ -870,6 +952,12 @@
     }
     const steps = typeof result.steps === 'number' ? `, ${result.steps} steps` : '';
     status.textContent = `${result.status} (${secs} s${steps})`;
+    const ended = {finished: 'The program finished', stopped: 'The program was stopped', error: 'The program stopped with an error',
+                   'step-limit': 'The program stopped at the step limit', timeout: 'The program stopped at the time limit',
+                   rejected: 'The program did not compile'}[result.status] || `The program ended: ${result.status}`;
+    const after = typeof result.steps === 'number' ? ` after ${result.steps} steps` : '';
+    say(`${ended}${after}. ${describeState(result.state)}`.trim(), true);
+    if (result.errorMessage) alertError(result.errorLine ? `Error at line ${result.errorLine}: ${result.errorMessage}` : `Error: ${result.errorMessage}`);
     window.rbLastRun = result;
   }
   function stopProgram() {
@@ -894,17 +982,28 @@
     setRunning(true);
     showStatus();
   };
+  // Step: while paused, one statement; while running, the run stops before its next statement.
   $('step').onclick = () => {
-    if (!run || !paused) return;
-    hidePaused();
+    if (!run) return;
+    if (paused) hidePaused();
     pausing = true;  // until the run stops again
     status.textContent = 'stepping';
     setRunning(true);
     run.step();
   };
+  // The page's keys (the keys menu lists them): Ctrl with Enter, comma, semicolon or period,
+  // wherever the focus is. A running program never gets a key with Ctrl (keyCode above), so
+  // none of these is a key it could read.
+  const SHORTCUTS = {'Enter': 'run', ',': 'pause', ';': 'step', '.': 'stop'};
   window.addEventListener('keydown', (e) => {
-    if (e.key === 'Escape' && run && document.activeElement === canvas && e.shiftKey) stopProgram();
-  });
+    if (!(e.ctrlKey || (e.metaKey && e.key === 'Enter')) || e.altKey) return;
+    const action = SHORTCUTS[e.key];
+    if (!action) return;
+    e.preventDefault();
+    e.stopPropagation();
+    if (!$(action).disabled) $(action).click();
+  }, true);
+  $('skip').addEventListener('click', (e) => { e.preventDefault(); editor.focus(); });
 
   // ---------------------------------------------------------------- start
   window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash, screen: canvas,

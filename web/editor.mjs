@@ -70,6 +70,8 @@ window.RbEditor = {
       keymap.of([{key: 'Mod-Enter', run: () => { onRun(); return true; }}, indentWithTab,
                  ...defaultKeymap, ...historyKeymap]),
       EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),
+      // Its name for screen readers; the page's keys menu says how to leave it (Esc, Tab).
+      EditorView.contentAttributes.of({'aria-label': 'Program (RobotBASIC)'}),
     ];
     const view = new EditorView({parent, state: EditorState.create({doc, extensions})});
     // rb's columns count the line's UTF-8 bytes (1-based); the editor's positions count UTF-16

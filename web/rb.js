@@ -3,7 +3,8 @@
 //
 //   await rb.check(source)             -> [{severity, line, col, message, code, text}, ...]
 //   await rb.run(source, {stdin, seed, maxSteps, timeout, maxMemory, keys, svg})
-//                                      -> {output, error, png, svg, status, steps, diagnostics}
+//                                      -> {output, error, errorLine, errorMessage, png, svg, status,
+//                                          steps, diagnostics, state}
 //   rb.start(source, options)          a live run for the page (web/app.js): {done, stop(), ...}
 //   rb.stop()                          stops the run in progress
 //
@@ -146,6 +147,7 @@
     serialSend: () => false,
     serialTake: () => null,
     serialClose: () => {},
+    state: () => {},
   };
 
   // What rb.run's options may carry into a worker.
@@ -212,10 +214,12 @@
     let error = null;
     if (result.error) error = result.error.text || result.error.message;
     else if (result.status === 'rejected') error = errors.map((d) => d.text).join('');
+    const first = result.error || errors[0];
     return Object.assign(result, {
       output,
       errorDiagnostic: result.error && result.error.line ? result.error : null,
       error,
+      errorMessage: first ? first.message : null,
       errorLine: result.error ? result.error.line : errors.length ? errors[0].line : null,
       frame,
       png: frame && options.png !== false ? await pngDataUrl(frame.rgba, frame.width, frame.height) : null,
@@ -298,7 +302,10 @@
   }
 
   let liveRun = null;  // the run in progress
+  let runCount = 0;
   function startLive(source, options) {
+    const runId = ++runCount;  // the worker tags each message with its run: a worker kept for
+                               // the next run still sends the last one's SVG and 'idle'
     const entry = takeLiveWorker();
     const {worker: w, mode} = entry;
     const shared = mode === 'sab' ? new SharedArrayBuffer(LIVE.BYTES) : null;
@@ -306,6 +313,7 @@
     const io = Object.assign({}, noInput, options.io || {});
     const got = {output: '', frame: null, svg: null};
     let settled = false, resolveDone, rejectDone, stopTimer = 0, framesGot = 0, ackFrame = 0;
+    let typedSent = 0;  // keys sent for an edit box (run.typed)
     const done = new Promise((res, rej) => { resolveDone = res; rejectDone = rej; });
 
     // In message mode what is sent before the run has begun goes with its start message.
@@ -323,14 +331,16 @@
       Atomics.add(ctrl, i, 1);
       wake();
     };
+    // Queues an event for the run; false when dropped (the run takes none).
     const event = (kind, a, b, c) => {
-      if (!ctrl) return post({type: 'event', kind, a, b, c});
+      if (!ctrl) { post({type: 'event', kind, a, b, c}); return !settled; }
       const widx = Atomics.load(ctrl, LIVE.WIDX);
-      if (widx - Atomics.load(ctrl, LIVE.RIDX) >= LIVE.RING_N) return;  // the run takes none: dropped
+      if (widx - Atomics.load(ctrl, LIVE.RIDX) >= LIVE.RING_N) return false;
       const o = LIVE.RING + (widx % LIVE.RING_N) * 4;
       ctrl[o] = kind; ctrl[o + 1] = a | 0; ctrl[o + 2] = b | 0; ctrl[o + 3] = c | 0;
       Atomics.store(ctrl, LIVE.WIDX, widx + 1);
       wake();
+      return true;
     };
     const bytes = (text, at, max) => {
       let b = new TextEncoder().encode(text);
@@ -361,7 +371,7 @@
     };
     w.onmessage = (e) => {
       const m = e.data;
-      if (settled) return;
+      if (settled || m.run !== runId) return;
       switch (m.type) {
         case 'output':
           got.output += m.text;
@@ -375,10 +385,15 @@
           framesGot++;
           if (!ackFrame) ackFrame = requestAnimationFrame(() => { ackFrame = 0; set(LIVE.DRAWN, framesGot, false); });
           break;
-        case 'controls': io.controls(m.controls); break;
+        // The second argument: how many of the keys sent for an edit box the core had not
+        // taken yet when it showed these controls.
+        case 'controls': io.controls(m.controls, typedSent - m.typed); break;
         case 'waiting': if (options.onWaiting) options.onWaiting(m.what); break;
         case 'paused': if (options.onPaused) options.onPaused(m.info); break;
         case 'resumed': if (options.onResumed) options.onResumed(); break;
+        // The state the page's text alternative of the screen reads (WebHost::stateJson): sent
+        // when it changed, at most every 250 ms, and whenever the run waits for the page.
+        case 'state': if (options.onState) options.onState(JSON.parse(m.json)); break;
         case 'call':
           Promise.resolve().then(() => io[m.name](...m.args))
             .then((v) => answer(m.id, v instanceof Uint8Array ? Array.from(v) : v), () => answer(m.id, null));
@@ -401,6 +416,7 @@
     // After the run's end: its SVG (options.svg), made after the page heard of the end, and the
     // worker free again (kept for the next run).
     w.addEventListener('message', function after(e) {
+      if (e.data.run !== runId) return;
       if (e.data.type === 'svg') {
         if (options.onSvg) svgText(e.data.svg).then((text) => options.onSvg(text));
       } else if (e.data.type === 'idle') {
@@ -443,7 +459,7 @@
       keyUp() { set(LIVE.HELD, 0, false); },
       mouse(x, y, b) { set(LIVE.MX, x, false); set(LIVE.MY, y, false); set(LIVE.MB, b, false); },
       click(x, y, b) { run.mouse(x, y, b); event(LIVE.CLICK, x, y, b); },
-      typed(code) { event(LIVE.TYPED, code, 0, 0); },
+      typed(code) { if (event(LIVE.TYPED, code, 0, 0)) typedSent++; },
     };
     liveRun = run;
     run.setSpeed(options.stepMs ? Number(options.stepMs) : 0);
@@ -451,7 +467,7 @@
     setWatches(options.watches || []);
     entry.ready.then(() => {
       if (settled) return;
-      w.postMessage({type: 'run', source, shared, options: runOptions(options), before: pending.splice(0)});
+      w.postMessage({type: 'run', id: runId, source, shared, options: runOptions(options), before: pending.splice(0)});
       begun = true;
     }, (e) => end(finishedBadly(got, 'error', e.message)));
     return run;
@@ -482,7 +498,7 @@
       return job;
     },
     // options: {io: {inputLine, messageBox, controls, serialOpen, serialSend, serialTake,
-    // serialClose}, onOutput, onFrame, onPaused, onResumed, onWaiting, onSvg, stepMs, stepping,
+    // serialClose}, onOutput, onFrame, onPaused, onResumed, onWaiting, onSvg, onState, stepMs, stepping,
     // watches, seed, maxSteps, timeout, maxMemory, svg, png}. The result's svg is null: with
     // options.svg the SVG comes after the end, to onSvg(text).
     start(source, options = {}) {

@@ -18,20 +18,30 @@ let shared = null;
 let answerText = '';  // 'async' mode: the last answer
 let watchText = '';   // 'async' mode: the watch expressions
 const waiters = new Set();  // 'async' mode: blocked hooks, checked after each message
+// The run under way (the page's number for it): every message about a run carries it, so that a
+// run's last messages (its SVG, 'idle') are never taken for the next run's, which the page may
+// start on this worker as soon as it has heard of the end.
+let runId = 0;
+const send = (m, transfer) => postMessage(Object.assign(m, {run: runId}), transfer || []);
 
 // ---- what the page sends
 let readIdx = 0;
-let keyCount = 0, lastKey = 0;
-let clicks = [], typed = [];
+// Key presses not yet taken: each answers one waitKey, in the order typed (up to 8 typed ahead);
+// a look at the held key (getKey, keyDown) drops them, as in the live terminal view
+// (docs/interaction.md). A press that came before the waitKey counts: the program may be busy,
+// or paused, when the key is typed.
+const PRESSES_AHEAD = 8;
+let presses = [], clicks = [], typed = [];
+let typedDone = 0;  // keys for an edit box taken (or dropped): the page learns which it sent are in
 function drain() {
   const widx = Atomics.load(ctrl, LIVE.WIDX);
   while (readIdx < widx) {
     const o = LIVE.RING + (readIdx % LIVE.RING_N) * 4;
     const kind = ctrl[o], a = ctrl[o + 1], b = ctrl[o + 2], c = ctrl[o + 3];
     readIdx++;
-    if (kind === LIVE.KEY) { keyCount++; lastKey = a; }
+    if (kind === LIVE.KEY) { if (presses.length < PRESSES_AHEAD) presses.push(a); }
     else if (kind === LIVE.CLICK) { if (clicks.length < 64) clicks.push([a, b, c]); }
-    else if (kind === LIVE.TYPED) { if (typed.length < 256) typed.push(a); }
+    else if (kind === LIVE.TYPED) { if (typed.length < 256) typed.push(a); else typedDone++; }
   }
   Atomics.store(ctrl, LIVE.RIDX, readIdx);
 }
@@ -77,7 +87,7 @@ const fastYield = (() => {
 let callId = 0;
 function call(name, args) {
   const id = ++callId;
-  postMessage({type: 'call', id, name, args});
+  send({type: 'call', id, name, args});
   return block(() => stopped() || Atomics.load(ctrl, LIVE.ANSWER_ID) === id, -1, () => {
     if (Atomics.load(ctrl, LIVE.ANSWER_ID) !== id) return null;
     if (mode !== 'sab') return JSON.parse(answerText);
@@ -91,46 +101,59 @@ function watches() {
   return new TextDecoder().decode(new Uint8Array(shared, LIVE.WATCH_AT, n).slice());
 }
 function waiting(what) {
-  postMessage({type: 'waiting', what});
+  send({type: 'waiting', what});
 }
 
 let pauseGo = null;  // STEPGO when the current pause began
 let framesSent = 0;
 let svg = null;
 const hooks = {
-  output: (text) => postMessage({type: 'output', text}),
+  output: (text) => send({type: 'output', text}),
   frame: (p, w, h) => {
     const rgba = new Uint8ClampedArray(M.HEAPU8.subarray(p, p + w * h * 4));
     framesSent++;
-    postMessage({type: 'frame', frame: {rgba, width: w, height: h}}, [rgba.buffer]);
+    send({type: 'frame', frame: {rgba, width: w, height: h}}, [rgba.buffer]);
   },
   // The page draws one frame in each of its own: one more may wait there, not a heap of them.
   frameWanted: () => framesSent - Atomics.load(ctrl, LIVE.DRAWN) < 2,
   svg: (text, rgba, width, height) => {
     svg = {text, rgba, width, height};
-    postMessage({type: 'svg', svg}, rgba ? [rgba.buffer] : []);
+    send({type: 'svg', svg}, rgba ? [rgba.buffer] : []);
   },
   // The run has ended (the SVG comes after).
-  finished: (json) => postMessage({type: 'done', result: JSON.parse(json)}),
-  controls: (c) => postMessage({type: 'controls', controls: c}),
+  finished: (json) => send({type: 'done', result: JSON.parse(json)}),
+  // The controls as the core has them now, with the count of the page's keys for an edit box the
+  // core has taken so far (the page's own guess of which box has the keys stands until then).
+  controls: (c) => send({type: 'controls', controls: c, typed: typedDone}),
+  state: (json) => send({type: 'state', json}),
   stopped,
   stepMs: () => Atomics.load(ctrl, LIVE.STEPUS) / 1000,
   stepping,
   // ms > 0: a delay (ended early by Stop); 0: a turn of the event loop ('async' mode only).
   yield: (ms) => (ms > 0 ? block(stopped, ms, () => undefined) : mode === 'sab' ? undefined : fastYield()),
-  heldKey: () => Atomics.load(ctrl, LIVE.HELD),
+  heldKey: () => {
+    drain();
+    presses = [];
+    return Atomics.load(ctrl, LIVE.HELD);
+  },
   mouse: () => [Atomics.load(ctrl, LIVE.MX), Atomics.load(ctrl, LIVE.MY), Atomics.load(ctrl, LIVE.MB)],
   takeClick: () => { drain(); return clicks.shift() || null; },
-  takeTyped: () => { drain(); return typed.shift() || 0; },
+  takeTyped: () => {
+    drain();
+    if (!typed.length) return 0;
+    typedDone++;
+    return typed.shift();
+  },
+  // The first press not yet taken; else the key held now; else the next press.
   waitKey: () => {
     drain();
+    if (presses.length) return presses.shift();
     const held = Atomics.load(ctrl, LIVE.HELD);
     if (held) return held;
-    const n = keyCount;
     waiting('key');
-    return block(() => { drain(); return stopped() || keyCount !== n; }, -1, () => {
+    return block(() => { drain(); return stopped() || presses.length > 0; }, -1, () => {
       waiting('');
-      return stopped() ? 0 : lastKey;
+      return stopped() ? 0 : presses.shift();
     });
   },
   waitClick: () => {
@@ -147,18 +170,18 @@ const hooks = {
   serialOpen: (n) => call('serialOpen', [n]),
   serialSend: (code, param) => call('serialSend', [code, param]),
   serialTake: (want, ms, room) => then(call('serialTake', [want, ms, room]), (a) => (a ? new Uint8Array(a) : null)),
-  serialClose: () => postMessage({type: 'call', id: 0, name: 'serialClose', args: []}),
+  serialClose: () => send({type: 'call', id: 0, name: 'serialClose', args: []}),
   // Paused: the page shows `info`; 1 when it asks for a fresh look (the watches changed).
   pause: (info) => {
     if (pauseGo === null) pauseGo = Atomics.load(ctrl, LIVE.STEPGO);
     const refresh = Atomics.load(ctrl, LIVE.REFRESH);
-    postMessage({type: 'paused', info: JSON.parse(info)});
+    send({type: 'paused', info: JSON.parse(info)});
     return block(() => stopped() || !stepping() || Atomics.load(ctrl, LIVE.STEPGO) !== pauseGo ||
                         Atomics.load(ctrl, LIVE.REFRESH) !== refresh, -1, () => {
       const again = !stopped() && stepping() && Atomics.load(ctrl, LIVE.STEPGO) === pauseGo ? 1 : 0;
       if (!again) {
         pauseGo = null;
-        postMessage({type: 'resumed'});
+        send({type: 'resumed'});
       }
       return again;
     });
@@ -200,9 +223,11 @@ onmessage = async (e) => {
       postMessage({type: 'ready'});
       return;
     case 'run': {
+      runId = m.id;
       shared = m.shared;
       ctrl = shared ? new Int32Array(shared) : new Int32Array(LIVE.BYTES / 4);
-      readIdx = keyCount = lastKey = framesSent = 0;
+      readIdx = framesSent = typedDone = 0;
+      presses = [];
       clicks = [];
       typed = [];
       answerText = watchText = '';
@@ -212,13 +237,13 @@ onmessage = async (e) => {
       try {
         r = await run(m.source, m.options, true);
       } catch (err) {
-        postMessage({type: 'failed', message: String(err && err.stack || err)});
+        send({type: 'failed', message: String(err && err.stack || err)});
         return;
       } finally {
         waiters.clear();
       }
-      if (r.result.status === 'rejected' || r.result.status === 'usage') postMessage({type: 'done', result: r.result});
-      postMessage({type: 'idle'});
+      if (r.result.status === 'rejected' || r.result.status === 'usage') send({type: 'done', result: r.result});
+      send({type: 'idle'});
       return;
     }
     default:
@@ -234,7 +259,10 @@ function take(m) {
     case 'add': ctrl[m.i]++; return true;
     case 'event': {
       const widx = ctrl[LIVE.WIDX];
-      if (widx - readIdx >= LIVE.RING_N) return true;
+      if (widx - readIdx >= LIVE.RING_N) {  // the run takes none: dropped
+        if (m.kind === LIVE.TYPED) typedDone++;
+        return true;
+      }
       const o = LIVE.RING + (widx % LIVE.RING_N) * 4;
       ctrl[o] = m.kind; ctrl[o + 1] = m.a; ctrl[o + 2] = m.b; ctrl[o + 3] = m.c;
       ctrl[LIVE.WIDX] = widx + 1;

@@ -144,7 +144,7 @@ class Recording {
   bool lastShownFlip_ = false;  ///< the last keyframe is of a flip's screen, not the canvas
   uint64_t lastFrameStep_ = 0;
   size_t frameBytes_ = 0, eventBytes_ = 0;
-  std::vector<Colour> last_;  ///< the screen of the last frame kept
+  Pixels last_;  ///< the screen of the last frame kept (large memory, as the canvas's)
   size_t sinceFull_ = 0, lastFull_ = 0;  ///< bytes of changes since the last whole frame, and its size
   bool finished_ = false;
   std::optional<Diagnostic> error_;

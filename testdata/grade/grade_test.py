@@ -88,7 +88,7 @@ EXPECTED = {
         ["no-error", "solution-output", "corners", "solution-trail", "ends-in", "solution-screen"]),
     "looping.bas": (
         "fail",
-        r"^did not finish: stopped at looping\.bas:6:7 after 100000 steps, the step limit \(max-steps = 100000 in "
+        r"^did not finish: stopped at looping\.bas:6:7 after 25000 steps, the step limit \(max-steps = 25000 in "
         r"assignment\.toml\), in the loop of lines 6-9 \(does it ever end\?\)$",
         ["no-error", "solution-output"]),
     "not_compiling.bas": (
@@ -120,7 +120,7 @@ def case_class(env):
     # Points: solution-trail is worth 2, the others 1.
     expect(programs["correct.bas"]["points"] == 8 and programs["correct.bas"]["max_points"] == 8, "points of correct.bas")
     expect(programs["off_by_one.bas"]["points"] == 4, "points of off_by_one.bas", programs["off_by_one.bas"])
-    expect(programs["looping.bas"]["steps"] == 100000, "steps of looping.bas")
+    expect(programs["looping.bas"]["steps"] == 25000, "steps of looping.bas")
     expect(doc["summary"] == {**doc["summary"], "programs": 6, "passed": 1, "failed": 5, "errors": 0, "skipped": 0},
            "summary", doc["summary"])
     # The solution itself is not graded, even in the folder given.

@@ -43,7 +43,8 @@ def expect(cond, message):
 
 
 def read_png(data):
-    """(width, height, RGB bytes) of an 8-bit PNG (RGB, RGBA or palette; alpha dropped)."""
+    """(width, height, RGB bytes) of a PNG: 8-bit RGB or RGBA (alpha dropped), or a palette of
+    1, 2, 4 or 8 bits a pixel (what rb writes where a picture has at most 256 colours)."""
     expect(data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG")
     pos, idat, palette = 8, b"", None
     width = height = ctype = 0
@@ -53,14 +54,15 @@ def read_png(data):
         pos += 12 + size
         if kind == b"IHDR":
             width, height, depth, ctype, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            expect(depth == 8 and interlace == 0, f"PNG depth {depth} interlace {interlace}")
+            expect(interlace == 0 and (depth == 8 or (ctype == 3 and depth in (1, 2, 4))),
+                   f"PNG depth {depth} colour type {ctype} interlace {interlace}")
         elif kind == b"PLTE":
             palette = body
         elif kind == b"IDAT":
             idat += body
     channels = {2: 3, 6: 4, 3: 1}[ctype]
     raw = zlib.decompress(idat)
-    stride = width * channels
+    stride = (width * channels * depth + 7) // 8  # bytes a row; the filters work on whole bytes
     rows, prev = [], bytearray(stride)
     # The "up" filter (Chromium's screenshots use only it) as whole-row arithmetic: bytes added
     # modulo 256 without carries between them.
@@ -88,6 +90,10 @@ def read_png(data):
                 line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
         rows.append(bytes(line))
         prev = line
+    if depth < 8:  # indices packed several to a byte, the leftmost pixel in the high bits
+        per, mask = 8 // depth, (1 << depth) - 1
+        rows = [bytes((row[x // per] >> ((per - 1 - x % per) * depth)) & mask for x in range(width))
+                for row in rows]
     pixels = b"".join(rows)
     if channels == 3:
         return width, height, pixels
@@ -239,8 +245,13 @@ class Browser:
         self.session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
         for domain in ["Page", "Runtime", "Log"]:
             self.call(domain + ".enable", session=True)
+        self.viewport(1280, 900)
+
+    def viewport(self, width, height, scale=1):
+        """The page's size in CSS pixels and device pixels per CSS pixel: a window of 1366x768 at
+        200% zoom is viewport(683, 384, 2)."""
         self.call("Emulation.setDeviceMetricsOverride",
-                  {"width": 1280, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session=True)
+                  {"width": width, "height": height, "deviceScaleFactor": scale, "mobile": False}, session=True)
 
     def close(self):
         try:

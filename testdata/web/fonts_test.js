@@ -13,34 +13,47 @@ if (!fs.existsSync(path.join(site, 'rb.js'))) {
 const rb = require(path.resolve(site, 'rb.js'));
 fs.mkdirSync(work, {recursive: true});
 
-// RGB rows of an 8-bit RGB or RGBA PNG, any filters.
+// RGB rows of a PNG as rb writes them (8-bit RGB or RGBA, or a palette of 1 to 8 bits: rb render's
+// pictures of at most 256 colours), any filters.
 function decodePng(buf) {
-  let pos = 8, width = 0, height = 0, channels = 3;
+  let pos = 8, width = 0, height = 0, channels = 3, depth = 8, palette = null;
   const idat = [];
   while (pos < buf.length) {
     const size = buf.readUInt32BE(pos), type = buf.toString('latin1', pos + 4, pos + 8);
     const body = buf.subarray(pos + 8, pos + 8 + size);
     if (type === 'IHDR') {
-      width = body.readUInt32BE(0); height = body.readUInt32BE(4);
-      if (body[8] !== 8 || body[12] !== 0) throw new Error('unexpected PNG depth or interlace');
-      channels = {2: 3, 6: 4}[body[9]];
+      width = body.readUInt32BE(0); height = body.readUInt32BE(4); depth = body[8];
+      channels = {2: 3, 6: 4, 3: 1}[body[9]];
       if (!channels) throw new Error(`PNG colour type ${body[9]}`);
-    } else if (type === 'IDAT') idat.push(body);
+      if (body[12] !== 0 || !(depth === 8 || (body[9] === 3 && [1, 2, 4].includes(depth))))
+        throw new Error(`unexpected PNG depth ${depth} or interlace`);
+    } else if (type === 'PLTE') palette = body;
+    else if (type === 'IDAT') idat.push(body);
     pos += 12 + size;
   }
   const raw = zlib.inflateSync(Buffer.concat(idat));
-  const stride = width * channels, out = Buffer.alloc(width * height * 3);
+  // The filters work on whole bytes: `bpp` bytes back is the pixel to the left (1 for a palette).
+  const stride = Math.ceil(width * channels * depth / 8), bpp = Math.max(1, channels * depth / 8);
+  const out = Buffer.alloc(width * height * 3);
   let prev = Buffer.alloc(stride);
   for (let y = 0; y < height; y++) {
     const f = raw[y * (stride + 1)], line = Buffer.from(raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1)));
     for (let i = 0; i < stride; i++) {
-      const a = i >= channels ? line[i - channels] : 0, b = prev[i], c = i >= channels ? prev[i - channels] : 0;
+      const a = i >= bpp ? line[i - bpp] : 0, b = prev[i], c = i >= bpp ? prev[i - bpp] : 0;
       let p = 0;
       if (f === 1) p = a; else if (f === 2) p = b; else if (f === 3) p = (a + b) >> 1;
       else if (f === 4) { const q = a + b - c, pa = Math.abs(q - a), pb = Math.abs(q - b), pc = Math.abs(q - c); p = pa <= pb && pa <= pc ? a : pb <= pc ? b : c; }
       line[i] = (line[i] + p) & 255;
     }
-    for (let x = 0; x < width; x++) for (let k = 0; k < 3; k++) out[(y * width + x) * 3 + k] = line[x * channels + k];
+    for (let x = 0; x < width; x++) {
+      if (palette) {
+        // Indices packed 8 / depth to a byte, the leftmost pixel in the high bits.
+        const per = 8 / depth, index = (line[Math.floor(x / per)] >> ((per - 1 - x % per) * depth)) & ((1 << depth) - 1);
+        for (let k = 0; k < 3; k++) out[(y * width + x) * 3 + k] = palette[index * 3 + k];
+      } else {
+        for (let k = 0; k < 3; k++) out[(y * width + x) * 3 + k] = line[x * channels + k];
+      }
+    }
     prev = line;
   }
   return {width, height, rgb: out};

@@ -181,7 +181,40 @@ def case_input_keys(env):
     expect(out == "after\n200\t,\t100\t,\t1\n", f"after the message box and the click the output was {out!r}")
     r = b.js("rb.run('input a\\ninput b\\nprint a + b\\n', {stdin: ['2', '3']}).then((r) => [r.output, r.status])")
     expect(r == ["2\n3\n5\n", "finished"], f"rb.run with stdin gave {r}")
+    # Keys typed before waitKey (during a delay) answer it, one press each, in order; a getKey
+    # drops the presses it has seen (docs/interaction.md).
+    prog = 'delay 1000\nwaitKey a\nwaitKey b\nprint a\nprint b\ngetKey k\nwaitKey c\nprint c\n'
+    b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
+    time.sleep(0.2)
+    b.js("document.getElementById('screen').focus(); true")
+    for key in "qrs":
+        tap(b, key)
+    wait_for(b, "document.getElementById('output').textContent.length > 0", "waitKey did not take the keys typed before it")
+    tap(b, "t")
+    b.js("window.__done.then(() => true)", timeout=20)
+    out = b.js("document.getElementById('output').textContent")
+    expect(out == "113\n114\n116\n", f"keys typed ahead of waitKey: the output was {out!r}")
+    # A run started the moment the one before has ended (its worker still makes that run's SVG):
+    # it runs to its end too.
+    first = "for i = 1 to 3000\n  Line i % 800, 0, 0, i % 600\nnext\n"
+    second = 'delay 200\nprint "second"\n'
+    r = b.js(f"rbPage.setSource({json.dumps(first)}); rbPage.runProgram().then(() => {{ "
+             f"rbPage.setSource({json.dumps(second)}); return rbPage.runProgram(); }})"
+             ".then(() => [rbLastRun.status, document.getElementById('output').textContent])", timeout=30)
+    expect(r == ["finished", "second\n"], f"the run started as the one before ended: {r}")
     env.expect_quiet()
+
+
+def tap(b, key, code=None):
+    """A key pressed and released on the page: a letter, or a named key with its code."""
+    down = {"type": "keyDown", "key": key, "windowsVirtualKeyCode": code or ord(key.upper())}
+    if len(key) == 1:
+        down["text"] = key
+    elif key == "Enter":
+        down["text"] = "\r"
+    b.call("Input.dispatchKeyEvent", down, session=True)
+    b.call("Input.dispatchKeyEvent", {"type": "keyUp", "key": key, "windowsVirtualKeyCode": down["windowsVirtualKeyCode"]},
+           session=True)
 
 
 def case_share(env):
@@ -595,12 +628,13 @@ def wait_for(b, expression, what, timeout=20):
 def case_controls(env):
     """The program's buttons and edit boxes show over the screen where the program put them; a
     click on an edit box gives it the keys typed next (Backspace deletes, Enter gives the keyboard
-    back), a click on a button presses it: core/input's rules, as in the live terminal view."""
+    back), a click on a button presses it: core/input's rules, as in the live terminal view. A Tab
+    right after the Enter moves the focus on, though the run (in a delay) has not taken the keys yet."""
     b = env.open()
     prog = ('AddButton "Go", 100, 100\nAddEdit "Name", 100, 200, 120, "Bob"\n'
-            'repeat\n  GetButton b\nuntil b = "Go"\nprint "name=" + GetEdit("Name")\n')
+            'repeat\n  GetButton b\n  delay 300\nuntil b = "Go"\nprint "name=" + GetEdit("Name")\n')
     b.js(f"rbPage.setSource({json.dumps(prog)}); window.__done = rbPage.runProgram(); true")
-    shown = ("[...document.querySelectorAll('#controls > div')].map((d) => [d.className, d.textContent, "
+    shown = ("[...document.querySelectorAll('#controls > *')].map((d) => [d.className, d.textContent, "
              "(() => { const r = d.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()])")
     wait_for(b, f"{shown}.length === 2", "the button and the edit box did not appear")
     controls = b.js(shown)
@@ -613,12 +647,10 @@ def case_controls(env):
            f"the edit box is at {got}, not at {(left, top, right, bottom)}")
     click(b, 150, 210)
     wait_for(b, "document.querySelector('#controls .rb-edit.focus') !== null", "the edit box did not take the keyboard")
-    for key, code, text in (("Backspace", 8, ""), ("x", 88, "x"), ("y", 89, "y"), ("Enter", 13, "\r")):
-        down = {"type": "keyDown", "key": key, "windowsVirtualKeyCode": code}
-        if text:
-            down["text"] = text
-        b.call("Input.dispatchKeyEvent", down, session=True)
-        b.call("Input.dispatchKeyEvent", {"type": "keyUp", "key": key, "windowsVirtualKeyCode": code}, session=True)
+    for key, code in (("Backspace", 8), ("x", 88), ("y", 89), ("Enter", 13), ("Tab", 9)):
+        tap(b, key, code)
+    focus = b.js("document.activeElement.id || document.activeElement.dataset.name")
+    expect(focus == "Go", f"Tab right after Enter in the edit box went to {focus!r}, not the program's button")
     wait_for(b, "(() => { const e = document.querySelector('#controls .rb-edit'); "
                 "return e.textContent === 'Boxy' && !e.classList.contains('focus'); })()",
              f"the edit box shows {b.js(shown)}")

@@ -105,7 +105,7 @@ EMSCRIPTEN_KEEPALIVE char* rb_check(const char* source) {
 /// Runs a program to its end. `stdinLines`: the lines `input` reads, each ended by "\n";
 /// `keys`: a --keys text ("" none); limits as rb run's options (0: none); `svg`: the final screen
 /// as SVG too (WebHost::presentSvg). Returns JSON:
-/// {status, diagnostics (load), error (runtime), steps}.
+/// {status, diagnostics (load), error (runtime), steps, rngUsed, state (WebHost::stateJson at the end)}.
 EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, const char* keys,
                                   double seed, double maxSteps, double timeoutSeconds,
                                   double maxMemoryMiB, int live, int svg) {
@@ -157,6 +157,7 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
   appendJsonString(out, status);
   out += ",\"steps\":" + std::to_string(result.steps);
   out += ",\"rngUsed\":" + std::string(machine.rngUsed() ? "true" : "false");
+  out += ",\"state\":" + host.stateJson();
   if (result.error && result.status != RunStatus::Stopped) {
     out += ",\"error\":";
     jsonDiagnostic(out, l->program->sources, *result.error);

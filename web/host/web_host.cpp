@@ -4,12 +4,14 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "robot_image.h"
 #include "robot_view.h"
 #include "json_text.h"
 #include "svg_writer.h"
+#include "base/number.h"
 #include "base/runtime_error.h"
 #include "lang/value.h"
 #include "machine/watch.h"
@@ -44,6 +46,8 @@ EM_JS(char*, rb_js_watches, (), {
   stringToUTF8(text, p, size);
   return p;
 });
+// The state the page's text alternative of the screen reads (WebHost::stateJson).
+EM_JS(void, rb_js_state, (const char* json, int size), { if (Module.rbHooks.state) Module.rbHooks.state(UTF8ToString(json, size)); });
 EM_JS(void, rb_js_frame, (const uint8_t* rgba, int width, int height), { Module.rbHooks.frame(rgba, width, height); });
 EM_JS(void, rb_js_finished, (const char* json, int size), {
   if (Module.rbHooks.finished) Module.rbHooks.finished(UTF8ToString(json, size));
@@ -125,6 +129,21 @@ constexpr double kFrameMs = 16;
 constexpr double kShortestSleepMs = 10;
 /// How far the virtual clock moves each time the program reads it (as HeadlessHost).
 constexpr double kClockReadMs = 1.0;
+/// The most of a printed line the state keeps (bytes).
+constexpr size_t kPrintedCap = 200;
+
+/// `s` cut to kPrintedCap bytes, not inside a UTF-8 character.
+void capPrinted(std::string& s) {
+  if (s.size() <= kPrintedCap) return;
+  size_t n = kPrintedCap;
+  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+  s.resize(n);
+}
+
+bool blank(std::string_view s) { return s.find_first_not_of(" \t\r") == std::string_view::npos; }
+
+/// A number as rb prints it, to a tenth (the pose).
+std::string tenths(double v) { return formatNumber(std::round(v * 10) / 10); }
 }  // namespace
 
 WebHost::WebHost(bool live, std::vector<std::string> stdinLines, InputScript script)
@@ -139,14 +158,75 @@ void WebHost::attachMachine(Machine& machine) {
   if (live_) stepping_ = rb_js_stepping() != 0;
   setWantsLines(stepping_);
   script_.useControls(&machine.controls);
+  machine.setObserver(this);  // the sensors' readings, for the state
 }
 
 void WebHost::output(std::string_view text) {
   out_ += text;
   if (out_.size() >= (1u << 16)) flushOutput();
+  // The last line printed that is not blank, and the one being printed.
+  size_t at = 0;
+  for (size_t end; (end = text.find('\n', at)) != std::string_view::npos; at = end + 1) {
+    if (lineNow_.size() < kPrintedCap) lineNow_ += text.substr(at, std::min(end - at, kPrintedCap));
+    capPrinted(lineNow_);
+    if (!blank(lineNow_)) {
+      if (!lineNow_.empty() && lineNow_.back() == '\r') lineNow_.pop_back();
+      lastLine_ = std::move(lineNow_);
+    }
+    lineNow_.clear();
+  }
+  if (at < text.size() && lineNow_.size() < kPrintedCap) {
+    lineNow_ += text.substr(at, std::min(text.size() - at, kPrintedCap));
+    capPrinted(lineNow_);
+  }
   // Printing can be slow (into a full screen, each line scrolls it): the page is looked at
   // between the checkpoints too.
   if (live_) yieldToPage(false);
+}
+
+void WebHost::robotEvent(const RobotEvent& e) {
+  if (e.kind != RobotEvent::Sensor || !e.value) return;
+  auto it = readings_.find(e.command);
+  if (it == readings_.end()) it = readings_.emplace(std::string(e.command), Reading{}).first;
+  it->second = {*e.value, e.loc.line, ++readingCount_};
+}
+
+std::string WebHost::stateJson() const {
+  std::string json = "{\"line\":" + std::to_string(machine_ ? machine_->location().line : 0);
+  if (machine_) {
+    const Robot& robot = machine_->robot();
+    json += ",\"placed\":" + std::string(robot.located() ? "true" : "false");
+    if (robot.located()) {
+      const Pose& pose = robot.pose();
+      json += ",\"x\":\"" + tenths(pose.pos.x()) + "\",\"y\":\"" + tenths(pose.pos.y()) + "\",\"heading\":\"" +
+              tenths(pose.heading) + "\",\"pen\":" + (robot.penDown() ? "true" : "false");
+    }
+  }
+  std::vector<std::pair<const std::string*, const Reading*>> order;
+  for (const auto& [name, reading] : readings_) order.emplace_back(&name, &reading);
+  std::sort(order.begin(), order.end(), [](auto& a, auto& b) { return a.second->order > b.second->order; });
+  json += ",\"sensors\":[";
+  for (size_t i = 0; i < order.size(); ++i) {
+    if (i) json += ',';
+    json += "{\"name\":";
+    render::appendJsonString(json, *order[i].first);
+    json += ",\"value\":\"" + formatNumber(order[i].second->value) + "\",\"line\":" +
+            std::to_string(order[i].second->line) + "}";
+  }
+  json += "],\"printed\":";
+  render::appendJsonString(json, blank(lineNow_) ? lastLine_ : lineNow_);
+  return json + "}";
+}
+
+void WebHost::presentState(bool force) {
+  if (!live_ || !machine_) return;
+  const double now = wallSeconds() * 1000;
+  if (!force && now - lastStateMs_ < kStateEveryMs) return;
+  lastStateMs_ = now;
+  std::string json = stateJson();
+  if (json == stateJson_) return;
+  stateJson_ = std::move(json);
+  rb_js_state(stateJson_.data(), static_cast<int>(stateJson_.size()));
 }
 
 void WebHost::flushOutput() {
@@ -183,6 +263,7 @@ void WebHost::yieldToPage(bool force) {
   if (!force && now - lastYieldMs_ < (live_ ? kLiveSliceMs : kHeadlessSliceMs)) return;
   checkLimits();
   flushOutput();
+  presentState(false);
   if (live_ && now - lastFrameMs_ >= kFrameMs) {
     present(false);
     lastFrameMs_ = now;
@@ -219,6 +300,7 @@ void WebHost::onLine(SourceLoc loc) {
 void WebHost::pauseAt(SourceLoc loc, const char* where) {
   flushOutput();
   present();
+  presentState(true);
   const auto began = std::chrono::steady_clock::now();
   while (!stopRequested()) {
     const std::string info = debugJson(loc, where);
@@ -333,6 +415,7 @@ void WebHost::wait(double ms) {
   // The screen as it is, unless the page has not drawn the frame before (robot motion sleeps
   // every few milliseconds: the page gets frames as fast as it draws them, no faster).
   present(false);
+  presentState(false);
   // In pieces, so that a Stop during a long delay ends it within one piece.
   while (sleepDebtMs_ > 0 && !stopRequested()) {
     double piece = std::min(sleepDebtMs_, 50.0);
@@ -385,6 +468,7 @@ std::optional<std::string> WebHost::inputLine(std::string_view prompt) {
   }
   flushOutput();
   present();
+  presentState(true);
   std::string promptText(prompt);
   char* p = rb_js_input_line(promptText.c_str());
   if (rb_js_stopped()) requestStop();
@@ -406,6 +490,7 @@ int64_t WebHost::waitKey(std::string_view who) {
   if (!live_) return script_.waitKey(who);
   flushOutput();
   present();
+  presentState(true);
   int64_t key = rb_js_wait_key();
   if (rb_js_stopped()) requestStop();
   return key;
@@ -423,6 +508,7 @@ MouseState WebHost::waitClick(std::string_view who) {
   if (!live_) return script_.waitClick(who);
   flushOutput();
   present();
+  presentState(true);
   int m[3] = {0, 0, 0};
   rb_js_wait_click(m);
   if (rb_js_stopped()) requestStop();
@@ -480,6 +566,7 @@ void WebHost::messageBox(std::string_view text, std::string_view title) {
   }
   flushOutput();
   present();
+  presentState(true);
   std::string t(text), h(title);
   rb_js_message_box(t.c_str(), h.c_str());
   if (rb_js_stopped()) requestStop();
