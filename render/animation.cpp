@@ -1334,7 +1334,7 @@ function start(d) {
   }
   function describe(i) {
     const f = d.flags[i];
-    const parts = ['Step ' + (i + 1) + ' of ' + n + (i === n - 1 ? ', the end: ' + endText()
+    const parts = ['Step ' + (i + 1) + ' of ' + n + (i === n - 1 ? ', the end: ' + endText().replace(/\.?$/, '.')
         : ', ' + where(d.file[i], d.line[i]) + ' about to run.')];
     parts.push(f & 1 ? 'Robot at x ' + num(d.qx[i] / meta.posQ) + ', y ' + num(d.qy[i] / meta.posQ) + ', heading ' +
         num(d.qh[i] / meta.posQ) + ' degrees, pen ' + (f & 2 ? 'down' : 'up') + '.' : 'The robot is not placed yet.');

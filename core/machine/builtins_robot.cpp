@@ -37,6 +37,7 @@ constexpr double kMaxDegrees = 1e6;
 
 /// Every sensor reads a whole number.
 Value sensor(Machine& m, Args& a, double v) {
+  m.noteReading(a.builtin().name, v);
   report(m, RobotEvent::Sensor, a, v);
   return Value::integer(static_cast<int64_t>(v));
 }

@@ -201,3 +201,30 @@ TEST_CASE("polygon and mPolygon look at the run's limits between the edges of an
   std::vector<Value> mRows{rows};
   CHECK_THROWS_AS(call(m, "mPolygon", BuiltinKind::Command, mRows), DeadlinePassed);
 }
+
+TEST_CASE("the machine keeps each sensor's last reading and the statement that read it", "[builtins]") {
+  test::TestHost host;
+  Machine m(host, 1);
+  CHECK(m.lastReadings().empty());
+  std::vector<Value> locate{Value::integer(400), Value::integer(40)};
+  call(m, "rLocate", BuiltinKind::Command, locate);
+  std::vector<Value> none;
+  m.setLocation({0, 3, 1});
+  CHECK(call(m, "rFeel", BuiltinKind::Function, none).i() == 0);
+  m.setLocation({0, 4, 1});
+  std::vector<Value> ahead;
+  const int64_t range = call(m, "rRange", BuiltinKind::Function, ahead).i();
+  m.setLocation({0, 5, 1});
+  std::vector<Value> turn{Value::integer(-180)};
+  call(m, "rTurn", BuiltinKind::Command, turn);  // no reading
+  m.setLocation({0, 6, 1});
+  call(m, "rFeel", BuiltinKind::Function, none);
+  const std::vector<SensorReading>& r = m.lastReadings();
+  REQUIRE(r.size() == 2);  // one per sensor, in the order first read
+  CHECK(r[0].name == "rFeel");
+  CHECK(r[0].loc.line == 6);
+  CHECK(r[1].name == "rRange");
+  CHECK(r[1].value == static_cast<double>(range));
+  CHECK(r[1].loc.line == 4);
+  CHECK(r[0].order > r[1].order);  // rFeel was read last
+}

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "screen/canvas.h"
 #include "machine/host.h"
@@ -30,6 +31,14 @@ struct RobotEvent {
   Pose pose;                  ///< the robot's pose after the event
   bool pen = false;
   std::optional<double> value;  ///< a sensor's reading
+};
+
+/// What the program last read from one sensor built-in (rFeel, rRange, rBumper...).
+struct SensorReading {
+  std::string_view name;  ///< the built-in's name (the built-in table's own text)
+  double value = 0;
+  SourceLoc loc;          ///< the statement that read it
+  uint64_t order = 0;     ///< the readings made when it was read: the latest has the most
 };
 
 class RobotObserver {
@@ -93,6 +102,21 @@ class Machine {
   SourceLoc location() const { return location_; }
   void setLocation(SourceLoc loc) { location_ = loc; }
 
+  /// Notes what a sensor built-in read (each sensor's last reading is kept, for views that say
+  /// it, as the web page's text of the screen does; no observer and no text needed). `sensor`
+  /// is the built-in table's own name: the same text is always at the same address.
+  void noteReading(std::string_view sensor, double value) {
+    ++readings_;
+    for (SensorReading& r : lastReadings_)
+      if (r.name.data() == sensor.data()) {
+        r.value = value, r.loc = location_, r.order = readings_;
+        return;
+      }
+    lastReadings_.push_back({sensor, value, location_, readings_});
+  }
+  /// Each sensor's last reading, in the order the sensors were first read.
+  const std::vector<SensorReading>& lastReadings() const { return lastReadings_; }
+
   void setObserver(RobotObserver* o) { observer_ = o; }
   bool observed() const { return observer_ != nullptr; }
   /// Reports a robot event to the observer, if any, filling in pose, pen and location.
@@ -149,6 +173,8 @@ class Machine {
   std::unique_ptr<RealRobot> real_;
   SourceLoc location_;
   RobotObserver* observer_ = nullptr;
+  std::vector<SensorReading> lastReadings_;
+  uint64_t readings_ = 0;
   uint64_t prints_ = 0;           ///< print calls so far
   uint64_t promptPrintedAt_ = 0;  ///< prints_ right after printPrompt last printed
   std::string lastPrompt_;

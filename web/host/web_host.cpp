@@ -158,7 +158,6 @@ void WebHost::attachMachine(Machine& machine) {
   if (live_) stepping_ = rb_js_stepping() != 0;
   setWantsLines(stepping_);
   script_.useControls(&machine.controls);
-  machine.setObserver(this);  // the sensors' readings, for the state
 }
 
 void WebHost::output(std::string_view text) {
@@ -184,13 +183,6 @@ void WebHost::output(std::string_view text) {
   if (live_) yieldToPage(false);
 }
 
-void WebHost::robotEvent(const RobotEvent& e) {
-  if (e.kind != RobotEvent::Sensor || !e.value) return;
-  auto it = readings_.find(e.command);
-  if (it == readings_.end()) it = readings_.emplace(std::string(e.command), Reading{}).first;
-  it->second = {*e.value, e.loc.line, ++readingCount_};
-}
-
 std::string WebHost::stateJson() const {
   std::string json = "{\"line\":" + std::to_string(machine_ ? machine_->location().line : 0);
   if (machine_) {
@@ -202,16 +194,18 @@ std::string WebHost::stateJson() const {
               tenths(pose.heading) + "\",\"pen\":" + (robot.penDown() ? "true" : "false");
     }
   }
-  std::vector<std::pair<const std::string*, const Reading*>> order;
-  for (const auto& [name, reading] : readings_) order.emplace_back(&name, &reading);
-  std::sort(order.begin(), order.end(), [](auto& a, auto& b) { return a.second->order > b.second->order; });
+  // Each sensor's last reading (the machine keeps them), the latest first.
+  std::vector<SensorReading> readings;
+  if (machine_) readings = machine_->lastReadings();
+  std::sort(readings.begin(), readings.end(),
+            [](const SensorReading& a, const SensorReading& b) { return a.order > b.order; });
   json += ",\"sensors\":[";
-  for (size_t i = 0; i < order.size(); ++i) {
+  for (size_t i = 0; i < readings.size(); ++i) {
     if (i) json += ',';
     json += "{\"name\":";
-    render::appendJsonString(json, *order[i].first);
-    json += ",\"value\":\"" + formatNumber(order[i].second->value) + "\",\"line\":" +
-            std::to_string(order[i].second->line) + "}";
+    render::appendJsonString(json, readings[i].name);
+    json += ",\"value\":\"" + formatNumber(readings[i].value) + "\",\"line\":" +
+            std::to_string(readings[i].loc.line) + "}";
   }
   json += "],\"printed\":";
   render::appendJsonString(json, blank(lineNow_) ? lastLine_ : lineNow_);

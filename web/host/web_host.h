@@ -18,7 +18,6 @@
 
 #include <chrono>
 #include <deque>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,7 +30,7 @@
 
 namespace rb::web {
 
-class WebHost : public Host, public RobotObserver {
+class WebHost : public Host {
  public:
   WebHost(bool live, std::vector<std::string> stdinLines, InputScript script);
 
@@ -63,8 +62,6 @@ class WebHost : public Host, public RobotObserver {
   /// port), with the protocol and the messages of `rb run --real` (core/robot/reply_check.h).
   std::unique_ptr<RobotLink> openRobot(int64_t port) override;
 
-  /// Hears the robot's sensor readings (the machine's observer), for the state the page shows.
-  void robotEvent(const RobotEvent& e) override;
   /// What the page's text alternative of the screen says, as JSON: the statement running, the
   /// robot's pose and pen, the last reading of each sensor the program read (most recent
   /// first) and the last line the program printed. Numbers as rb prints them (formatNumber),
@@ -144,15 +141,6 @@ class WebHost : public Host, public RobotObserver {
   std::string controlsJson_;  ///< what the page was last shown of the controls
   std::string stateJson_;     ///< what the page was last given of the state
   double lastStateMs_ = -1000;
-  /// The last reading of each sensor: its value, the line that read it and when (a count of
-  /// readings, for the order).
-  struct Reading {
-    double value = 0;
-    uint32_t line = 0;
-    uint64_t order = 0;
-  };
-  std::map<std::string, Reading, std::less<>> readings_;
-  uint64_t readingCount_ = 0;
   std::string lineNow_;   ///< the line being printed (no line end yet)
   std::string lastLine_;  ///< the last line printed whole
   /// What the last frame showed: the screen's version and flips, the robot.
