@@ -8,6 +8,7 @@ import {EditorView, Decoration, keymap, lineNumbers, highlightActiveLine, highli
 import {defaultKeymap, history, historyKeymap, indentWithTab} from '@codemirror/commands';
 import {StreamLanguage, syntaxHighlighting, defaultHighlightStyle, bracketMatching} from '@codemirror/language';
 import {setDiagnostics, lintGutter} from '@codemirror/lint';
+import {helpExtensions, setUpReference} from './help.mjs';
 
 const KEYWORDS = new Set(('if then else elseif endif for to step next while wend repeat until do loop ' +
   'gosub goto return sub call end print input and or not mod xor break continue case select ' +
@@ -62,11 +63,14 @@ const errorLine = StateField.define({
   provide: (f) => EditorView.decorations.from(f),
 });
 
+setUpReference();  // the command reference (web/help.mjs)
+
 window.RbEditor = {
   create(parent, {doc, onChange, onRun}) {
     const extensions = [
       lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), highlightActiveLine(),
       bracketMatching(), robotBasic, syntaxHighlighting(defaultHighlightStyle), lintGutter(), errorLine,
+      ...helpExtensions(),
       keymap.of([{key: 'Mod-Enter', run: () => { onRun(); return true; }}, indentWithTab,
                  ...defaultKeymap, ...historyKeymap]),
       EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),

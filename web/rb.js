@@ -479,7 +479,16 @@
             png: null, svg: null};
   }
 
+  let builtinsPromise = null;
   const rb = {
+    // The built-in table (api.cpp's rb_builtins: name, kind, group, usage, help, value, tier and
+    // evidence), what the page's help shows (web/help.mjs).
+    builtins() {
+      if (!builtinsPromise) {
+        builtinsPromise = core().then((M) => JSON.parse(takeString(M, M.ccall('rb_builtins', 'number', [], []))));
+      }
+      return builtinsPromise;
+    },
     async check(source) {
       const M = await core();
       const p = cString(M, source);

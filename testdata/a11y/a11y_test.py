@@ -283,10 +283,18 @@ def page(s, url):
 
     # The order Tab follows, from the top: every control, the editor, the screen, the output.
     s.js("document.activeElement.blur(); window.scrollTo(0, 0); true")
-    stops = s.tab_order(17, "the page")
+    stops = s.tab_order(18, "the page")
     in_order(stops, ["skip", "programs", "summary:programMenu", "examples", "open", "save", "share", "run", "speed",
-                     "png", "summary:limits", "summary:keys", "editor", "screen", "larger", "fullscreen", "outputPane"],
+                     "png", "summary:limits", "summary:keys", "help", "editor", "screen", "larger", "fullscreen",
+                     "outputPane"],
              "the page")
+    # The command reference: a dialog, its search box takes the focus; Esc closes it.
+    s.js("document.getElementById('help').click(); true")
+    s.wait_for("document.querySelectorAll('#referenceList li').length > 0", "the command reference shows nothing")
+    expect(s.focus()[0] == "referenceSearch", f"the command reference's search box does not have the focus: {s.focus()}")
+    s.axe("the command reference open")
+    s.key("Escape")
+    expect(not s.js("document.getElementById('reference').open"), "Esc does not close the command reference")
     # The keys menu names the page's keys.
     keys = s.js("document.getElementById('keys').textContent")
     for k in ["Ctrl+Enter", "Ctrl+,", "Ctrl+;", "Ctrl+."]:

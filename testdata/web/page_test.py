@@ -842,8 +842,104 @@ def case_svg(env):
     env.expect_quiet()
 
 
+def word_point(b, word):
+    """The page coordinates of the middle of the first `word` shown in the editor."""
+    return b.js(f"""(() => {{
+      const w = {json.dumps(word)};
+      const walk = document.createTreeWalker(document.querySelector('.cm-content'), NodeFilter.SHOW_TEXT);
+      for (let n = walk.nextNode(); n; n = walk.nextNode()) {{
+        const i = n.textContent.indexOf(w);
+        if (i < 0) continue;
+        const r = document.createRange();
+        r.setStart(n, i); r.setEnd(n, i + w.length);
+        const b = r.getBoundingClientRect();
+        return [b.left + b.width / 2, b.top + b.height / 2];
+      }}
+      return null;
+    }})()""")
+
+
+def case_help(env):
+    """Help from rb's built-in table (the core's, as the language server reads it): completion as
+    you type (a command at a statement's start with its usage and help, functions in an
+    expression), hover (usage, help, group and kind), the searchable command reference, and every
+    example of the Examples menu runs without an error (the book's figures and the ones beyond)."""
+    b = env.open()
+    rows = b.js("rb.builtins()")
+    fwd = next((r for r in rows if r["name"] == "rForward"), None)
+    expect(len(rows) > 100 and fwd and fwd["usage"] == "rForward distance" and fwd["tier"] == "confirmed",
+           f"rb.builtins(): {len(rows)} rows, rForward {fwd}")
+    # Completion: typing "rFor" at a statement's start offers rForward with its usage.
+    b.js("rbPage.setSource(''); document.querySelector('.cm-content').focus(); true")
+    for c in "rFor":
+        tap(b, c)
+    wait_for(b, "document.querySelector('.cm-tooltip-autocomplete') !== null", "typing rFor shows no completion")
+    shown = b.js("document.querySelector('.cm-tooltip-autocomplete').textContent")
+    expect("rForward" in shown and "rForward distance" in shown, f"the completion shows {shown!r}")
+    info = b.js("(document.querySelector('.cm-completionInfo') || {}).textContent || ''")
+    expect(info == fwd["help"], f"the completion's help is {info!r}, not {fwd['help']!r}")
+    time.sleep(0.2)  # (an Enter within 75 ms of the list showing is not taken: CodeMirror's guard)
+    tap(b, "Enter", 13)
+    expect(b.js("rbPage.source") == "rForward", f"Enter did not take the completion: {b.js('rbPage.source')!r}")
+    # In an expression: functions, not commands.
+    b.js("rbPage.setSource('x = '); document.querySelector('.cm-content').focus(); true")
+    b.js("(() => { const s = getSelection(); const c = document.querySelector('.cm-line'); "
+         "s.collapse(c.firstChild, c.firstChild.length); return true; })()")
+    for c in "rF":
+        tap(b, c)
+    wait_for(b, "document.querySelector('.cm-tooltip-autocomplete') !== null", "typing x = rF shows no completion")
+    labels = b.js("[...document.querySelectorAll('.cm-completionLabel')].map((e) => e.textContent)")
+    expect("rFeel" in labels and "rForward" not in labels, f"in an expression the completion offers {labels}")
+    tap(b, "Escape", 27)
+    # Hover over rForward: its usage, help, group and kind.
+    b.js("rbPage.setSource('rLocate 400, 300\\nrForward 50\\n'); true")
+    time.sleep(0.2)
+    x, y = word_point(b, "rForward")
+    b.call("Input.dispatchMouseEvent", {"type": "mouseMoved", "x": x, "y": y}, session=True)
+    wait_for(b, "document.querySelector('.cm-tooltip-hover .rb-hover') !== null", "no hover over rForward")
+    text = b.js("document.querySelector('.cm-tooltip-hover').textContent")
+    expect("rForward distance" in text and fwd["help"] in text and "robot command" in text,
+           f"the hover over rForward says {text!r}")
+    # The command reference: a search narrows it; each row has the usage, the help and the evidence.
+    b.js("document.getElementById('help').click(); true")
+    wait_for(b, "document.querySelectorAll('#referenceList li').length === " + str(len(rows)), "the reference lists not every built-in")
+    b.js("document.getElementById('referenceSearch').focus(); true")
+    for c in "bumper":
+        tap(b, c)
+    wait_for(b, "document.querySelectorAll('#referenceList li').length < 10", "the search does not narrow the reference")
+    found = b.js("[...document.querySelectorAll('#referenceList li')].map((e) => e.textContent)")
+    bumper = [t for t in found if t.startswith("rBumper()")]
+    expect(bumper and "1 rear, 2 right, 4 front, 8 left" in bumper[0] and "robot function" in bumper[0]
+           and "a RobotBASIC source shows it" in bumper[0], f"the reference's rows for 'bumper': {found}")
+    count = b.js("document.getElementById('referenceCount').textContent")
+    expect(count == f"{len(found)} of {len(rows)} built-ins", f"the reference's count says {count!r}")
+    tap(b, "Escape", 27)
+    # Every example runs without an error, at the fastest speed; those that wait for keys or
+    # buttons are stopped after a while. (Figure 1.9 as printed is an error on purpose, and both
+    # forms of Figure 1.13 include RB-9.bas, which a page has not: rb run's examples.)
+    b.js("document.getElementById('speed').value = '10'; document.getElementById('speed').dispatchEvent(new Event('input')); true")
+    names = b.js("RB_EXAMPLES.map((e) => e.name)")
+    for want in ("keys", "buttons", "sensors", "bumper_roamer", "line_follower", "maze"):
+        expect(want in names, f"the Examples menu has no {want}: {names}")
+    for i, name in enumerate(names):
+        if name in ("fig_1_9", "fig_1_13", "fig_1_13_sim"):
+            continue
+        b.js(f"(() => {{ const s = document.getElementById('examples'); s.value = '{i}'; "
+             "s.dispatchEvent(new Event('change')); return true; })()")
+        r = b.js("""(async () => {
+          const done = rbPage.runProgram();
+          await Promise.race([done, new Promise((r) => setTimeout(r, 2000))]);
+          rbPage.stopProgram();
+          await done;
+          return [rbLastRun.status, rbLastRun.error];
+        })()""", timeout=60)
+        expect(r[0] in ("finished", "stopped") and not r[1], f"the example {name} ended {r}")
+    env.expect_quiet()
+
+
 CASES = {"never_frozen": case_never_frozen, "debugger": case_debugger, "screen": case_screen, "loads": case_loads, "square": case_square, "input_keys": case_input_keys, "share": case_share, "programs": case_programs,
-         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial, "offline": case_offline}
+         "stop": case_stop, "step": case_step, "error_line": case_error_line, "svg": case_svg, "controls": case_controls, "serial": case_serial, "offline": case_offline,
+         "help": case_help}
 
 
 def main():

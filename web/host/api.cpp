@@ -96,6 +96,42 @@ using namespace rb::web;
 
 extern "C" {
 
+/// The built-in table the page's help reads (completion, hover and the command reference: the
+/// rows the language server's completion and hover read, web/help.mjs): a JSON array, one object
+/// a row: name, kind (command, function, constant), group, usage, help, value (constants), and
+/// the evidence as docs/builtins.md gives it: tier (confirmed, recalled, own) and its text.
+EMSCRIPTEN_KEEPALIVE char* rb_builtins() {
+  std::string out = "[";
+  for (const Builtin& b : standardBuiltins().rows()) {
+    if (out.size() > 1) out += ',';
+    const char* kind = b.kind == BuiltinKind::Command ? "command" : b.kind == BuiltinKind::Function ? "function" : "constant";
+    out += "{\"name\":";
+    appendJsonString(out, b.name);
+    out += ",\"kind\":";
+    appendJsonString(out, kind);
+    out += ",\"group\":";
+    appendJsonString(out, b.group);
+    out += ",\"usage\":";
+    appendJsonString(out, b.usage());
+    out += ",\"help\":";
+    appendJsonString(out, b.help);
+    if (b.kind == BuiltinKind::Constant) out += ",\"value\":" + std::to_string(b.constant);
+    const Evidence& e = b.evidence;
+    out += ",\"tier\":";
+    appendJsonString(out, e.confirmed() ? "confirmed" : e.own() ? "own" : "recalled");
+    out += ",\"source\":";
+    appendJsonString(out, e.source);
+    out += ",\"recalled\":";
+    appendJsonString(out, e.recalled);
+    out += ",\"reason\":";
+    appendJsonString(out, e.reason);
+    out += ",\"instead\":";
+    appendJsonString(out, e.instead);
+    out += '}';
+  }
+  return give(out + "]");
+}
+
 /// The diagnostics `rb check` gives for the program, as a JSON array.
 EMSCRIPTEN_KEEPALIVE char* rb_check(const char* source) {
   auto l = load(source, true, false);
