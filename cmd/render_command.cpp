@@ -38,6 +38,7 @@ struct RenderOptions {
   render::AnimationOptions animation;
   std::optional<double> duration;
   std::optional<uint64_t> every;
+  bool noGlide = false;  ///< --no-glide
 };
 
 enum class Format { Png, Svg, Text };
@@ -216,6 +217,7 @@ int executeRender(const RenderOptions& opts) {
     options.scale = opts.scale;
     options.duration = opts.duration;
     options.every = opts.every;
+    options.glide = !opts.noGlide;
     std::string error;
     if (!render::writeAnimation(opts.animate, *recording, source, options, error)) {
       std::fprintf(stderr, "rb render: --animate: %s\n", error.c_str());
@@ -286,6 +288,15 @@ void addRenderCommand(CLI::App& app, int& exitCode, bool withOptions) {
       ->check(numberFrom(1, 1e18, true))
       ->needs(animate);
   every->excludes(duration);
+  render->add_flag("--autoplay", opts->animation.autoplay,
+                   "The HTML player starts playing once it is opened and in view (not when the viewer "
+                   "asks for reduced motion); its 'play on opening' box, once ticked or cleared, "
+                   "decides instead on that computer")
+      ->needs(animate);
+  render->add_flag("--no-glide", opts->noGlide,
+                   "One frame per visible change only: long moves and turns are not shown in frames "
+                   "of their own")
+      ->needs(animate);
   render->add_option("--hold", opts->animation.hold,
                      "Seconds the GIF shows its last frame before it loops (0 to 600, default 2)")
       ->type_name("S")

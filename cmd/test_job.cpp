@@ -419,8 +419,11 @@ int executeJob(JobOptions opts) {
         render::PlayerSource source{std::filesystem::path(main.name()).filename().string(), main.text(), 0};
         std::string error;
         try {
+          // The report's replays play once they come into view (docs/teaching.md).
+          render::AnimationOptions replayOptions;
+          replayOptions.autoplay = true;
           std::string bytes = render::encodeAnimation(render::animationFormat(opts.replay), *recording, source,
-                                                      render::AnimationOptions{});
+                                                      replayOptions);
           if (!replayFile.write(bytes, error)) std::fprintf(stderr, "rb test-job: %s\n", error.c_str());
         } catch (const std::exception& e) {
           std::fprintf(stderr, "rb test-job: cannot make the replay: %s\n", e.what());

@@ -37,6 +37,128 @@ RobotView robotOf(const RecordedStep& s) {
   return v;
 }
 
+// The page draws the robot itself from the pose, as render/robot_image.h does: the centre and
+// radius in 1/1024 pixels, the heading's unit vector in 1/2^20, all exact in a double, so the
+// page's arithmetic (IEEE doubles, no fused multiply-add: this file is compiled with
+// -ffp-contract=off) is the same as PlayerRobot's here. Where those rounded values cover other
+// pixels than the exact pose does (a pixel centre within a rounding of the rim), the step
+// carries the pixels that differ, so the page's robot is rb render's, pixel for pixel.
+constexpr double kPosQ = 1024;
+constexpr double kDirQ = 1048576;
+constexpr double kMaxQuantized = 1e15;  // below 2^53: exact in the page's numbers
+
+struct QuantizedPose {
+  bool visible = false;  ///< RobotImage draws it and the values fit
+  int64_t x = 0, y = 0, r = 0, dx = 0, dy = 0, heading = 0;
+};
+
+int64_t quantize(double v, double scale) {
+  const double q = v * scale;
+  return std::isfinite(q) && std::fabs(q) < kMaxQuantized ? std::llround(q) : 0;
+}
+
+QuantizedPose quantizePose(const RecordedStep& s) {
+  QuantizedPose q;
+  q.x = quantize(s.x, kPosQ);
+  q.y = quantize(s.y, kPosQ);
+  q.r = quantize(s.radius, kPosQ);
+  q.heading = quantize(std::isfinite(s.heading) ? std::fmod(s.heading, 360.0) : 0, kPosQ);
+  const RobotImage image(robotOf(s));
+  if (image.empty()) return q;
+  auto fits = [](double v, double scale) { return std::fabs(v * scale) < kMaxQuantized; };
+  q.visible = fits(image.centreX(), kPosQ) && fits(image.centreY(), kPosQ) && fits(image.radius(), kPosQ);
+  q.dx = quantize(image.headingX(), kDirQ);
+  q.dy = quantize(image.headingY(), kDirQ);
+  return q;
+}
+
+
+// ---------------------------------------------------------------- glides
+
+/// The heading `degrees` as a unit vector (0 up, clockwise), by the same operations as the HTML
+/// player's headingUnit (a quadrant, then Taylor series to r^13 on |r| <= pi/4: within 1e-13 of
+/// sin and cos), so the page's glides are the GIF's pixel for pixel.
+void headingUnit(double degrees, double& dx, double& dy) {
+  const double q = std::floor(degrees / 90 + 0.5);
+  const double r = (degrees - q * 90) * (3.141592653589793 / 180);
+  const double r2 = r * r;
+  const double s = r * (1 - r2 / 6 * (1 - r2 / 20 * (1 - r2 / 42 * (1 - r2 / 72 * (1 - r2 / 110 * (1 - r2 / 156))))));
+  const double c = 1 - r2 / 2 * (1 - r2 / 12 * (1 - r2 / 30 * (1 - r2 / 56 * (1 - r2 / 90 * (1 - r2 / 132)))));
+  const long long k = ((static_cast<long long>(q) % 4) + 4) % 4;
+  const double sinH = k == 0 ? s : k == 1 ? c : k == 2 ? -s : -c;
+  const double cosH = k == 0 ? c : k == 1 ? -s : k == 2 ? -c : s;
+  dx = sinH;
+  dy = -cosH;
+}
+
+/// The turn from heading a to heading b the short way, in (-180, 180].
+double shortTurn(double a, double b) {
+  double d = b - a;
+  if (d > 180) d -= 360;
+  else if (d <= -180) d += 360;
+  return d;
+}
+
+struct GlideEnds {
+  double ax = 0, ay = 0, bx = 0, by = 0, r = 0, dx = 0, dy = 0, h0 = 0, turn = 0;
+  bool rotate = false;
+  double extent = 0;  ///< 0: no glide
+};
+
+GlideEnds glideEnds(const Recording& rec, size_t i) {
+  GlideEnds g;
+  const std::vector<RecordedStep>& steps = rec.steps();
+  if (i + 1 >= steps.size()) return g;
+  const RecordedStep &a = steps[i], &b = steps[i + 1];
+  if (!a.located || !b.located || a.radius != b.radius || a.robotColour != b.robotColour) return g;
+  const QuantizedPose qa = quantizePose(a), qb = quantizePose(b);
+  if (!qa.visible || !qb.visible || qa.r != qb.r) return g;
+  g.ax = static_cast<double>(qa.x) / kPosQ;
+  g.ay = static_cast<double>(qa.y) / kPosQ;
+  g.bx = static_cast<double>(qb.x) / kPosQ;
+  g.by = static_cast<double>(qb.y) / kPosQ;
+  g.r = static_cast<double>(qa.r) / kPosQ;
+  g.dx = static_cast<double>(qa.dx) / kDirQ;
+  g.dy = static_cast<double>(qa.dy) / kDirQ;
+  g.h0 = static_cast<double>(qa.heading) / kPosQ;
+  if (qa.x != qb.x || qa.y != qb.y) {
+    if (qa.heading != qb.heading || qa.dx != qb.dx || qa.dy != qb.dy) return g;  // moved and turned
+    g.extent = std::hypot(g.bx - g.ax, g.by - g.ay);
+  } else if (qa.heading != qb.heading) {
+    if (a.frame != b.frame) return g;  // a turn that changed the screen: not one statement's turn
+    g.rotate = true;
+    g.turn = shortTurn(g.h0, static_cast<double>(qb.heading) / kPosQ);
+    g.extent = std::fabs(g.turn);
+  }
+  if (!std::isfinite(g.extent)) g.extent = 0;
+  return g;
+}
+
+GlidePose poseOf(const GlideEnds& g, uint32_t part, uint32_t parts) {
+  GlidePose p;
+  const double t = static_cast<double>(part) / static_cast<double>(parts);
+  p.radius = g.r;
+  if (g.rotate) {
+    p.x = g.ax;
+    p.y = g.ay;
+    headingUnit(g.h0 + g.turn * t, p.dx, p.dy);
+  } else {
+    p.x = g.ax + (g.bx - g.ax) * t;
+    p.y = g.ay + (g.by - g.ay) * t;
+    p.dx = g.dx;
+    p.dy = g.dy;
+  }
+  return p;
+}
+
+/// Whether screen pixel (px, py) that the move changes shows part of the way: its projection on
+/// the move at most the robot's (the page's reveal does the same operations).
+bool revealed(const GlideEnds& g, double t, int px, int py) {
+  const double ux = g.bx - g.ax, uy = g.by - g.ay;
+  const double l2 = ux * ux + uy * uy;
+  return (static_cast<double>(px) - g.ax) * ux + (static_cast<double>(py) - g.ay) * uy <= t * l2;
+}
+
 /// Whether two steps show the same picture: the same keyframe and the same robot image.
 bool sameLook(const RecordedStep& a, const RecordedStep& b) {
   if (a.frame != b.frame || a.located != b.located) return false;
@@ -81,6 +203,8 @@ FrameTimes animationTimes(const Recording& recording, const AnimationOptions& op
       out.steps.push_back(steps.size() - 1);
       out.seconds.push_back(seconds);
     }
+    out.part.assign(out.steps.size(), 0);
+    out.parts.assign(out.steps.size(), 1);
     return out;
   }
   std::vector<size_t> candidates;
@@ -105,9 +229,51 @@ FrameTimes animationTimes(const Recording& recording, const AnimationOptions& op
       if (!sameLook(steps[i], steps[i - 1])) candidates.push_back(i);
   }
   if (candidates.back() != steps.size() - 1) candidates.push_back(steps.size() - 1);
-  out.steps = evenly(candidates, most);
+  // Glides: the moves and turns into a frame (from the recorded step before it), in frames of
+  // their own, while all the frames fit in `most` (their steps doubled until they do).
+  std::vector<double> glideUnits(candidates.size(), 0);  // the extent in steps of the glide, per frame
+  if (options.glide && !options.every && candidates.size() < most) {
+    for (size_t c = 1; c < candidates.size(); ++c) {
+      bool turn = false;
+      const double extent = glideExtent(recording, candidates[c] - 1, &turn);
+      glideUnits[c] = extent / (turn ? kGlideDegrees : kGlidePixels);
+    }
+  }
+  auto partsOf = [](double units, double factor) {
+    const double parts = std::ceil(units / factor);
+    return parts > 1 ? static_cast<size_t>(std::min(parts, 1e9)) : size_t{1};
+  };
+  double factor = 1;
+  for (;; factor *= 2) {
+    size_t total = candidates.size();
+    for (double u : glideUnits) total += partsOf(u, factor) - 1;
+    if (total <= most || factor > 1e15) break;
+  }
+  const std::vector<size_t> chosen = evenly(candidates, most);
+  const bool glides = chosen.size() == candidates.size();
+  for (size_t c = 0; c < chosen.size(); ++c) {
+    const size_t parts = glides ? partsOf(glideUnits[c], factor) : 1;
+    for (size_t j = 1; j < parts; ++j) {
+      out.steps.push_back(chosen[c] - 1);
+      out.part.push_back(static_cast<uint32_t>(j));
+      out.parts.push_back(static_cast<uint32_t>(parts));
+    }
+    out.steps.push_back(chosen[c]);
+    out.part.push_back(0);
+    out.parts.push_back(1);
+  }
   for (size_t k = 0; k < out.steps.size(); ++k) out.seconds.push_back(static_cast<double>(k) / fps);
   return out;
+}
+
+double glideExtent(const Recording& recording, size_t step, bool* turn) {
+  const GlideEnds g = glideEnds(recording, step);
+  if (turn) *turn = g.rotate;
+  return g.extent;
+}
+
+GlidePose glidePose(const Recording& recording, size_t step, uint32_t part, uint32_t parts) {
+  return poseOf(glideEnds(recording, step), part, std::max<uint32_t>(parts, 1));
 }
 
 std::vector<size_t> animationFrames(const Recording& recording, const AnimationOptions& options) {
@@ -155,11 +321,55 @@ class Composer {
   FrameChange moveTo(size_t stepIndex) {
     const RecordedStep& s = rec_.steps().at(stepIndex);
     advance(s.frame);
+    return compose(RobotImage(robotOf(s)), colourToRgb(s.robotColour));
+  }
+
+  /// Part `part` of `parts` of the way from step `stepIndex` to the next (glideImage()). The
+  /// glide's frames of one move come in order after the step's own (the screen's pixels
+  /// revealed so far stay; the next step's keyframe brings the rest).
+  FrameChange glideTo(size_t stepIndex, uint32_t part, uint32_t parts) {
+    const std::vector<RecordedStep>& steps = rec_.steps();
+    const RecordedStep& s = steps.at(stepIndex);
+    advance(s.frame);
+    const GlideEnds g = glideEnds(rec_, stepIndex);
+    if (g.extent <= 0 || parts == 0) return moveTo(stepIndex);
+    const double t = static_cast<double>(part) / static_cast<double>(parts);
+    const std::vector<RecordedFrame>& frames = rec_.frames();
+    const uint32_t to = std::min<uint32_t>(steps[stepIndex + 1].frame, static_cast<uint32_t>(frames.size()));
+    for (size_t f = static_cast<size_t>(applied_ + 1); f <= to && f < frames.size(); ++f) {
+      size_t at = 0;
+      for (const ScreenRun& r : frames[f].runs) {
+        const size_t n = std::min<size_t>(r.count, kPixels - at);
+        if (r.colour != kSameColour)
+          for (size_t p = at; p < at + n; ++p)
+            if (revealed(g, t, static_cast<int>(p % kW), static_cast<int>(p / kW))) set(p, r.colour);
+        at += n;
+      }
+    }
+    const GlidePose pose = poseOf(g, part, parts);
+    return compose(RobotImage::fromVector(pose.x, pose.y, pose.radius, pose.dx, pose.dy), colourToRgb(s.robotColour));
+  }
+
+  /// The picture last given, whole.
+  RgbImage picture() const {
+    RgbImage image;
+    image.width = width_;
+    image.height = height_;
+    image.rgb.resize(shown_.size() * 3);
+    for (size_t i = 0; i < shown_.size(); ++i) {
+      image.rgb[i * 3] = static_cast<uint8_t>(shown_[i] >> 16);
+      image.rgb[i * 3 + 1] = static_cast<uint8_t>(shown_[i] >> 8);
+      image.rgb[i * 3 + 2] = static_cast<uint8_t>(shown_[i]);
+    }
+    return image;
+  }
+
+ private:
+  FrameChange compose(const RobotImage& image, uint32_t robotRgb) {
     std::vector<uint32_t> robot;
-    RobotImage(robotOf(s)).rasterize(scale_, width_, height_, [&](int x, int y) {
+    image.rasterize(scale_, width_, height_, [&](int x, int y) {
       robot.push_back(static_cast<uint32_t>(y) * static_cast<uint32_t>(width_) + static_cast<uint32_t>(x));
     });
-    const uint32_t robotRgb = colourToRgb(s.robotColour);
     FrameChange change;
     if (shown_.empty()) {  // the first picture: all of it
       const size_t area = static_cast<size_t>(width_) * static_cast<size_t>(height_);
@@ -215,7 +425,6 @@ class Composer {
     return change;
   }
 
- private:
   size_t index(int x, int y) const { return static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x); }
   uint32_t screenRgb(int x, int y) const {
     const Colour c = screen_[static_cast<size_t>(y / scale_) * kW + static_cast<size_t>(x / scale_)];
@@ -455,6 +664,17 @@ size_t putGifFrame(GifWriter& w, GifColours& colours, const FrameChange& c, bool
 
 }  // namespace
 
+RgbImage glideImage(const Recording& recording, size_t step, uint32_t part, uint32_t parts, int scale) {
+  const size_t count = recording.steps().size();
+  if (step >= count) throw std::out_of_range("glideImage: no such step");
+  if (part == 0 || parts == 0) return frameImage(recording, step, scale);
+  if (part >= parts && step + 1 < count) return frameImage(recording, step + 1, scale);
+  Composer composer(recording, scale);
+  composer.moveTo(step);
+  composer.glideTo(step, part, parts);
+  return composer.picture();
+}
+
 std::vector<uint8_t> encodeGif(const Recording& recording, const AnimationOptions& options) {
   if (recording.steps().empty()) throw std::runtime_error("the recording holds no step");
   const FrameTimes times = animationTimes(recording, options);
@@ -489,7 +709,8 @@ std::vector<uint8_t> encodeGif(const Recording& recording, const AnimationOption
       if (!last) continue;
       start = shownFrom + 2;
     }
-    const FrameChange change = composer.moveTo(times.steps[k]);
+    const FrameChange change = times.part[k] ? composer.glideTo(times.steps[k], times.part[k], times.parts[k])
+                                             : composer.moveTo(times.steps[k]);
     if (delayAt && change.width == 0) continue;  // nothing new shows: the frame before lasts
     if (delayAt) w.setDelay(*delayAt, gifDelay(start - shownFrom));
     delayAt = putGifFrame(w, colours, change, !delayAt);
@@ -590,7 +811,8 @@ std::string animatedSvg(const Recording& recording, const AnimationOptions& opti
   size_t shown = 0;
   double end = 0;
   for (size_t k = 0; k < times.steps.size(); ++k) {
-    const FrameChange c = composer.moveTo(times.steps[k]);
+    const FrameChange c = times.part[k] ? composer.glideTo(times.steps[k], times.part[k], times.parts[k])
+                                        : composer.moveTo(times.steps[k]);
     if (c.width == 0) continue;
     // Each image after the first appears at its frame's time and stays.
     body += svgImage(c, shown == 0 ? "" : " class=\"f\" style=\"animation-delay:" + seconds(times.seconds[k]) + "s\"");
@@ -655,41 +877,6 @@ std::string jsonNumber(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
-}
-
-// The page draws the robot itself from the pose, as render/robot_image.h does: the centre and
-// radius in 1/1024 pixels, the heading's unit vector in 1/2^20, all exact in a double, so the
-// page's arithmetic (IEEE doubles, no fused multiply-add: this file is compiled with
-// -ffp-contract=off) is the same as PlayerRobot's here. Where those rounded values cover other
-// pixels than the exact pose does (a pixel centre within a rounding of the rim), the step
-// carries the pixels that differ, so the page's robot is rb render's, pixel for pixel.
-constexpr double kPosQ = 1024;
-constexpr double kDirQ = 1048576;
-constexpr double kMaxQuantized = 1e15;  // below 2^53: exact in the page's numbers
-
-struct QuantizedPose {
-  bool visible = false;  ///< RobotImage draws it and the values fit
-  int64_t x = 0, y = 0, r = 0, dx = 0, dy = 0, heading = 0;
-};
-
-int64_t quantize(double v, double scale) {
-  const double q = v * scale;
-  return std::isfinite(q) && std::fabs(q) < kMaxQuantized ? std::llround(q) : 0;
-}
-
-QuantizedPose quantizePose(const RecordedStep& s) {
-  QuantizedPose q;
-  q.x = quantize(s.x, kPosQ);
-  q.y = quantize(s.y, kPosQ);
-  q.r = quantize(s.radius, kPosQ);
-  q.heading = quantize(std::isfinite(s.heading) ? std::fmod(s.heading, 360.0) : 0, kPosQ);
-  const RobotImage image(robotOf(s));
-  if (image.empty()) return q;
-  auto fits = [](double v, double scale) { return std::fabs(v * scale) < kMaxQuantized; };
-  q.visible = fits(image.centreX(), kPosQ) && fits(image.centreY(), kPosQ) && fits(image.radius(), kPosQ);
-  q.dx = quantize(image.headingX(), kDirQ);
-  q.dy = quantize(image.headingY(), kDirQ);
-  return q;
 }
 
 /// The page's robot (the function robotPixels in the player's script does the same, operation
@@ -971,6 +1158,9 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
       const int64_t at = std::llround(times.seconds[k] * 1000);
       p.u(static_cast<uint64_t>(std::max<int64_t>(0, at - ms)));
       ms = std::max(ms, at);
+      // A glide's part of the way to the next step (0: the step itself), then its parts.
+      p.u(times.part[k]);
+      if (times.part[k]) p.u(times.parts[k]);
     }
   }
   p.u(recording.output().size());
@@ -988,6 +1178,7 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
   meta += ",\"runs\":" + std::to_string(runs) + ",\"corrections\":" + std::to_string(corrections);
   meta += ",\"sensors\":" + std::to_string(sensors) + ",\"play\":" + std::to_string(times.steps.size());
   meta += ",\"white\":" + std::to_string(white);
+  meta += std::string(",\"autoplay\":") + (options.autoplay ? "true" : "false");
   meta += ",\"palette\":[";
   for (size_t i = 0; i < palette.size(); ++i) {
     if (i) meta += ',';
@@ -1051,6 +1242,8 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
       "<input id=\"timeline\" type=\"range\" min=\"0\" max=\"0\" value=\"0\" aria-label=\"timeline\">"
       "<label>speed <select id=\"speed\"><option>0.25</option><option>0.5</option><option selected>1</option>"
       "<option>2</option><option>4</option><option>8</option><option>16</option></select></label>"
+      "<label title=\"start playing when the replay opens (remembered on this computer)\">"
+      "<input id=\"autoplay\" type=\"checkbox\"> play on opening</label>"
       "</div>\n<div id=\"position\"></div>\n"
       "<p id=\"keys\">Keys: Space plays or pauses; Left and Right step back and on; Home and End go to the first "
       "and the last step.</p>\n<div id=\"banner\" hidden></div>\n"
@@ -1084,14 +1277,16 @@ body{margin:0;font:14px/1.4 system-ui,sans-serif;color:var(--fg);background:var(
 header{display:flex;gap:1em;align-items:baseline;padding:.5em 1em;border-bottom:1px solid var(--line)}
 h1{font-size:1.1em;margin:0}h2{font-size:.9em;margin:.8em 0 .3em;text-transform:uppercase;letter-spacing:.05em;opacity:.7}
 main{display:flex;flex-wrap:wrap;gap:1em;padding:1em}
-#stage{flex:0 0 auto;max-width:100%}
+#stage{flex:0 1 auto;max-width:100%;min-width:240px}
 canvas{display:block;image-rendering:pixelated;border:1px solid var(--line);max-width:100%;height:auto}
-#controls{display:flex;gap:.4em;align-items:center;margin-top:.5em}
+#controls{display:flex;flex-wrap:wrap;gap:.4em;align-items:center;margin-top:.5em}
+#controls label{white-space:nowrap}
 #controls button{font:inherit;white-space:nowrap}
-#timeline{flex:1}
+#timeline{flex:1 1 8em;min-width:8em}
 #position{font-variant-numeric:tabular-nums;margin-top:.3em}
 #banner{margin-top:.5em;padding:.4em .6em;border-left:4px solid var(--err);background:var(--pane)}
 #banner.ok{border-left-color:#2e7d32}
+#banner[hidden]{display:block;visibility:hidden}
 aside{flex:1 1 320px;min-width:280px}
 .pane{background:var(--pane);border:1px solid var(--line);margin:0;max-height:16em;overflow:auto;position:relative;
  font:12px/1.45 ui-monospace,'DejaVu Sans Mono',monospace;white-space:pre}
@@ -1175,7 +1370,11 @@ function decode(r) {
     d.evValue[e] = r.u() === 0 ? r.z() : r.f();
   }
   d.playStep = new Uint32Array(meta.play); d.playMs = new Float64Array(meta.play);
-  for (let i = 0, s = 0, t = 0; i < meta.play; i++) { s += r.u(); t += r.u(); d.playStep[i] = s; d.playMs[i] = t; }
+  d.playPart = new Uint32Array(meta.play); d.playParts = new Uint32Array(meta.play);
+  for (let i = 0, s = 0, t = 0; i < meta.play; i++) {
+    s += r.u(); t += r.u(); d.playStep[i] = s; d.playMs[i] = t;
+    d.playPart[i] = r.u(); d.playParts[i] = d.playPart[i] ? r.u() : 1;
+  }
   d.output = r.bytes(r.u());
   return d;
 }
@@ -1217,12 +1416,10 @@ function start(d) {
     for (; g <= f; g++) apply(g);
     frameShown = f;
   }
-  // rb render's robot (render/robot_image.h) from the rounded pose, then the step's corrections.
-  function robotPixels(i) {
-    let px = [];
-    if (d.flags[i] & 4) {
-      const cx = d.qx[i] / meta.posQ, cy = d.qy[i] / meta.posQ, r = d.qr[i] / meta.posQ;
-      const dx = d.qdx[i] / meta.dirQ, dy = d.qdy[i] / meta.dirQ;
+  // rb render's robot (render/robot_image.h) at a centre, radius and heading vector.
+  function cover(cx, cy, r, dx, dy) {
+    const px = [];
+    {
       const x0 = Math.max(0, Math.floor(cx - r) - 2), x1 = Math.min(W - 1, Math.ceil(cx + r) + 2);
       const y0 = Math.max(0, Math.floor(cy - r) - 2), y1 = Math.min(H - 1, Math.ceil(cy + r) + 2);
       for (let v = y0; v <= y1; ++v) {
@@ -1241,6 +1438,14 @@ function start(d) {
         }
       }
     }
+    return px;
+  }
+  // The robot from the rounded pose, then the step's corrections.
+  function robotPixels(i) {
+    let px = [];
+    if (d.flags[i] & 4) {
+      px = cover(d.qx[i] / meta.posQ, d.qy[i] / meta.posQ, d.qr[i] / meta.posQ, d.qdx[i] / meta.dirQ, d.qdy[i] / meta.dirQ);
+    }
     const fix = d.corrections.get(poseStart[i]);
     if (fix && d.flags[i] & 1) {
       const set = new Set(px);
@@ -1248,6 +1453,61 @@ function start(d) {
       px = Array.from(set);
     }
     return px;
+  }
+
+  // Glides (render/animation.cpp, glideImage): part j of m of the way from step i to the next,
+  // the same operations as there, so the canvas is the GIF's frame.
+  function headingUnit(h) {
+    const q = Math.floor(h / 90 + 0.5);
+    const r = (h - q * 90) * (3.141592653589793 / 180);
+    const r2 = r * r;
+    const s = r * (1 - r2 / 6 * (1 - r2 / 20 * (1 - r2 / 42 * (1 - r2 / 72 * (1 - r2 / 110 * (1 - r2 / 156))))));
+    const c = 1 - r2 / 2 * (1 - r2 / 12 * (1 - r2 / 30 * (1 - r2 / 56 * (1 - r2 / 90 * (1 - r2 / 132)))));
+    const k = ((q % 4) + 4) % 4;
+    const sinH = k === 0 ? s : k === 1 ? c : k === 2 ? -s : -c;
+    const cosH = k === 0 ? c : k === 1 ? -s : k === 2 ? -c : s;
+    return [sinH, -cosH];
+  }
+  function glide(i, j, m) {
+    const P = meta.posQ, t = j / m;
+    shownPlay = -1;
+    const ax = d.qx[i] / P, ay = d.qy[i] / P, bx = d.qx[i + 1] / P, by = d.qy[i + 1] / P, r = d.qr[i] / P;
+    current = i;
+    toFrame(d.frame[i]);
+    for (let p = 0; p < W * H; p++) view[p] = pal[screen[p]];
+    let px;
+    if (d.qx[i] === d.qx[i + 1] && d.qy[i] === d.qy[i + 1]) {
+      const h0 = d.qh[i] / P;
+      let turn = d.qh[i + 1] / P - h0;
+      if (turn > 180) turn -= 360;
+      else if (turn <= -180) turn += 360;
+      const [dx, dy] = headingUnit(h0 + turn * t);
+      px = cover(ax, ay, r, dx, dy);
+    } else {
+      // The pixels the move changes, where they lie behind the robot along its way.
+      const ux = bx - ax, uy = by - ay, l2 = ux * ux + uy * uy;
+      for (let f = d.frame[i] + 1; f <= d.frame[i + 1]; f++) {
+        let pos = 0;
+        for (let k = d.runStart[f], e = d.runStart[f + 1]; k < e; k++) {
+          const len = d.runLen[k], c = d.runCol[k];
+          if (c >= 0) {
+            for (let p = pos; p < pos + len; p++) {
+              const x = p % W, y = (p - x) / W;
+              if ((x - ax) * ux + (y - ay) * uy <= t * l2) view[p] = pal[c];
+            }
+          }
+          pos += len;
+        }
+      }
+      px = cover(ax + (bx - ax) * t, ay + (by - ay) * t, r, d.qdx[i] / meta.dirQ, d.qdy[i] / meta.dirQ);
+    }
+    const c = pal[d.colour[i]];
+    for (const p of px) view[p] = c;
+    ctx.putImageData(image, 0, 0);
+    timeline.value = String(i);
+    timeline.setAttribute('aria-valuetext', 'step ' + (i + 1) + ' of ' + n);
+    panes(i);
+    say(describe(i), false);
   }
 
   // The panes.
@@ -1347,6 +1607,7 @@ function start(d) {
   }
 
   let current = -1, lineShown = null, errShown = null, outShown = -1;
+  let shownPlay = -1;  // the frame of the animation last shown by playing (-1: a step by hand)
   function panes(i) {
     const s = d.step[i];
     $('position').textContent = 'step ' + (i + 1) + ' of ' + n + ' \u00b7 ' +
@@ -1362,22 +1623,12 @@ function start(d) {
     }
     if (errShown) errShown.classList.remove('err');
     errShown = null;
-    const banner = $('banner');
-    if (i === n - 1) {
-      banner.hidden = false;
-      if (meta.error) {
-        banner.className = '';
-        banner.textContent = endText();
-        if (meta.error.file === meta.file && meta.error.line > 0 && meta.error.line <= lineEls.length) {
-          errShown = lineEls[meta.error.line - 1];
-          errShown.classList.add('err');
-        }
-      } else {
-        banner.className = 'ok';
-        banner.textContent = ended + '.';
-      }
-    } else {
-      banner.hidden = true;
+    // The end's banner keeps its place (hidden, not removed) so the screen keeps its size.
+    $('banner').hidden = i !== n - 1;
+    if (i === n - 1 && meta.error && meta.error.file === meta.file && meta.error.line > 0 &&
+        meta.error.line <= lineEls.length) {
+      errShown = lineEls[meta.error.line - 1];
+      errShown.classList.add('err');
     }
     const f = d.flags[i];
     $('pose').textContent = f & 1
@@ -1417,6 +1668,7 @@ function start(d) {
   function show(i) {
     i = Math.max(0, Math.min(n - 1, Math.round(i)));
     current = i;
+    shownPlay = -1;
     toFrame(d.frame[i]);
     for (let p = 0; p < W * H; p++) view[p] = pal[screen[p]];
     const c = pal[d.colour[i]];
@@ -1451,7 +1703,12 @@ function start(d) {
     const t = baseMs + (performance.now() - anchor) * rate;
     let k = next;
     while (k < meta.play && d.playMs[k] <= t) k++;
-    if (k > next) { next = k; show(d.playStep[k - 1]); }
+    if (k > next) {
+      next = k;
+      if (d.playPart[k - 1]) glide(d.playStep[k - 1], d.playPart[k - 1], d.playParts[k - 1]);
+      else show(d.playStep[k - 1]);
+      shownPlay = k - 1;
+    }
     if (next >= meta.play) { pause(); return; }
     timer = setTimeout(tick, Math.max(1, Math.min(250, (d.playMs[next] - t) / rate)));
   }
@@ -1460,7 +1717,8 @@ function start(d) {
     if (current >= n - 1) show(0);
     playing = true;
     playWord('\u25A0 ', 'pause');
-    next = firstAfter(current);
+    // Paused inside a glide: on from its frame; else from the first frame after the step shown.
+    next = shownPlay >= 0 && d.playStep[shownPlay] === current ? shownPlay + 1 : firstAfter(current);
     baseMs = next > 0 ? d.playMs[next - 1] : 0;
     anchor = performance.now();
     rate = speed();
@@ -1499,13 +1757,61 @@ function start(d) {
     else if (e.key === 'Home') { pause(); show(0); }
     else if (e.key === 'End') { pause(); show(n - 1); }
   });
-  $('screen').style.width = W * meta.scale + 'px';
+  {
+    const banner = $('banner');
+    banner.className = meta.error ? '' : 'ok';
+    banner.textContent = meta.error ? endText() : ended + '.';
+  }
+  // The screen as large as fits with the controls under it in the window (or the report's
+  // frame), at most its own size (--scale), at least 240 pixels wide.
+  function fit() {
+    const c = $('screen'), stage = $('stage'), main = stage.parentElement;
+    const pad = parseFloat(getComputedStyle(main).paddingLeft) + parseFloat(getComputedStyle(main).paddingRight);
+    let w = Math.max(240, Math.min(W * meta.scale, Math.floor(main.clientWidth - pad)));
+    // Smaller until the stage ends in the window (the controls may wrap as it narrows).
+    for (let pass = 0; pass < 8; pass++) {
+      c.style.width = w + 'px';
+      stage.style.width = w + 'px';  // the controls under the screen, as wide as it
+      const over = stage.getBoundingClientRect().bottom + scrollY + 8 - innerHeight;
+      if (over <= 0 || w <= 240) break;
+      w = Math.max(240, Math.floor(w - Math.max(1, over) * W / H));
+    }
+  }
+  let fitting = 0;
+  addEventListener('resize', () => { if (!fitting) fitting = requestAnimationFrame(() => { fitting = 0; fit(); }); });
   show(0);
+  fit();
+  // Playing on opening: the box's state as the viewer last set it on this computer, else the
+  // replay's own (rb render --autoplay, rb test's replays), never when the viewer asks for
+  // reduced motion; it starts once the screen is in view, unless someone moved it already.
+  const auto = $('autoplay');
+  let stored = null;
+  try { stored = localStorage.getItem('rb-replay-autoplay'); } catch (e) { stored = null; }
+  const reduced = matchMedia('(prefers-reduced-motion: reduce)').matches;
+  auto.checked = stored === '1' || stored === '0' ? stored === '1' : Boolean(meta.autoplay) && !reduced;
+  auto.addEventListener('change', () => {
+    try { localStorage.setItem('rb-replay-autoplay', auto.checked ? '1' : '0'); } catch (e) { /* not kept */ }
+  });
+  let moved = false;
+  for (const id of ['back', 'forward', 'timeline']) $(id).addEventListener('input', () => { moved = true; });
+  for (const id of ['back', 'play', 'forward']) $(id).addEventListener('click', () => { moved = true; });
+  document.addEventListener('keydown', () => { moved = true; });
+  if (auto.checked) {
+    const seen = new IntersectionObserver((entries) => {
+      if (!entries.some((e) => e.isIntersecting) || document.visibilityState !== 'visible') return;
+      seen.disconnect();
+      if (!moved && !playing && current === 0) play();
+    }, {threshold: 0.5});
+    seen.observe($('screen'));
+    document.addEventListener('visibilitychange', () => { seen.unobserve($('screen')); seen.observe($('screen')); });
+  }
   return {
     get step() { return current; },
     get playing() { return playing; },
     count: n,
-    show, play, pause,
+    show, play, pause, glide,
+    // The frames that play: [step, part, parts] each (part 0: the step itself).
+    get frames() { return Array.from(d.playStep, (st, k) => [st, d.playPart[k], d.playParts[k]]); },
   };
 }
 

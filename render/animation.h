@@ -28,7 +28,17 @@ struct AnimationOptions {
   double hold = 2;                      ///< seconds the last frame stays before a GIF loops
   int scale = 1;                        ///< pixels per screen pixel (1 .. kMaxScale)
   size_t maxFrames = 2000;              ///< frames are sampled evenly down to this many
+  bool glide = true;                    ///< long moves and turns in frames of their own (below)
+  bool autoplay = false;                ///< the HTML player starts playing once it is in view
 };
+
+/// Gliding: by default (one frame per visible change), a move of the robot longer than
+/// kGlidePixels between two recorded steps, or a turn of more than kGlideDegrees, is shown in
+/// frames of its own, at most kGlidePixels or kGlideDegrees apart, the trail drawn up to the
+/// robot as it goes. While the frames with the glides would pass maxFrames, the glides' steps
+/// double (20 pixels, 40..) until they fit; a run whose frames fill maxFrames without them does
+/// not glide (its frames are the same as without gliding). --every and --duration never glide.
+constexpr double kGlidePixels = 10, kGlideDegrees = 15;
 
 /// What the HTML player shows beside the screen: the program's text.
 struct PlayerSource {
@@ -55,10 +65,30 @@ std::string htmlPlayer(const Recording& recording, const PlayerSource& source, c
 
 /// The frames' moments: `steps` as animationFrames() gives them and, for each, the second at
 /// which it appears (k / fps, or spread over --duration).
+/// A frame inside a glide shows step `steps[k]` on its way to the next recorded step: part
+/// `part[k]` of `parts[k]` (part 0: the step itself, as every frame without gliding).
 struct FrameTimes {
   std::vector<size_t> steps;
   std::vector<double> seconds;
+  std::vector<uint32_t> part, parts;
 };
+
+/// The robot part of the way from recorded step `step` to the next (part of parts, 0 < part <
+/// parts): the centre on the segment between the two (a move), or the heading turned the short
+/// way between the two (a turn); the radius and colour of the step. As the HTML player draws it.
+struct GlidePose {
+  double x = 0, y = 0, radius = 0;
+  double dx = 0, dy = -1;  ///< the heading as a unit vector (0 degrees up, clockwise)
+};
+/// Whether the robot moves or turns between recorded steps `step` and `step + 1` so that a
+/// glide can show it, and how far (pixels or degrees; 0: it cannot glide).
+double glideExtent(const Recording& recording, size_t step, bool* turn = nullptr);
+GlidePose glidePose(const Recording& recording, size_t step, uint32_t part, uint32_t parts);
+/// The picture part of the way from `step` to the next: the screen of `step` with the pixels the
+/// next step changed drawn where they lie behind the robot along its move (their projection on
+/// the move at most the robot's), and the robot at glidePose(). Parts 0 and `parts` are
+/// frameImage() of `step` and `step + 1`.
+RgbImage glideImage(const Recording& recording, size_t step, uint32_t part, uint32_t parts, int scale = 1);
 FrameTimes animationTimes(const Recording& recording, const AnimationOptions& options);
 
 /// The format OUT's extension names, in any case: "gif", "svg", "html" (.html or .htm), or ""

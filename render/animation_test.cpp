@@ -190,8 +190,8 @@ void checkGifTimes(const DecodedGif& gif, const Recording& rec, const FrameTimes
     REQUIRE(j < times.steps.size());
     CHECK(std::lround(times.seconds[j] * 100) == start);
     if (k % sample == 0 || k + 1 == gif.frames.size()) {
-      INFO("step " << times.steps[j]);
-      CHECK(difference(gif.frames[k], frameImage(rec, times.steps[j], scale)) == "");
+      INFO("step " << times.steps[j] << ", part " << times.part[j] << " of " << times.parts[j]);
+      CHECK(difference(gif.frames[k], glideImage(rec, times.steps[j], times.part[j], times.parts[j], scale)) == "");
     }
     start += gif.delays[k];
   }
@@ -248,6 +248,7 @@ TEST_CASE("frames: one per visible change, every N statements, or spread over a 
   const auto& steps = rec->steps();
   REQUIRE(steps.size() == 18);  // 17 statements and the end
   AnimationOptions options;
+  options.glide = false;  // the glides: their own test case below
   std::vector<size_t> frames = animationFrames(*rec, options);
   // The blank screen, the robot placed, then after each of the 4 moves and 4 turns, and the
   // end; rInvisible, the pen and the line width change nothing that shows, nor do `next` and
@@ -310,6 +311,127 @@ TEST_CASE("frames: one per visible change, every N statements, or spread over a 
   }
 }
 
+TEST_CASE("glides: long moves and turns in frames of their own, within the frames' limit", "[render][animation]") {
+  auto rec = record(figure17());
+  AnimationOptions options;
+  const FrameTimes times = animationTimes(*rec, options);
+  // Each step's own frame as without gliding, in order; before each side's end (step 6, 9..)
+  // 11 frames of the 120-pixel move (10 pixels apart), before each turn's (step 7..) 5 of it.
+  std::vector<size_t> own, want = {0, 1, 6, 7, 9, 10, 12, 13, 15, 16, 17};
+  for (size_t k = 0; k < times.steps.size(); ++k)
+    if (times.part[k] == 0) own.push_back(times.steps[k]);
+  CHECK(own == want);
+  CHECK(times.steps.size() == want.size() + 4 * 11 + 4 * 5);
+  REQUIRE(times.part.size() == times.steps.size());
+  REQUIRE(times.parts.size() == times.steps.size());
+  size_t k = 0;
+  while (times.steps[k] != 5) ++k;
+  for (uint32_t j = 1; j < 12; ++j, ++k) {
+    CHECK(times.steps[k] == 5);
+    CHECK(times.part[k] == j);
+    CHECK(times.parts[k] == 12);
+  }
+  CHECK(times.steps[k] == 6);  // the move's end: the step's own frame
+  CHECK(times.part[k] == 0);
+  bool turn = true;
+  CHECK(glideExtent(*rec, 5, &turn) == Approx(120));
+  CHECK_FALSE(turn);
+  CHECK(glideExtent(*rec, 6, &turn) == Approx(90));
+  CHECK(turn);
+  CHECK(glideExtent(*rec, 2) == 0);  // LineWidth: nothing moves
+
+  SECTION("the poses: on the move's segment, or turned part of the way") {
+    for (uint32_t j = 1; j < 12; ++j) {
+      const GlidePose p = glidePose(*rec, 5, j, 12);
+      CHECK(p.x == 400);
+      CHECK(p.y == Approx(300 - 10.0 * j));
+      CHECK(p.dx == Approx(0).margin(1e-12));
+      CHECK(p.dy == Approx(-1));
+      CHECK(p.radius == 20);
+    }
+    for (uint32_t j = 1; j < 6; ++j) {
+      const GlidePose p = glidePose(*rec, 6, j, 6);
+      CHECK(p.x == 400);
+      CHECK(p.y == 180);
+      const double h = 15.0 * j * 3.141592653589793 / 180;
+      CHECK(p.dx == Approx(std::sin(h)).margin(1e-12));
+      CHECK(p.dy == Approx(-std::cos(h)).margin(1e-12));
+    }
+    // The short way round: from 270 to 0 turns +90, from 0 to 270 turns -90.
+    auto left = record("rLocate 400, 300, 270\nrTurn 90\nrTurn -90\n");
+    CHECK(glidePose(*left, 1, 1, 2).dx == Approx(-std::sqrt(0.5)));
+    CHECK(glidePose(*left, 1, 1, 2).dy == Approx(-std::sqrt(0.5)));
+    CHECK(glidePose(*left, 2, 1, 2).dx == Approx(-std::sqrt(0.5)));
+  }
+  SECTION("the pictures: the ends are the steps', the trail drawn up to the robot") {
+    CHECK(difference(glideImage(*rec, 5, 0, 12), frameImage(*rec, 5)) == "");
+    CHECK(difference(glideImage(*rec, 5, 12, 12), frameImage(*rec, 6)) == "");
+    const RgbImage half = glideImage(*rec, 5, 6, 12);  // the robot at (400, 240)
+    auto at = [](const RgbImage& im, int x, int y) {
+      const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(im.width) + static_cast<size_t>(x)) * 3;
+      return static_cast<uint32_t>(im.rgb[i]) << 16 | static_cast<uint32_t>(im.rgb[i + 1]) << 8 | im.rgb[i + 2];
+    };
+    const uint32_t green = colourToRgb(colours::kGreen), white = 0xFFFFFF, blue = colourToRgb(colours::kBlue);
+    CHECK(at(half, 400, 290) == green);  // behind the robot: drawn
+    CHECK(at(half, 401, 265) == green);
+    CHECK(at(half, 400, 210) == white);  // ahead of it: not yet
+    CHECK(at(frameImage(*rec, 6), 400, 210) == green);
+    CHECK(at(half, 400, 240 + 19) == blue);  // the robot's rim, where it is now
+    CHECK(at(half, 400, 300 + 19) == white);  // ... not where it was
+    // Every pixel is the step's, the next step's or the robot's.
+    const RgbImage a = frameImage(*rec, 5), b = frameImage(*rec, 6);
+    for (size_t i = 0; i < half.rgb.size(); i += 3) {
+      const uint32_t v = at(half, static_cast<int>(i / 3 % 800), static_cast<int>(i / 3 / 800));
+      const uint32_t va = at(a, static_cast<int>(i / 3 % 800), static_cast<int>(i / 3 / 800));
+      const uint32_t vb = at(b, static_cast<int>(i / 3 % 800), static_cast<int>(i / 3 / 800));
+      if (v != va && v != vb && v != blue) FAIL("pixel " << i / 3 << " is " << v);
+    }
+    // At a scale, the same picture made larger.
+    const RgbImage big = glideImage(*rec, 5, 6, 12, 2);
+    CHECK(big.width == 1600);
+    CHECK(at(big, 800, 580) == green);
+    CHECK(at(big, 800, 420) == white);
+  }
+  SECTION("--no-glide, --every and --duration do not glide") {
+    options.glide = false;
+    CHECK(animationTimes(*rec, options).steps.size() == want.size());
+    options.glide = true;
+    options.every = 1;
+    for (uint32_t part : animationTimes(*rec, options).part) CHECK(part == 0);
+    options.every.reset();
+    options.duration = 5;
+    for (uint32_t part : animationTimes(*rec, options).part) CHECK(part == 0);
+  }
+  SECTION("within maxFrames: the glides' steps doubled until they fit, or none") {
+    // 300 laps of a 100-pixel move and a half turn: 600 frames of their own, 6600 with glides of
+    // 10 pixels and 15 degrees, 3300 of 20 and 30, 1800 of 40 and 60.
+    auto laps = record("rLocate 400, 300\nfor i = 1 to 300\n  rForward 100\n  rTurn 180\nnext\n");
+    AnimationOptions plain;
+    plain.glide = false;
+    const size_t base = animationTimes(*laps, plain).steps.size();
+    CHECK(base == 603);  // the start, the robot placed, 600 moves and turns, the end
+    const FrameTimes t = animationTimes(*laps, AnimationOptions{});
+    CHECK(t.steps.size() == base + 300 * 2 + 300 * 2);
+    CHECK(t.steps.size() <= 2000);
+    for (size_t q = 0; q < t.steps.size(); ++q)
+      if (t.part[q]) CHECK(t.parts[q] == 3);
+    // Frames that fill maxFrames without glides: the same frames as without them.
+    AnimationOptions tight;
+    tight.maxFrames = base;
+    plain.maxFrames = base;
+    CHECK(animationTimes(*laps, tight).steps == animationTimes(*laps, plain).steps);
+    tight.maxFrames = plain.maxFrames = 100;
+    CHECK(animationTimes(*laps, tight).steps == animationTimes(*laps, plain).steps);
+    for (uint32_t part : animationTimes(*laps, tight).part) CHECK(part == 0);
+    // The GIF holds the frames' limit too.
+    tight.maxFrames = 1300;  // glides of 80 pixels and 120 degrees: 1203 frames
+    const FrameTimes few = animationTimes(*laps, tight);
+    CHECK(few.steps.size() == 1203);
+    CHECK(few.steps.size() > base);
+    CHECK(decodeGif(encodeGif(*laps, tight)).frames.size() <= 1300);
+  }
+}
+
 TEST_CASE("the GIF decoded with giflib: the frames, their delays, looping, the palette", "[render][animation]") {
   auto rec = record(figure17());
   AnimationOptions options;
@@ -322,12 +444,15 @@ TEST_CASE("the GIF decoded with giflib: the frames, their delays, looping, the p
   CHECK(gif.height == 600);
   REQUIRE(gif.map.size() >= 17);
   for (Colour c = 0; c < 16; ++c) CHECK(gif.map[c] == colourToRgb(c));
-  const std::vector<size_t> frames = animationFrames(*rec, options);
+  const FrameTimes times = animationTimes(*rec, options);
+  const std::vector<size_t>& frames = times.steps;
   // The end shows what the last turn left: the frame before it is held.
   REQUIRE(gif.frames.size() == frames.size() - 1);
   for (size_t k = 0; k < gif.frames.size(); ++k) {
-    INFO("frame " << k << ", step " << frames[k]);
-    CHECK(difference(gif.frames[k], frameImage(*rec, frames[k])) == "");
+    INFO("frame " << k << ", step " << frames[k] << ", part " << times.part[k] << " of " << times.parts[k]);
+    // A step's frame is its picture; a glide's, glideImage's.
+    CHECK(difference(gif.frames[k], times.part[k] ? glideImage(*rec, frames[k], times.part[k], times.parts[k])
+                                                   : frameImage(*rec, frames[k])) == "");
     CHECK(gif.delays[k] == (k + 1 < gif.frames.size() ? 10 : 200));  // 10 a second; the last held 2 s
   }
   // After the first, each image is only the rectangle that changed.
@@ -341,9 +466,9 @@ TEST_CASE("the GIF decoded with giflib: the frames, their delays, looping, the p
     options.hold = 0.5;
     options.scale = 2;
     const DecodedGif g = decodeGif(encodeGif(*roam, options));
-    const FrameTimes times = animationTimes(*roam, options);
+    const FrameTimes roamTimes = animationTimes(*roam, options);
     CHECK(g.width == 1600);
-    checkGifTimes(g, *roam, times, 2, 5);
+    checkGifTimes(g, *roam, roamTimes, 2, 5);
     for (size_t k = 0; k + 1 < g.delays.size(); ++k) CHECK(g.delays[k] >= 3);
     CHECK(g.delays.back() == 50);
     CHECK(difference(g.frames.back(), pictureAt(kRoam, std::nullopt, 2)) == "");

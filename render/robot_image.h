@@ -33,6 +33,21 @@ class RobotImage {
     dy_ = dir.y();
   }
 
+  /// The image of a robot at (cx, cy) of radius r heading along the unit vector (dx, dy), as
+  /// given (a glide's pose between two recorded steps, render/animation.h).
+  static RobotImage fromVector(double cx, double cy, double r, double dx, double dy) {
+    RobotImage image(RobotView{});
+    if (!std::isfinite(cx) || !std::isfinite(cy) || !std::isfinite(r) || r < 0 || !std::isfinite(dx) || !std::isfinite(dy))
+      return image;
+    image.valid_ = true;
+    image.cx_ = cx;
+    image.cy_ = cy;
+    image.r_ = r;
+    image.dx_ = dx;
+    image.dy_ = dy;
+    return image;
+  }
+
   bool empty() const { return !valid_; }
   double centreX() const { return cx_; }
   double centreY() const { return cy_; }

@@ -525,8 +525,8 @@ def case_player(s):
         expect(k in keys, f"the player does not say what {k} does")
     # Tab reaches the controls, then the panes that scroll.
     s.js("document.activeElement.blur(); window.scrollTo(0, 0); true")
-    stops = s.tab_order(7, "the player")
-    in_order(stops, ["back", "play", "forward", "timeline", "speed", "source", "output"], "the player")
+    stops = s.tab_order(8, "the player")
+    in_order(stops, ["back", "play", "forward", "timeline", "speed", "autoplay", "source", "output"], "the player")
     # The keys: Right steps; the text alternative says the step, the line and the robot.
     s.js("document.activeElement.blur(); true")
     for _ in range(4):

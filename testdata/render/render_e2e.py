@@ -211,7 +211,12 @@ def case_animate(env):
     env.expect_exit(r, 0)
     expect(png_size(png) == (800, 600), "no picture beside the animation")
     images, loops = gif_frames(gif)
-    expect(images == 10 and loops, f"{images} images, loops {loops}: expected the 10 moments of the square, looping")
+    # The 10 moments of the square, and the glides: 11 frames more along each side, 5 in each turn.
+    expect(images == 10 + 4 * 11 + 4 * 5 and loops, f"{images} images, loops {loops}: expected the square's 74, looping")
+    nog = env.path("square-steps.gif")
+    env.expect_exit(env.run(env.fig17, "--animate", nog, "--no-glide"), 0)
+    images, loops = gif_frames(nog)
+    expect(images == 10 and loops, f"--no-glide: {images} images, loops {loops}: expected the 10 moments of the square")
     expect(os.path.getsize(gif) < 200 * 1024, f"the square's GIF is {os.path.getsize(gif)} bytes")
     svg = env.path("square.SVG")
     env.expect_exit(env.run(env.fig17, "--animate", svg, "--fps", "25"), 0)
@@ -245,7 +250,15 @@ def case_animate_error(env):
         env.expect_exit(r, 70)
         expect("error:" in r.stderr and "crash.bas:4" in r.stderr, f"the error is not on stderr: {r.stderr}")
         expect(os.path.getsize(out) > 1000, f"no {ext} replay after the error")
-    expect('"status":"runtime error"' in open(env.path("crash.html")).read(), "the page does not say how the run ended")
+    page = open(env.path("crash.html")).read()
+    expect('"status":"runtime error"' in page, "the page does not say how the run ended")
+    # 3 statements, the for, 4 moves and nexts, the fifth move: the player counts 12, not the
+    # statements up to the loop's last jump (issue 37: "a crash into the wall reports 0 steps").
+    expect('"totalSteps":12' in page, "the player does not count the statements up to the crash")
+    wall = env.program("wall.bas", "rLocate 400, 60\nrPen DOWN\nrForward 100\n")
+    out = env.path("wall.html")
+    env.expect_exit(env.run(wall, "--animate", out), 70)
+    expect('"totalSteps":3' in open(out).read(), "a crash with no jump before it: the player does not count 3 statements")
 
 
 def case_animate_usage(env):

@@ -413,11 +413,11 @@ def case_html_plays(env):
     expect(b.js("rbPlayer.step") == 0, "the player does not start at the first step")
     white = b.js("__rgb().every((v) => v === 255)")
     expect(white, "the first step is not the white screen")
-    # Play at twice the speed (11 frames at 10 a second: half a second), noting each position
+    # Play at four times the speed (75 frames at 10 a second: under 2 s), noting each position
     # the player shows.
     b.js("window.__seen = []; new MutationObserver(() => __seen.push(rbPlayer.step))"
          ".observe(document.getElementById('position'), {childList: true, characterData: true, subtree: true});"
-         "document.getElementById('speed').value = '2'; document.getElementById('speed')"
+         "document.getElementById('speed').value = '4'; document.getElementById('speed')"
          ".dispatchEvent(new Event('change')); document.getElementById('play').click(); true")
     expect(b.js("rbPlayer.playing"), "play did not start")
     deadline = time.monotonic() + 20
@@ -426,10 +426,12 @@ def case_html_plays(env):
         time.sleep(0.05)
     expect(b.js("rbPlayer.step") == 17, f"playing stopped at step {b.js('rbPlayer.step')}, not the end")
     # The animation's frames in order (a machine too busy to draw every frame in time skips
-    # some, never the end).
-    seen, frames = b.js("__seen"), [1, 6, 7, 9, 10, 12, 13, 15, 16, 17]
-    expect(seen == sorted(set(seen)) and set(seen) <= set(frames) and seen[-1] == 17 and len(seen) >= 5,
+    # some, never the end): the steps' own and, before each side's and each turn's end, the
+    # glide's frames, which show the step whose move they show (5 before 6, 6 before 7..).
+    seen, frames = b.js("__seen"), [1, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17]
+    expect(seen == sorted(seen) and set(seen) <= set(frames) and seen[-1] == 17 and len(set(seen)) >= 5,
            f"playing showed the steps {seen}, not the frames {frames} in order")
+    expect(seen.count(5) > 1, f"the first side did not glide: {seen}")
     env.expect_canvas(png, "after the last frame")
     banner = b.js("document.getElementById('banner').textContent")
     expect("the program ended" in banner, f"the end is not named: {banner!r}")
@@ -555,6 +557,166 @@ def case_svg(env):
         expect(shot == frame, f"at {start}/100 s the SVG is not the GIF's frame {k}: {first_difference(width, shot, frame)}")
         start += delay
     expect(len(frames) > 5, f"only {len(frames)} frames")
+    env.expect_quiet()
+
+
+def case_html_glides(env):
+    """The square glides: each side in 12 frames, each turn in 6; the player's canvas at every
+    frame it plays is the GIF's (glides included), the steps' own frames rb render's pictures."""
+    html, gif, png = env.path("square.html"), env.path("square.gif"), env.path("square.png")
+    env.render(env.fig17, "--animate", html)
+    env.render(env.fig17, "--animate", gif, "-o", png)
+    width, _, gif_frames, _ = read_gif(open(gif, "rb").read())
+    b = env.start()
+    env.open_player(html)
+    frames = b.js("rbPlayer.frames") or []
+    expect(len(frames) == 11 + 4 * 11 + 4 * 5, f"{len(frames)} frames play, not 11 and the glides")
+    expect([f[0] for f in frames if f[1] == 0] == [0, 1, 6, 7, 9, 10, 12, 13, 15, 16, 17],
+           f"the steps' own frames: {frames}")
+    expect(sum(1 for f in frames if f[0] == 5 and f[2] == 12) == 11, f"the first side's glide: {frames}")
+    # The GIF holds the end's frame (the same picture as the last turn's) in the one before it.
+    expect(len(gif_frames) == len(frames) - 1, f"{len(gif_frames)} GIF frames for {len(frames)}")
+    hashes = [hashlib.sha256(f).hexdigest() for f in gif_frames] + [hashlib.sha256(gif_frames[-1]).hexdigest()]
+    wrong = b.js("(async (want) => { const bad = []; const f = rbPlayer.frames;"
+                 " for (let k = 0; k < f.length; k++) { if (f[k][1]) rbPlayer.glide(f[k][0], f[k][1], f[k][2]);"
+                 " else rbPlayer.show(f[k][0]); if (await __hash() !== want[k]) bad.push(k); } return bad; })"
+                 f"({json.dumps(hashes)})", timeout=120)
+    if wrong:
+        k = wrong[0]
+        f = frames[k]
+        b.js(f"rbPlayer.glide({f[0]}, {f[1]}, {f[2]}); true" if f[1] else f"rbPlayer.show({f[0]}); true")
+        got = base64.b64decode(b.js("__bytes()"))
+        raise Failure(f"{len(wrong)} frames ({wrong[:10]}...) are not the GIF's; frame {k} {f}: "
+                      f"{first_difference(width, got, gif_frames[min(k, len(gif_frames) - 1)])}")
+    # Mid-way along the first side the robot is half-way up it.
+    b.js("rbPlayer.glide(5, 6, 12); true")
+    pose = b.js("document.getElementById('pose').textContent")
+    expect("y 300.00" in pose, f"a glide's panes are its step's: {pose!r}")
+    b.js(f"rbPlayer.show({b.js('rbPlayer.count')} - 1); true")
+    env.expect_canvas(png, "the end")
+    env.expect_quiet()
+
+
+FIT_JS = """(() => {
+  const r = (id) => document.getElementById(id).getBoundingClientRect();
+  const bottom = Math.max(...['controls', 'position', 'keys', 'banner'].map((id) => r(id).bottom));
+  return {bottom, height: innerHeight, canvas: r('screen').width, canvasBottom: r('screen').bottom,
+          sideways: document.documentElement.scrollWidth > innerWidth};
+})()"""
+
+
+def case_html_fits(env):
+    """The screen fits the window with its controls, the position and the end's banner under it
+    (no scrolling to reach them) at 1366 x 768, in a browser's window of that screen (about
+    1366 x 650), at 1280 x 600 and at --scale 2; and in a program's page of rb test --html,
+    once its replay is in view."""
+    html = env.path("square.html")
+    env.render(env.fig17, "--animate", html)
+    big = env.path("big.html")
+    env.render(env.fig17, "--animate", big, "--scale", "2")
+    b = env.start()
+    for page, (w, h) in [(html, (1366, 768)), (html, (1366, 650)), (html, (1280, 600)), (big, (1366, 768))]:
+        b.viewport(w, h)
+        env.open_player(page)
+        b.js("rbPlayer.show(rbPlayer.count - 1); new Promise((r) => requestAnimationFrame(() => r(true)))")
+        fit = b.js(FIT_JS)
+        what = f"{os.path.basename(page)} at {w} x {h}"
+        expect(fit["bottom"] <= fit["height"], f"{what}: the controls end at {fit['bottom']}, below the window ({fit})")
+        expect(fit["canvas"] >= 0.7 * (h - 120) * 4 / 3 or fit["canvas"] >= 790, f"{what}: the screen is only {fit}")
+        expect(not fit["sideways"], f"{what}: the page scrolls sideways")
+        expect(not b.js("document.getElementById('banner').hidden"), f"{what}: no banner at the end")
+    b.viewport(1366, 768)
+    # The class report's program page: its replay's frame, scrolled into view, shows the whole player.
+    cls = env.path("class")
+    os.makedirs(cls)
+    shutil.copy(env.fig17, os.path.join(cls, "square.bas"))
+    report = env.path("report")
+    r = subprocess.run([env.rb, "test", cls, "--html", report], capture_output=True, text=True, timeout=120)
+    expect(os.path.exists(os.path.join(report, "programs", "square.html")), f"rb test --html: {r.stdout}{r.stderr}")
+    b.open(os.path.join(report, "programs", "square.html"))
+    frame = b.js("(() => { const f = document.querySelector('iframe.replay'); f.scrollIntoView();"
+                 " const r = f.getBoundingClientRect();"
+                 " return {top: r.top, bottom: r.bottom, height: innerHeight, w: f.clientWidth, h: f.clientHeight,"
+                 " src: f.src}; })()")
+    expect(frame["top"] >= -1 and frame["bottom"] <= frame["height"] + 1, f"the replay's frame is not in view: {frame}")
+    # The player in the frame sees a window of the frame's size (a file:// frame's document is
+    # out of the page's reach): the player opened alone in a window of that size.
+    b.viewport(frame["w"], frame["h"])
+    env.open_player(frame["src"][len("file://"):])
+    inner = b.js("(() => { rbPlayer.pause(); rbPlayer.show(rbPlayer.count - 1);"
+                 " const r = (id) => document.getElementById(id).getBoundingClientRect();"
+                 " return {bottom: Math.max(r('controls').bottom, r('position').bottom, r('banner').bottom),"
+                 " height: innerHeight, canvas: r('screen').width}; })()")
+    expect(inner["bottom"] <= inner["height"], f"in the report's frame the controls end below it: {inner}")
+    expect(inner["canvas"] >= 500, f"in the report's frame the screen is only {inner['canvas']} wide")
+    env.expect_quiet()
+
+
+def case_html_autoplay(env):
+    """--autoplay: the player plays once open, not when the viewer asks for reduced motion; its
+    'play on opening' box, once set, decides (remembered across replays); without --autoplay it
+    waits."""
+    plain, auto = env.path("plain.html"), env.path("auto.html")
+    env.render(env.fig17, "--animate", plain)
+    env.render(env.fig17, "--animate", auto, "--autoplay")
+    b = env.start()
+    settle = "new Promise((r) => setTimeout(() => r(true), 400))"
+    env.open_player(plain)
+    b.js(settle)
+    expect(not b.js("rbPlayer.playing") and b.js("rbPlayer.step") == 0, "a replay without --autoplay plays by itself")
+    expect(not b.js("document.getElementById('autoplay').checked"), "the box is ticked without --autoplay")
+    env.open_player(auto)
+    b.js(settle)
+    expect(b.js("rbPlayer.playing || rbPlayer.step > 0"), "--autoplay did not start the replay")
+    expect(b.js("document.getElementById('autoplay').checked"), "the box is not ticked with --autoplay")
+    b.call("Emulation.setEmulatedMedia", {"features": [{"name": "prefers-reduced-motion", "value": "reduce"}]},
+           session=True)
+    env.open_player(auto)
+    b.js(settle)
+    expect(not b.js("rbPlayer.playing") and b.js("rbPlayer.step") == 0, "--autoplay played under reduced motion")
+    expect(not b.js("document.getElementById('autoplay').checked"), "the box is ticked under reduced motion")
+    # The viewer asks: ticked, remembered; the plain replay plays too, reduced motion or not.
+    b.js("document.getElementById('autoplay').click(); true")
+    env.open_player(plain)
+    b.js(settle)
+    expect(b.js("document.getElementById('autoplay').checked"), "the box's choice was not remembered")
+    expect(b.js("rbPlayer.playing || rbPlayer.step > 0"), "the box's choice did not start the replay")
+    # Cleared: the --autoplay replay waits.
+    b.js("rbPlayer.pause(); document.getElementById('autoplay').click(); true")
+    b.call("Emulation.setEmulatedMedia", {"features": []}, session=True)
+    env.open_player(auto)
+    b.js(settle)
+    expect(not b.js("rbPlayer.playing") and b.js("rbPlayer.step") == 0, "the cleared box did not stop --autoplay")
+    # rb test's replays play once scrolled into view in a program's page (the box cleared above
+    # is forgotten: a fresh browser).
+    b.close()
+    env.browser = None
+    cls = env.path("class")
+    os.makedirs(cls)
+    shutil.copy(env.fig17, os.path.join(cls, "square.bas"))
+    report = env.path("report")
+    subprocess.run([env.rb, "test", cls, "--html", report], capture_output=True, text=True, timeout=120)
+    b = env.start()
+    b.viewport(1366, 768)
+    b.open(os.path.join(report, "programs", "square.html"))
+    tree = b.call("Page.getFrameTree", session=True)["frameTree"]
+    child = tree.get("childFrames", [{}])[0].get("frame", {}).get("id")
+    expect(child, f"no replay frame in the program's page: {tree}")
+    world = b.call("Page.createIsolatedWorld", {"frameId": child}, session=True)["executionContextId"]
+
+    def position():
+        r = b.call("Runtime.evaluate", {"expression": "document.getElementById('position').textContent",
+                                        "contextId": world, "returnByValue": True}, session=True)
+        return r["result"].get("value") or ""
+    below = b.js("document.querySelector('iframe.replay').getBoundingClientRect().top > innerHeight")
+    b.js(settle)
+    if below:
+        expect(position().startswith("step 1 of"), f"the report's replay played out of view: {position()!r}")
+    b.js("document.querySelector('iframe.replay').scrollIntoView(); true")
+    deadline = time.monotonic() + 10
+    while position().startswith("step 1 of"):
+        expect(time.monotonic() < deadline, "the report's replay did not start once in view")
+        time.sleep(0.1)
     env.expect_quiet()
 
 
