@@ -141,7 +141,7 @@ rm -rf "$site"
 mkdir -p "$site"
 NODE_PATH="$npmdir/node_modules" "$npmdir/node_modules/.bin/esbuild" web/editor.mjs --bundle --minify \
   --format=iife --log-level=warning --outfile="$site/editor.js"
-cp web/index.html web/style.css web/app.js web/rb.js web/rbworker.js "$site/"
+cp web/index.html web/style.css web/app.js web/rb.js web/rbworker.js web/rblive.js "$site/"
 cp "$out/core/rbcore.js" "$out/core/rbcore.wasm" "$out/core/rbcore_fast.js" "$out/core/rbcore_fast.wasm" "$site/"
 node web/make_examples.js "$root" > "$site/examples.js"
 node web/make_sw.js "$site"  # last: it lists and hashes the site's files

@@ -308,6 +308,7 @@ void TuiHost::showEnd(const RunResult& result, const std::string& error) {
   box_.reset();
   inputActive_ = false;
   error_ = error;
+  if (result.error) errorLoc_ = result.error->loc;
   if (machine_) recording_.finish(*machine_, result);
   switch (result.status) {
     case RunStatus::Finished: endState_ = "finished"; break;
@@ -325,6 +326,7 @@ void TuiHost::showLoadErrors(const std::string& errors, SourceLoc at) {
   clock_.setRunning(false);
   endState_ = "not loaded";
   error_ = errors;
+  errorLoc_ = at;
   // Only a restart (F12, or a save with --watch) or quitting ends this: there is no final
   // screen to leave with any key.
   blockUntil("", [this] { return endKey_; });
@@ -587,6 +589,9 @@ void TuiHost::setPaused(bool paused) {
     showStep(std::nullopt);  // the run goes on from the present
   } else {
     held_.clear();  // keys held when the view paused are let go
+    // The variables as they are now: running, the pane is refreshed only now and then, and a
+    // pause inside a robot motion or a delay waits there, not at a statement.
+    refreshVariables();
   }
   clock_.setRunning(!paused);
 }
@@ -973,14 +978,23 @@ void TuiHost::drawSource() {
   auto marked = [&](uint32_t line) { return debugger_.hasBreakpoint(fileIndex, line); };
   // After the end nothing runs: no line is marked as the one about to (an earlier step's is).
   bool running = !ended_ || (past_ && loc.valid());
-  std::vector<PaneLine> lines =
-      sourceLines(file, loc.line, inner.height, inner.width, marked, running);
+  // After the end, the error's line is marked ('!', in red) and the pane shows it.
+  const bool showError = ended_ && !past_ && errorLoc_.valid() && errorLoc_.file == fileIndex;
+  std::vector<PaneLine> lines = sourceLines(file, showError ? errorLoc_.line : loc.line, inner.height, inner.width,
+                                            marked, running, showError ? errorLoc_.line : 0);
   for (size_t i = 0; i < lines.size(); ++i) {
     TermStyle s;
     std::string text = lines[i].text;
     if (lines[i].highlight) {
       s.reverse = true;
       s.bold = true;
+      text.resize(static_cast<size_t>(inner.width), ' ');
+    } else if (lines[i].error) {
+      s.colour = screen_.colour();
+      s.fg = 0xFFFFFF;
+      s.bg = 0xAA0000;
+      s.bold = true;
+      s.reverse = !screen_.colour();
       text.resize(static_cast<size_t>(inner.width), ' ');
     } else if (lines[i].marked) {
       s.colour = screen_.colour();
@@ -1059,12 +1073,12 @@ void TuiHost::drawOutput() {
   else last = partial_;
   if (!last.empty()) shown.push_back(last);
   if (!error_.empty()) {
-    // The error wraps like output, so that its hint ("did you mean ...") is never cut off; it
+    // The error wraps at its words, so that its hint ("did you mean ...") is never cut off; it
     // keeps its rows at the bottom and the output above gets what is left.
     std::vector<std::string> errorRows;
     for (size_t at = 0; at <= error_.size();) {
       size_t end = std::min(error_.find('\n', at), error_.size());
-      for (std::string& row : wrapRows(std::string_view(error_).substr(at, end - at), r.width))
+      for (std::string& row : wordRows(std::string_view(error_).substr(at, end - at), r.width))
         errorRows.push_back(std::move(row));
       at = end + 1;
     }

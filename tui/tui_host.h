@@ -246,6 +246,7 @@ class TuiHost : public Host, public RobotObserver {
   SourceLoc noticeLoc_;
   Clock::time_point noticeUntil_{};  ///< ... or until then
   SourceLoc loc_;      ///< the statement running now (or about to, when paused)
+  SourceLoc errorLoc_;  ///< where the run's error (or the first load error) is, once ended
   SourceLoc breakAt_;  ///< where a breakpoint paused the run (invalid: not paused by one)
   size_t depth_ = 0;   ///< its gosub/call depth
 

@@ -105,6 +105,26 @@ std::vector<std::string> wrapRows(std::string_view line, int width) {
   return rows;
 }
 
+std::vector<std::string> wordRows(std::string_view line, int width) {
+  std::string cells = outputCells(line);
+  size_t w = static_cast<size_t>(std::max(width, 1));
+  std::vector<std::string> rows;
+  size_t at = 0;
+  while (cells.size() - at > w) {
+    // The last space that leaves the row's first cell on it; none: the word is cut.
+    size_t cut = cells.rfind(' ', at + w);
+    if (cut == std::string::npos || cut <= at) {
+      rows.push_back(cells.substr(at, w));
+      at += w;
+      continue;
+    }
+    rows.push_back(cells.substr(at, cut - at));
+    at = cut + 1;
+  }
+  rows.push_back(cells.substr(at));
+  return rows;
+}
+
 std::vector<std::string> lastRows(const std::vector<std::string_view>& lines, int width, int rows) {
   std::vector<std::string> out;
   if (rows <= 0) return out;

@@ -17,6 +17,7 @@ struct PaneLine {
   std::string text;
   bool highlight = false;  ///< the line running now
   bool marked = false;     ///< a breakpoint is on it
+  bool error = false;      ///< the run's error is on it (after the end)
 };
 
 /// The lines of `file` around `line` (the statement about to run; 0: none yet) for a pane of
@@ -27,7 +28,7 @@ struct PaneLine {
 /// running.
 template <typename HasBreakpoint>
 std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int height, int width,
-                                  HasBreakpoint hasBreakpoint, bool running = true);
+                                  HasBreakpoint hasBreakpoint, bool running = true, uint32_t errorLine = 0);
 
 /// The variables pane's lines, `width` columns each: "name  value", names padded to a column;
 /// strings in quotes, arrays as `name[3,4]` and their first elements; a variable without a value
@@ -59,6 +60,9 @@ std::string outputCells(std::string_view line);
 /// A line cut into rows of `width` cells (at least one row, "" for an empty line), after
 /// outputCells: nothing of a long line is lost.
 std::vector<std::string> wrapRows(std::string_view line, int width);
+/// As wrapRows, but each row ends at a space when the line goes on (a message read as text:
+/// words are not cut, unless one is longer than a row); the spaces where rows break are dropped.
+std::vector<std::string> wordRows(std::string_view line, int width);
 /// The last `rows` rows that `lines` (oldest first) take in a pane `width` cells wide, each line
 /// wrapped by wrapRows; fewer when they take fewer.
 std::vector<std::string> lastRows(const std::vector<std::string_view>& lines, int width, int rows);
@@ -71,7 +75,7 @@ std::string paneLineText(std::string_view text, uint32_t number, int numberWidth
 
 template <typename HasBreakpoint>
 std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int height, int width,
-                                  HasBreakpoint hasBreakpoint, bool running) {
+                                  HasBreakpoint hasBreakpoint, bool running, uint32_t errorLine) {
   std::vector<PaneLine> out;
   if (height <= 0 || width <= 0) return out;
   uint32_t count = file.lineCount();
@@ -85,7 +89,8 @@ std::vector<PaneLine> sourceLines(const SourceFile& file, uint32_t line, int hei
     PaneLine l;
     l.highlight = running && n == line;
     l.marked = hasBreakpoint(n);
-    char marker = l.highlight ? '>' : l.marked ? '*' : ' ';
+    l.error = n == errorLine;
+    char marker = l.highlight ? '>' : l.error ? '!' : l.marked ? '*' : ' ';
     l.text = paneLineText(file.lineText(n), n, numberWidth, marker, width);
     out.push_back(std::move(l));
   }

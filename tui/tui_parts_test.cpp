@@ -125,6 +125,11 @@ TEST_CASE("source pane: the running line highlighted, breakpoints marked", "[tui
   CHECK(lines[3].text == " 12 x = 12");
   CHECK_FALSE(lines[3].highlight);
   CHECK(lines[4].text == "*13 x = 13");
+  // After an error, its line marked '!' (a breakpoint there too: the error's mark shows).
+  lines = sourceLines(f, 13, 9, 20, [](uint32_t n) { return n == 13; }, false, 13);
+  CHECK(lines[3].error);
+  CHECK(lines[3].text == "!13 x = 13");
+  CHECK_FALSE(lines[2].error);
   // Before the first statement: from the top; lines cut at the width, tabs expanded.
   SourceFile g("b.bas", "\tprint 1234567890\n");
   lines = sourceLines(g, 0, 5, 12, [](uint32_t) { return false; });
@@ -162,6 +167,13 @@ TEST_CASE("output pane: tabs to 8-column stops, long lines wrapped", "[tui]") {
   CHECK(wrapRows("", 10) == std::vector<std::string>{""});
   CHECK(wrapRows("abcdefghijkl", 5) == std::vector<std::string>{"abcde", "fghij", "kl"});
   CHECK(wrapRows("a\tb", 4) == std::vector<std::string>{"a   ", "    ", "b"});
+  // A message wraps at its words; a word longer than a row is cut; nothing is lost.
+  CHECK(wordRows("robot crashed into an obstacle", 12) ==
+        std::vector<std::string>{"robot", "crashed into", "an obstacle"});
+  CHECK(wordRows("see 'rInvisibleBlack' here", 8) ==
+        std::vector<std::string>{"see", "'rInvisi", "bleBlack", "' here"});
+  CHECK(wordRows("", 5) == std::vector<std::string>{""});
+  CHECK(wordRows("fits", 4) == std::vector<std::string>{"fits"});
   // The last rows, wrapped lines counted as the rows they take.
   std::vector<std::string_view> lines = {"one", "two", "a long line that wraps", "end"};
   CHECK(lastRows(lines, 10, 4) ==

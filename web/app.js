@@ -104,7 +104,8 @@
   }
   let checkTimer = 0;
   function changed() {
-    localStorage.setItem(STORE, editor.value);
+    saveCurrent();
+    if (notice.kind === 'example') hideNotice();  // an edit makes the example the student's
     if (editor === textAreaEditor) { errorLine = 0; renderEditor(); }
     clearTimeout(checkTimer);
     // During a run the check waits for its end (runProgram checks then).
@@ -124,6 +125,180 @@
   function setSource(text) {
     editor.value = text;
     if (editor === textAreaEditor) changed();
+  }
+  // Another program's text: no undo back into the one before.
+  function resetSource(text) {
+    if (editor.reset) editor.reset(text); else editor.value = text;
+    if (editor === textAreaEditor) renderEditor();
+    listDiagnosticsSoon();
+  }
+  function listDiagnosticsSoon() {
+    clearTimeout(checkTimer);
+    checkTimer = setTimeout(async () => listDiagnostics(await rb.check(editor.value)), 0);
+  }
+
+  // ---------------------------------------------------------------- notices
+  // A line under the header that says what just happened to the student's work, with what can
+  // be done about it: keep or drop a shared program's copy, undo loading an example or a delete.
+  const notice = {kind: ''};
+  function showNotice(kind, text, actions) {
+    notice.kind = kind;
+    $('noticeText').textContent = text;
+    const box = $('noticeActions');
+    box.textContent = '';
+    for (const [label, act] of actions) {
+      const b = document.createElement('button');
+      b.textContent = label;
+      b.onclick = () => { hideNotice(); act(); };
+      box.appendChild(b);
+    }
+    $('notice').hidden = false;
+  }
+  function hideNotice() {
+    notice.kind = '';
+    $('notice').hidden = true;
+  }
+  $('noticeClose').onclick = hideNotice;
+
+  // ---------------------------------------------------------------- the programs kept
+  // The page keeps several programs in the browser's local storage (rb.programs: their names and
+  // texts, and the one open), each saved on every change. A share link, a file opened and New
+  // add one; nothing replaces a program but the student's own edits and loading an example,
+  // which the notice can undo.
+  const PROGRAMS = 'rb.programs';
+  function readBook() {
+    try {
+      const b = JSON.parse(localStorage.getItem(PROGRAMS));
+      if (b && Array.isArray(b.programs)) return b;
+    } catch (e) { /* not ours: start again */ }
+    return null;
+  }
+  function writeBook() {
+    try {
+      localStorage.setItem(PROGRAMS, JSON.stringify(book));
+    } catch (e) {
+      status.textContent = 'not saved: the browser\'s storage for this page is full';
+    }
+  }
+  let book = readBook() || {programs: [], current: ''};
+  const current = () => book.programs.find((p) => p.id === book.current);
+  function newId() { return Date.now().toString(36) + Math.random().toString(36).slice(2, 8); }
+  function freeName(name) {
+    const taken = new Set(book.programs.map((p) => p.name));
+    if (!taken.has(name)) return name;
+    for (let i = 2; ; i++) if (!taken.has(`${name} ${i}`)) return `${name} ${i}`;
+  }
+  // Writes the open program's text; the other programs as the storage has them (another tab
+  // may have changed them).
+  function saveCurrent() {
+    const mine = current();
+    if (!mine) return;
+    mine.source = editor.value;
+    const fresh = readBook();
+    if (fresh) {
+      const theirs = fresh.programs.find((p) => p.id === mine.id);
+      if (theirs) Object.assign(theirs, mine); else fresh.programs.push(mine);
+      fresh.current = mine.id;
+      book = fresh;
+    }
+    writeBook();
+  }
+  function listPrograms() {
+    const sel = $('programs');
+    sel.textContent = '';
+    for (const p of book.programs) {
+      const o = document.createElement('option');
+      o.value = p.id;
+      o.textContent = p.name;
+      sel.appendChild(o);
+    }
+    sel.value = book.current;
+  }
+  function openProgram(id) {
+    if (run) stopProgram();
+    saveCurrent();
+    if (!book.programs.some((p) => p.id === id)) return;
+    book.current = id;
+    writeBook();
+    listPrograms();
+    resetSource(current().source);
+  }
+  function addProgram(name, source) {
+    saveCurrent();
+    const p = {id: newId(), name: freeName(name), source};
+    book.programs.push(p);
+    writeBook();
+    openProgram(p.id);
+    return p;
+  }
+  function deleteProgram(id) {
+    saveCurrent();
+    const i = book.programs.findIndex((p) => p.id === id);
+    if (i < 0) return null;
+    const [gone] = book.programs.splice(i, 1);
+    if (!book.programs.length) book.programs.push({id: newId(), name: 'program 1', source: ''});
+    if (book.current === id) {
+      book.current = book.programs[Math.min(i, book.programs.length - 1)].id;
+      writeBook();
+      listPrograms();
+      resetSource(current().source);
+    } else {
+      writeBook();
+      listPrograms();
+    }
+    return gone;
+  }
+  $('programs').onchange = () => openProgram($('programs').value);
+  $('newProgram').onclick = () => { $('programMenu').open = false; addProgram('program', ''); editor.focus(); };
+  $('renameProgram').onclick = () => {
+    $('programMenu').open = false;
+    const d = $('nameDialog');
+    $('nameInput').value = current().name;
+    d.onclose = () => {
+      const name = $('nameInput').value.trim();
+      if (d.returnValue === 'ok' && name && name !== current().name) {
+        current().name = freeName(name);
+        writeBook();
+        listPrograms();
+      }
+    };
+    d.showModal();
+    $('nameInput').select();
+  };
+  $('deleteProgram').onclick = () => {
+    $('programMenu').open = false;
+    const at = book.programs.findIndex((p) => p.id === book.current);
+    const gone = deleteProgram(book.current);
+    if (gone) {
+      showNotice('delete', `Deleted “${gone.name}”.`, [['Undo', () => {
+        saveCurrent();
+        book.programs.splice(Math.min(at, book.programs.length), 0, gone);
+        writeBook();
+        openProgram(gone.id);
+      }]]);
+    }
+  };
+  // A shared program opens as a copy beside the student's own (the same text opens the copy
+  // made before); the link leaves the address bar, so a reload does not make another.
+  async function openShared() {
+    const text = await programFromHash().catch(() => null);
+    if (text === null) return false;
+    history.replaceState(null, '', location.href.split('#')[0]);
+    const before = book.current;
+    const same = book.programs.find((p) => p.source === text);
+    if (same) {
+      if (same.id !== book.current) openProgram(same.id);
+      return true;
+    }
+    const copy = addProgram('shared program', text);
+    showNotice('shared', `Opened a shared program as “${copy.name}”, beside your own programs.`, [
+      ['Keep', () => {}],
+      ['Drop', () => {
+        deleteProgram(copy.id);
+        if (book.programs.some((p) => p.id === before)) openProgram(before);
+      }],
+    ]);
+    return true;
   }
 
   // ---------------------------------------------------------------- share links, files, examples
@@ -153,9 +328,13 @@
     history.replaceState(null, '', link);
     try { await navigator.clipboard.writeText(link); status.textContent = 'link copied'; } catch (e) { status.textContent = 'link in the address bar'; }
   };
-  window.addEventListener('hashchange', async () => { const p = await programFromHash(); if (p !== null) setSource(p); });
+  window.addEventListener('hashchange', () => { openShared(); });
   $('open').onclick = () => $('file').click();
-  $('file').onchange = async () => { const f = $('file').files[0]; if (f) setSource(await f.text()); $('file').value = ''; };
+  $('file').onchange = async () => {
+    const f = $('file').files[0];
+    if (f) addProgram(f.name.replace(/\.(bas|txt)$/i, ''), await f.text());
+    $('file').value = '';
+  };
   function download(name, href) {
     const a = document.createElement('a');
     a.href = href;
@@ -164,7 +343,8 @@
     a.click();
     a.remove();
   }
-  $('save').onclick = () => download('program.bas', URL.createObjectURL(new Blob([editor.value], {type: 'text/plain'})));
+  $('save').onclick = () => download(`${(current() || {name: 'program'}).name.replace(/[\\/:*?"<>|]+/g, '_')}.bas`,
+    URL.createObjectURL(new Blob([editor.value], {type: 'text/plain'})));
   $('png').onclick = () => download('screen.png', canvas.toDataURL('image/png'));
   // The SVG is the screen as the last run left it, made by the core as `rb render -o OUT.svg`
   // makes it (lines, shapes and text as vectors).
@@ -179,10 +359,18 @@
     o.textContent = `${ex.name}: ${ex.title}`;
     $('examples').appendChild(o);
   }
+  // An example replaces the open program's text (the editor's undo brings it back too).
   $('examples').onchange = () => {
     const ex = examples[Number($('examples').value)];
-    if (ex) setSource(ex.source);
     $('examples').value = '';
+    if (!ex) return;
+    const before = editor.value, into = current();
+    setSource(ex.source);
+    if (before.trim() && before !== ex.source) {
+      showNotice('example', `Loaded the example ${ex.name} into “${into.name}”.`, [['Undo', () => {
+        if (book.current === into.id) setSource(before);
+      }]]);
+    }
   };
 
   // ---------------------------------------------------------------- keys and the mouse
@@ -201,23 +389,24 @@
     }
     return 0;
   }
-  const input = {held: 0, keyWaiters: [], mouse: [0, 0, 0], clicks: [], clickWaiters: [], typed: []};
+  // Keys, the mouse and clicks go to the run (rb.start's run: its worker takes them).
+  let mouseButtons = 0;
   // The program's buttons and edit boxes as the run last showed them (WebHost::presentControls):
   // drawn over the screen; while one of its edit boxes has the keyboard, keys go into it.
   let controls = {buttons: [], edits: [], focus: ''};
   function placeControls() {
-    const layer = $('controls');
     const box = $('screenBox').getBoundingClientRect();
-    const r = canvas.getBoundingClientRect();
-    const scale = Math.min(r.width / 800, r.height / 600);
-    const x = r.left - box.left + (r.width - 800 * scale) / 2, y = r.top - box.top + (r.height - 600 * scale) / 2;
-    layer.style.transform = `translate(${x}px, ${y}px) scale(${scale})`;
+    const p = pictureBox();
+    $('controls').style.transform = `translate(${p.left - box.left}px, ${p.top - box.top}px) scale(${p.scale})`;
   }
   // The controls are buttons of the page too, for the keyboard: Tab reaches them after the
   // screen, and Enter or Space presses one where it is (its middle), as a click there does; an
   // edit box so pressed takes the keys typed next on the screen, which gets the focus. The mouse
-  // goes through them to the screen (pointer-events: none).
-  function showControls(c) {
+  // goes through them to the screen (pointer-events: none). `inFlight`: keys the page sent for an
+  // edit box that the run had not taken when it showed these controls; until it has, the page's
+  // own account of which box has the keys stands (see the screen's keydown).
+  function showControls(c, inFlight) {
+    if (inFlight > 0) c = Object.assign({}, c, {focus: controls.focus});
     controls = c;
     const layer = $('controls');
     const had = layer.contains(document.activeElement) ? document.activeElement.dataset.key : null;
@@ -245,13 +434,28 @@
                                `the program's edit box ${e.name}: ${e.text || 'empty'}`, true));
     placeControls();
   }
-  new ResizeObserver(placeControls).observe(canvas);
-  function keyDown(code) {
-    if (!code) return;
-    input.held = code;
-    const w = input.keyWaiters.splice(0);
-    w.forEach((r) => r(code));
+  new ResizeObserver(() => { fitScreen(); placeControls(); }).observe(canvas);
+  // The 800x600 screen fitted in its box. Shown smaller it is smoothed (the browser averages
+  // neighbouring pixels as it scales the canvas), so that a 1-pixel line or small text never
+  // falls between the pixels shown, as it does when each shown pixel is the nearest one; shown
+  // larger each pixel stays sharp. (The browser's compositor scales it: no work for the page.)
+  function fitScreen() {
+    canvas.classList.toggle('sharp', pictureBox().scale >= 1);
   }
+  // Where the picture is on the page (CSS pixels): its top left corner and a screen pixel's size.
+  function pictureBox() {
+    const r = canvas.getBoundingClientRect();
+    const w = canvas.clientWidth, h = canvas.clientHeight, scale = Math.min(w / 800, h / 600);
+    return {left: r.left + canvas.clientLeft + (w - 800 * scale) / 2, top: r.top + canvas.clientTop + (h - 600 * scale) / 2, scale};
+  }
+  $('larger').onclick = () => {
+    document.body.classList.toggle('larger');
+    $('larger').setAttribute('aria-pressed', String(document.body.classList.contains('larger')));
+  };
+  $('fullscreen').onclick = () => {
+    if (document.fullscreenElement) document.exitFullscreen();
+    else $('screenBox').requestFullscreen().then(() => canvas.focus(), () => {});
+  };
   canvas.addEventListener('keydown', (e) => {
     const code = keyCode(e);
     if (!code || e.ctrlKey || e.metaKey) return;
@@ -260,46 +464,56 @@
     // keyboard back, by core/input's rules).
     if (e.key === 'Tab' && !(run && controls.focus)) return;
     e.preventDefault();
-    if (run && controls.focus) input.typed.push(code);  // into the program's edit box
-    else keyDown(code);
+    if (!run) return;
+    if (controls.focus) {  // into the program's edit box
+      run.typed(code);
+      // Enter, Tab and Esc give the keyboard back (core/input's rules): the page knows it at
+      // once, so that a Tab typed next moves the focus on even before the run has taken them.
+      if (code === NAMED.Enter || code === NAMED.Tab || code === NAMED.Escape) showControls(Object.assign({}, controls, {focus: ''}));
+    } else {
+      run.keyDown(code);
+    }
   });
-  canvas.addEventListener('keyup', () => { input.held = 0; });
-  canvas.addEventListener('blur', () => { input.held = 0; });
+  canvas.addEventListener('keyup', () => { if (run) run.keyUp(); });
+  canvas.addEventListener('blur', () => { if (run) run.keyUp(); });
   function screenPoint(e) {
-    const r = canvas.getBoundingClientRect();
-    // object-fit: contain: the picture's box inside the element
-    const scale = Math.min(r.width / 800, r.height / 600);
-    const ox = (r.width - 800 * scale) / 2, oy = (r.height - 600 * scale) / 2;
-    return [Math.floor((e.clientX - r.left - ox) / scale), Math.floor((e.clientY - r.top - oy) / scale)];
+    const p = pictureBox();
+    return [Math.floor((e.clientX - p.left) / p.scale), Math.floor((e.clientY - p.top) / p.scale)];
   }
-  canvas.addEventListener('mousemove', (e) => { const [x, y] = screenPoint(e); input.mouse = [x, y, e.buttons & 7]; });
-  canvas.addEventListener('mousedown', (e) => {
+  // Pointer events: their positions keep fractions of a pixel (the screen's pixels are smaller
+  // than the page's when it is shown smaller), and a touch screen's touches are clicks too.
+  canvas.addEventListener('pointermove', (e) => {
+    const [x, y] = screenPoint(e);
+    mouseButtons = e.buttons & 7;
+    if (run) run.mouse(x, y, mouseButtons);
+  });
+  canvas.addEventListener('pointerdown', (e) => {
     const [x, y] = screenPoint(e);
     const bits = e.button === 0 ? 1 : e.button === 2 ? 2 : 4;
-    input.mouse = [x, y, (e.buttons & 7) | bits];
-    const c = [x, y, input.mouse[2]];
-    const w = input.clickWaiters.shift();
-    if (w) w(c); else input.clicks.push(c);
+    mouseButtons = (e.buttons & 7) | bits;
+    if (run) run.click(x, y, mouseButtons);
   });
-  canvas.addEventListener('mouseup', (e) => { input.mouse = [input.mouse[0], input.mouse[1], e.buttons & 7]; });
+  canvas.addEventListener('pointerup', (e) => {
+    const [x, y] = screenPoint(e);
+    mouseButtons = e.buttons & 7;
+    if (run) run.mouse(x, y, mouseButtons);
+  });
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
   // A press of the left button at screen pixel (x, y) and its release, as the mouse gives them.
   function pressAt(x, y) {
-    input.mouse = [x, y, 1];
-    const c = [x, y, 1];
-    const w = input.clickWaiters.shift();
-    if (w) w(c); else input.clicks.push(c);
-    setTimeout(() => { input.mouse = [x, y, input.mouse[2] & ~1]; }, 100);
+    if (!run) return;
+    const r = run;
+    r.click(x, y, mouseButtons | 1);
+    setTimeout(() => r.mouse(x, y, mouseButtons), 100);
   }
 
   // ---------------------------------------------------------------- the run
-  let run = null;          // {stop, done}
-  let paused = false, resumeWaiters = [];
-  // Step: the run stops before each statement (the host asks stepping() at each yield and
-  // after each stop, and waits in atLine() until Step, Resume or Stop).
-  let stepMode = false;
+  let run = null;          // rb.start's run: {done, stop, pause, resume, step, ...}
+  // Paused: the run waits in a pause (Pause, or a Step done) and the debugger shows where;
+  // pausing: Pause was pressed and the run has not stopped yet.
+  let paused = false, pausing = false;
   let cancelInput = null, cancelDialog = null;
-  let outputText = '';
+  let waitingFor = '';
 
   function setRunning(on) {
     $('run').disabled = on;
@@ -307,7 +521,26 @@
     $('stop').disabled = !on;
     $('pause').disabled = !on;
     $('step').disabled = !on;
-    $('pause').textContent = paused ? 'Resume' : 'Pause';
+    $('pause').textContent = paused || pausing ? 'Resume' : 'Pause';
+  }
+  function showStatus() {
+    if (!run) return;
+    if (paused) return;  // showPaused says where
+    status.textContent = pausing ? 'pausing…' : waitingFor ? `waiting for ${waitingFor}` : 'running';
+  }
+
+  // The output pane: what the run prints is gathered and shown once a frame, in blocks of whole
+  // lines (a block is laid out once) and the line being printed; the pane keeps the last
+  // `output kept` KiB (the oldest blocks go).
+  const shown = {blocks: [], size: 0, pending: '', tail: null, frame: 0};
+  function outputKeep() { return Math.max(1, Number($('keepOutput').value) || 256) * 1024; }
+  function clearOutput() {
+    output.textContent = '';
+    shown.blocks = [];
+    shown.size = 0;
+    shown.pending = '';
+    shown.tail = document.createElement('span');
+    output.appendChild(shown.tail);
   }
 
   // ---------------------------------------------------------------- the screen as text
@@ -348,22 +581,63 @@
     if (text) $('alert').textContent = text;
   }
   function appendOutput(text, cls) {
-    const keep = Math.max(1, Number($('keepOutput').value) || 256) * 1024;
-    outputText += text;
     if (cls) {
+      flushOutput();
       const span = document.createElement('span');
       span.className = cls;
       span.textContent = text;
       output.appendChild(span);
+      $('outputPane').scrollTop = $('outputPane').scrollHeight;
       return;
     }
-    if (outputText.length > keep) {
-      outputText = outputText.slice(outputText.length - keep);
-      output.textContent = outputText;
-    } else {
-      output.appendChild(document.createTextNode(text));
+    shown.pending += text;
+    if (shown.pending.length > 4 * outputKeep()) shown.pending = shown.pending.slice(-outputKeep());
+    if (!shown.frame) shown.frame = requestAnimationFrame(flushOutput);
+  }
+  function flushOutput() {
+    if (shown.frame) cancelAnimationFrame(shown.frame);
+    shown.frame = 0;
+    if (!shown.pending) return;
+    const keep = outputKeep();
+    let text = shown.tail.textContent + shown.pending;
+    shown.pending = '';
+    if (text.length > keep) {  // all that is kept is new
+      text = text.slice(-keep);
+      shown.blocks.forEach((b) => b.remove());
+      shown.blocks = [];
+      shown.size = 0;
+    }
+    const cut = text.lastIndexOf('\n') + 1;
+    if (cut > 0) {
+      const block = document.createElement('div');
+      block.textContent = text.slice(0, cut);
+      output.insertBefore(block, shown.tail);
+      shown.blocks.push(block);
+      shown.size += cut;
+    }
+    shown.tail.textContent = text.slice(cut);
+    while (shown.size > keep && shown.blocks.length) {
+      const first = shown.blocks[0], n = first.textContent.length;
+      if (shown.size - n >= keep) {
+        first.remove();
+        shown.blocks.shift();
+        shown.size -= n;
+      } else {
+        first.textContent = first.textContent.slice(shown.size - keep);
+        shown.size = keep;
+      }
     }
     $('outputPane').scrollTop = $('outputPane').scrollHeight;
+  }
+  // The run's frames: the newest is drawn once a frame.
+  let nextFrame = null, frameRequest = 0;
+  function showFrame(f) {
+    nextFrame = f;
+    if (!frameRequest) frameRequest = requestAnimationFrame(() => { frameRequest = 0; drawPending(); });
+  }
+  function drawPending() {
+    if (nextFrame) drawFrame(nextFrame);
+    nextFrame = null;
   }
   function drawFrame(f) {
     ctx.putImageData(new ImageData(f.rgba, f.width, f.height), 0, 0);
@@ -373,28 +647,39 @@
     ctx.fillRect(0, 0, 800, 600);
   }
   const io = {
-    heldKey: () => input.held,
-    takeTyped: () => input.typed.shift() || 0,
     controls: showControls,
-    waitKey: () => (input.held ? Promise.resolve(input.held) : new Promise((r) => input.keyWaiters.push(r))),
-    mouse: () => input.mouse,
-    takeClick: () => input.clicks.shift() || null,
-    waitClick: () => (input.clicks.length ? Promise.resolve(input.clicks.shift()) : new Promise((r) => input.clickWaiters.push(r))),
     inputLine: (prompt) => new Promise((resolve) => {
+      flushOutput();
       const form = $('inputForm'), line = $('inputLine');
       form.hidden = false;
       line.value = '';
       line.focus();
+      waitingFor = 'input';
+      showStatus();
       $('outputPane').scrollTop = $('outputPane').scrollHeight;
-      const finish = (value) => { form.hidden = true; form.onsubmit = null; cancelInput = null; resolve(value); };
+      const finish = (value) => {
+        form.hidden = true; form.onsubmit = null; cancelInput = null;
+        waitingFor = '';
+        showStatus();
+        resolve(value);
+      };
       form.onsubmit = (e) => { e.preventDefault(); finish(line.value); };
       cancelInput = () => finish(null);
     }),
     messageBox: (text, title) => new Promise((resolve) => {
+      flushOutput();
+      drawPending();
       const d = $('msgbox');
       $('msgTitle').textContent = title || 'Message';
       $('msgText').textContent = text;
-      const finish = () => { d.onclose = null; cancelDialog = null; if (d.open) d.close(); canvas.focus(); resolve(); };
+      waitingFor = 'an answer to the message box';
+      showStatus();
+      const finish = () => {
+        d.onclose = null; cancelDialog = null; if (d.open) d.close(); canvas.focus();
+        waitingFor = '';
+        showStatus();
+        resolve();
+      };
       d.onclose = finish;
       cancelDialog = finish;
       d.showModal();
@@ -484,23 +769,103 @@
     },
   };
 
-  // The run's yields wait here while paused.
-  function pauseGate(inner) {
-    return async (ms) => {
-      await inner(ms);
-      while (paused && run) await new Promise((r) => resumeWaiters.push(r));
-    };
+  // ---------------------------------------------------------------- the speed
+  // The slider from slow (left) to fast (right): the milliseconds each pixel or degree of robot
+  // motion takes (as the live terminal view paces it); the right end is instantaneous. The
+  // default, 2 ms, is the speed docs/web.md's figures are for.
+  const SPEED_MS = [40, 20, 10, 6, 4, 3, 2, 1, 0.5, 0.2, 0];
+  function speedMs() {
+    const i = Math.min(SPEED_MS.length - 1, Math.max(0, Math.round(Number($('speed').value))));
+    return SPEED_MS[i];
   }
+  function showSpeed() {
+    const ms = speedMs();
+    const text = ms ? `${ms} ms per pixel or degree of robot motion` : 'as fast as it goes (no animation)';
+    $('speed').title = text;
+    $('speed').setAttribute('aria-valuetext', text);
+    if (run) run.setSpeed(ms);
+  }
+  $('speed').addEventListener('input', showSpeed);
+  showSpeed();
 
-  // A stepped run stops here before the statement on `line`.
-  function stepAt(line) {
-    if (!run) return Promise.resolve();
-    paused = true;
-    setRunning(true);
-    editor.setStepLine(line);
-    status.textContent = `paused before line ${line}`;
-    return new Promise((r) => resumeWaiters.push(r));
+  // ---------------------------------------------------------------- the debugger
+  // Paused or stepping, the run shows where it stands, the variables (the core's look at the
+  // running program, as the live terminal view shows them) and the watch expressions, which the
+  // core computes with the program's variables (core/machine/watch.h). Watches are kept with the
+  // page.
+  const WATCHES = 'rb.watches';
+  let watchList = [];
+  try { watchList = JSON.parse(localStorage.getItem(WATCHES) || '[]').filter((w) => typeof w === 'string'); } catch (e) { watchList = []; }
+  function cell(row, text, cls) {
+    const td = document.createElement('td');
+    td.textContent = text;
+    if (cls) td.className = cls;
+    row.appendChild(td);
   }
+  function showPaused(info) {
+    paused = true;
+    pausing = false;
+    flushOutput();
+    drawPending();
+    setRunning(true);
+    editor.setStepLine(info.line);
+    status.textContent = info.where === 'before' ? `paused before line ${info.line}` : `paused in line ${info.line}`;
+    const panel = $('debugger');
+    panel.hidden = false;
+    $('debugWhere').textContent = info.where === 'before' ? `Paused before line ${info.line}`
+      : `Paused in line ${info.line} (inside the statement: Step finishes it)`;
+    const vars = $('variables');
+    vars.textContent = '';
+    let inSub = false;
+    for (const v of info.vars) {
+      if (v.local && !inSub) {
+        inSub = true;
+        const row = vars.insertRow();
+        cell(row, `in sub ${info.sub}`, 'sub');
+        row.firstChild.colSpan = 2;
+      }
+      const row = vars.insertRow();
+      cell(row, v.name, 'name');
+      cell(row, v.value, 'value');
+    }
+    if (!info.vars.length) cell(vars.insertRow(), 'no variables yet', 'none');
+    const list = $('watches');
+    list.textContent = '';
+    info.watches.forEach((w, i) => {
+      const li = document.createElement('li');
+      const x = document.createElement('button');
+      x.textContent = '×';
+      x.title = 'Stop watching ' + w.expr;
+      x.onclick = () => setWatches(watchList.filter((_, k) => k !== i));
+      li.appendChild(x);
+      li.appendChild(document.createTextNode(w.error !== undefined ? ` ${w.expr}: ` : ` ${w.expr} = `));
+      const v = document.createElement('span');
+      v.className = w.error !== undefined ? 'error' : 'value';
+      v.textContent = w.error !== undefined ? w.error : w.value;
+      li.appendChild(v);
+      list.appendChild(li);
+    });
+  }
+  function hidePaused() {
+    paused = false;
+    editor.setStepLine(0);
+    $('debugger').hidden = true;
+  }
+  function setWatches(list) {
+    watchList = list;
+    localStorage.setItem(WATCHES, JSON.stringify(list));
+    if (run) {
+      run.setWatches(list);
+      if (paused) run.refresh();
+    }
+  }
+  $('watchForm').onsubmit = (e) => {
+    e.preventDefault();
+    const text = $('watchInput').value.trim();
+    if (text && !watchList.includes(text)) setWatches([...watchList, text]);
+    $('watchInput').value = '';
+  };
+
   function limits() {
     return {
       maxSteps: Number($('maxSteps').value) || 0,
@@ -508,18 +873,19 @@
       maxMemory: Number($('maxMemory').value) || 0,
     };
   }
+  let latest = null;  // the last run started (its SVG comes after its end)
   async function runProgram() {
     if (run) return;
-    output.textContent = '';
-    outputText = '';
+    clearTimeout(checkTimer);  // the end of the run checks the text
+    lastSvg = null;
+    clearOutput();
+    nextFrame = null;
     editor.setErrorLine(0);
     clearScreen();
-    input.clicks = [];
-    input.typed = [];
-    input.held = 0;
     showControls({buttons: [], edits: [], focus: ''});
-    paused = false;
-    stepMode = false;
+    paused = pausing = false;
+    waitingFor = '';
+    $('debugger').hidden = true;
     status.textContent = 'running';
     alertError('');
     const started = performance.now();
@@ -528,15 +894,25 @@
       io,
       png: false,
       svg: true,
-      stepMs: () => Number($('speed').value),
+      stepMs: speedMs(),
+      watches: watchList,
       onOutput: (t) => appendOutput(t),
-      onFrame: drawFrame,
-      wrapYield: pauseGate,
-      stepping: () => stepMode,
-      atLine: stepAt,
+      onFrame: showFrame,
+      onPaused: showPaused,
+      onSvg: (text) => {
+        if (latest !== r) return;
+        lastSvg = text;
+        if (!run) setRunning(false);
+      },
+      onResumed: () => { if (paused) { hidePaused(); showStatus(); setRunning(true); } },
+      onWaiting: (what) => {
+        waitingFor = what === 'key' ? 'a key' : what === 'click' ? 'a click' : what;
+        if (what) { flushOutput(); drawPending(); }
+        showStatus();
+      },
       onState: (st) => say(describeState(st)),
     }));
-    run = r;
+    run = latest = r;
     setRunning(true);
     let result;
     try {
@@ -545,16 +921,26 @@
       result = {status: 'error', error: String(e), output: ''};
     }
     run = null;
-    lastSvg = result.svg || null;
-    paused = false;
-    stepMode = false;
-    editor.setErrorLine(0);  // the stepped line
-    resumeWaiters.splice(0).forEach((w) => w());
+    hidePaused();
+    pausing = false;
+    waitingFor = '';
+    if (cancelInput) cancelInput();
+    if (cancelDialog) cancelDialog();
     setRunning(false);
+    flushOutput();
+    nextFrame = null;
     if (result.frame) drawFrame(result.frame);
     const secs = ((performance.now() - started) / 1000).toFixed(2);
-    // The diagnostics again (a check waits while a run is on); the run has ended already.
-    if (result.status !== 'rejected') rb.check(editor.value).then(listDiagnostics);
+    // The diagnostics again (the text may have changed during the run), and a runtime error
+    // marked at its place among them.
+    const ran = editor.value;
+    if (result.status !== 'rejected') {
+      rb.check(ran).then((list) => {
+        if (editor.value !== ran) return listDiagnostics(list);
+        listDiagnostics(result.errorDiagnostic ? [result.errorDiagnostic, ...list] : list);
+      });
+    }
+    const printed = output.textContent;
     if (result.status === 'rejected') {
       listDiagnostics(result.diagnostics);
       const first = result.diagnostics.find((d) => d.severity === 'error');
@@ -562,23 +948,21 @@
       appendOutput(result.error, 'error');
     } else if (result.error) {
       editor.setErrorLine(result.errorLine || 0);
-      appendOutput((outputText && !outputText.endsWith('\n') ? '\n' : '') + result.error, 'error');
+      appendOutput((printed && !printed.endsWith('\n') ? '\n' : '') + result.error, 'error');
     }
-    status.textContent = `${result.status} (${secs} s, ${result.steps || 0} steps)`;
+    const steps = typeof result.steps === 'number' ? `, ${result.steps} steps` : '';
+    status.textContent = `${result.status} (${secs} s${steps})`;
     const ended = {finished: 'The program finished', stopped: 'The program was stopped', error: 'The program stopped with an error',
                    'step-limit': 'The program stopped at the step limit', timeout: 'The program stopped at the time limit',
                    rejected: 'The program did not compile'}[result.status] || `The program ended: ${result.status}`;
-    say(`${ended} after ${result.steps || 0} steps. ${describeState(result.state)}`.trim(), true);
+    const after = typeof result.steps === 'number' ? ` after ${result.steps} steps` : '';
+    say(`${ended}${after}. ${describeState(result.state)}`.trim(), true);
     if (result.errorMessage) alertError(result.errorLine ? `Error at line ${result.errorLine}: ${result.errorMessage}` : `Error: ${result.errorMessage}`);
     window.rbLastRun = result;
   }
   function stopProgram() {
     if (!run) return;
     run.stop();
-    paused = false;
-    resumeWaiters.splice(0).forEach((w) => w());
-    input.keyWaiters.splice(0).forEach((w) => w(0));
-    input.clickWaiters.splice(0).forEach((w) => w([0, 0, 0]));
     if (cancelInput) cancelInput();
     if (cancelDialog) cancelDialog();
     serial.woken();
@@ -587,22 +971,25 @@
   $('stop').onclick = stopProgram;
   $('pause').onclick = () => {
     if (!run) return;
-    paused = !paused;
-    if (!paused) {
-      stepMode = false;
-      editor.setErrorLine(0);
-      resumeWaiters.splice(0).forEach((w) => w());
+    if (paused || pausing) {
+      pausing = false;
+      hidePaused();
+      run.resume();
+    } else {
+      pausing = true;
+      run.pause();
     }
     setRunning(true);
-    status.textContent = paused ? 'paused' : 'running';
+    showStatus();
   };
   // Step: while paused, one statement; while running, the run stops before its next statement.
   $('step').onclick = () => {
     if (!run) return;
-    stepMode = true;
-    paused = false;
+    if (paused) hidePaused();
+    pausing = true;  // until the run stops again
     status.textContent = 'stepping';
-    resumeWaiters.splice(0).forEach((w) => w());
+    setRunning(true);
+    run.step();
   };
   // The page's keys (the keys menu lists them): Ctrl with Enter, comma, semicolon or period,
   // wherever the focus is. A running program never gets a key with Ctrl (keyCode above), so
@@ -617,12 +1004,9 @@
     if (!$(action).disabled) $(action).click();
   }, true);
   $('skip').addEventListener('click', (e) => { e.preventDefault(); editor.focus(); });
-  const speedText = () => $('speed').setAttribute('aria-valuetext', `${$('speed').value} ms per pixel or degree`);
-  $('speed').addEventListener('input', speedText);
-  speedText();
 
   // ---------------------------------------------------------------- start
-  window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash,
+  window.rbPage = {runProgram, stopProgram, setSource, shareLink, programFromHash, screen: canvas,
     get source() { return editor.value; },
     get running() { return run !== null; }, ready: null};
   // Offline once loaded: the service worker keeps the site's files (web/sw.js). Browsers run
@@ -630,11 +1014,21 @@
   if ('serviceWorker' in navigator && window.isSecureContext) navigator.serviceWorker.register('sw.js').catch(() => {});
   window.rbPage.ready = (async () => {
     clearScreen();
-    const fromLink = await programFromHash().catch(() => null);
-    const saved = localStorage.getItem(STORE);
-    editor.value = fromLink !== null ? fromLink : saved !== null ? saved : (examples[0] ? examples[0].source : '');
+    // The programs kept, the single one of earlier pages (rb.source) among them, or the first
+    // example as the first program.
+    if (!book.programs.length) {
+      const saved = localStorage.getItem(STORE);
+      book.programs.push({id: newId(), name: 'my program',
+                          source: saved !== null ? saved : (examples[0] ? examples[0].source : '')});
+    }
+    if (!current()) book.current = book.programs[0].id;
+    writeBook();
+    listPrograms();
+    resetSource(current().source);
+    await openShared();
     await rb.ready();
     listDiagnostics(await rb.check(editor.value));
+    rb.prepare();  // the live run's worker, loaded and warmed up before the first Run
     status.textContent = 'ready';
     return true;
   })();

@@ -8,6 +8,7 @@ import {EditorView, Decoration, keymap, lineNumbers, highlightActiveLine, highli
 import {defaultKeymap, history, historyKeymap, indentWithTab} from '@codemirror/commands';
 import {StreamLanguage, syntaxHighlighting, defaultHighlightStyle, bracketMatching} from '@codemirror/language';
 import {setDiagnostics, lintGutter} from '@codemirror/lint';
+import {helpExtensions, setUpReference} from './help.mjs';
 
 const KEYWORDS = new Set(('if then else elseif endif for to step next while wend repeat until do loop ' +
   'gosub goto return sub call end print input and or not mod xor break continue case select ' +
@@ -30,7 +31,8 @@ const robotBasic = StreamLanguage.define({
       if (first && stream.peek() === ':') { stream.next(); return 'labelName'; }
       if (first && word === 'rem') { stream.skipToEnd(); return 'comment'; }
       if (KEYWORDS.has(word)) return 'keyword';
-      if (/^r[A-Z]/.test(w[0])) return 'function(variableName)';
+      // (A tag's modifier follows it: 'variableName.function' is tags.function(tags.variableName).)
+      if (/^r[A-Z]/.test(w[0])) return 'variableName.function';
       return 'variableName';
     }
     stream.next();
@@ -61,31 +63,40 @@ const errorLine = StateField.define({
   provide: (f) => EditorView.decorations.from(f),
 });
 
+setUpReference();  // the command reference (web/help.mjs)
+
 window.RbEditor = {
   create(parent, {doc, onChange, onRun}) {
-    const view = new EditorView({
-      parent,
-      state: EditorState.create({
-        doc,
-        extensions: [
-          lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), highlightActiveLine(),
-          bracketMatching(), robotBasic, syntaxHighlighting(defaultHighlightStyle), lintGutter(), errorLine,
-          keymap.of([{key: 'Mod-Enter', run: () => { onRun(); return true; }}, indentWithTab,
-                     ...defaultKeymap, ...historyKeymap]),
-          EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),
-          // Its name for screen readers; the page's keys menu says how to leave it (Esc, Tab).
-          EditorView.contentAttributes.of({'aria-label': 'Program (RobotBASIC)'}),
-        ],
-      }),
-    });
+    const extensions = [
+      lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), highlightActiveLine(),
+      bracketMatching(), robotBasic, syntaxHighlighting(defaultHighlightStyle), lintGutter(), errorLine,
+      ...helpExtensions(),
+      keymap.of([{key: 'Mod-Enter', run: () => { onRun(); return true; }}, indentWithTab,
+                 ...defaultKeymap, ...historyKeymap]),
+      EditorView.updateListener.of((u) => { if (u.docChanged) onChange(); }),
+      // Its name for screen readers; the page's keys menu says how to leave it (Esc, Tab).
+      EditorView.contentAttributes.of({'aria-label': 'Program (RobotBASIC)'}),
+    ];
+    const view = new EditorView({parent, state: EditorState.create({doc, extensions})});
+    // rb's columns count the line's UTF-8 bytes (1-based); the editor's positions count UTF-16
+    // code units: a line with "é" or "ü" before the column puts them apart.
     const pos = (line, col) => {
       const l = view.state.doc.line(Math.min(Math.max(1, line), view.state.doc.lines));
-      return Math.min(l.to, l.from + Math.max(0, (col || 1) - 1));
+      let bytes = Math.max(0, (col || 1) - 1), i = 0;
+      const text = l.text;
+      while (bytes > 0 && i < text.length) {
+        const c = text.codePointAt(i);
+        bytes -= c < 0x80 ? 1 : c < 0x800 ? 2 : c < 0x10000 ? 3 : 4;
+        i += c >= 0x10000 ? 2 : 1;
+      }
+      return Math.min(l.to, l.from + i);
     };
     return {
       view,
       get value() { return view.state.doc.toString(); },
       set value(text) { view.dispatch({changes: {from: 0, to: view.state.doc.length, insert: text}}); },
+      // Another program: a fresh state, with no undo back into the text before.
+      reset(text) { view.setState(EditorState.create({doc: text, extensions})); },
       setDiagnostics(list) {
         const diags = list.filter((d) => d.line > 0 && d.severity !== 'note').map((d) => {
           const from = pos(d.line, d.col);

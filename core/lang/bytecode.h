@@ -298,6 +298,14 @@ struct Program {
   std::vector<SubInfo> subs;
   std::vector<std::vector<Tok>> separatorLists;  ///< for Print/Format
   std::vector<LabelEntry> labels;      ///< in order of name
+  /// Where expressions read variables (a name's position and its operand): a runtime error about
+  /// a variable with no value points at the name, as rb check's warning does, not at the
+  /// operator that read it.
+  struct VariableRead {
+    SourceLoc loc;
+    uint32_t operand = 0;
+  };
+  std::vector<VariableRead> variableReads;
   bool lineTracing = false;
   /// The finisher ran (compiler_finish.cpp): the interpreter may then make its own forms of
   /// instructions too (RB_OPCODES' last group). Plain code runs as compiled.

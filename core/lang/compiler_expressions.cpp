@@ -78,7 +78,9 @@ uint32_t Compiler::expr(const Expr* e, uint32_t dest) {
     case ExprKind::Var: {
       if (const Builtin* c = builtins_.find(e->text, BuiltinKind::Constant)) return intConst(c->constant);
       checkName(e->text, e->loc, NamePlace::Value);
-      return variable(e->text);
+      uint32_t v = variable(e->text);
+      if (options_.keepCode) p_.variableReads.push_back({e->loc, v});
+      return v;
     }
     case ExprKind::Index: {
       checkName(e->text, e->loc, NamePlace::Array);

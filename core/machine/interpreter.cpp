@@ -1,5 +1,6 @@
 #include "machine/interpreter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <new>
@@ -25,8 +26,6 @@ namespace rb {
 
 namespace {
 
-/// Statements run between two checks of the limits and of the host (a live view polls here).
-constexpr int64_t kCheckInterval = 1 << 16;
 /// The longest string `+` builds.
 constexpr size_t kMaxStringLength = 64u << 20;
 
@@ -180,6 +179,7 @@ std::string Interpreter::slotName(uint32_t op) const {
 // ---------------------------------------------------------------- errors (cold)
 
 RB_COLD void Interpreter::undefined(uint32_t op) const {
+  undefinedOp_ = op;
   std::string name = slotName(op);
   if (name.empty()) throw RuntimeError("a value is missing");
   // Did you mean a variable that has a value (as rb check suggests, now from what ran)?
@@ -447,8 +447,9 @@ RunResult Interpreter::run(const RunLimits& limits) {
   bases_.set(Base::Frame, stack_.data());
   bases_.set(Base::Const, const_cast<Value*>(prog_.constants.data()));
   errorPc_ = kNoPc;
+  undefinedOp_ = kNoOperand;
   stepsDone_ = 0;
-  chunk_ = kCheckInterval;
+  chunk_ = std::max<int64_t>(1, limits_.checkInterval);
   if (limits_.maxSteps && static_cast<uint64_t>(chunk_) > limits_.maxSteps)
     chunk_ = static_cast<int64_t>(limits_.maxSteps);
   stepsLeft_ = chunk_;
@@ -494,6 +495,7 @@ RunResult Interpreter::run(const RunLimits& limits) {
     } else {
       result.status = RunStatus::RuntimeError;
       SourceLoc loc = pc < prog_.locs.size() ? prog_.locs[pc] : SourceLoc{};
+      if (undefinedOp_ != kNoOperand) loc = variableReadNear(loc, undefinedOp_);
       result.error = Diagnostic{Severity::Error, loc, e.message(), e.code()};
       result.error->notes = callChain();
     }
@@ -507,8 +509,38 @@ RunResult Interpreter::run(const RunLimits& limits) {
   // first test stops the count one below where it started. Never below zero (it wrapped to
   // 2^64-1); the hosts that show a count take the larger of it and the statements they saw begin.
   int64_t counted = static_cast<int64_t>(stepsDone_) + (chunk_ - stepsLeft_);
+  // A runtime error stops the run between two transfers, before the statements since the last
+  // one were credited: in line-traced code their Line instructions say how many began (a
+  // robot that crashes in the program's first statements ran them; untraced code has no mark).
+  if (result.status == RunStatus::RuntimeError) counted += statementsBegun(pc);
   result.steps = counted < 0 ? 0 : static_cast<uint64_t>(counted);
   return result;
+}
+
+SourceLoc Interpreter::variableReadNear(SourceLoc at, uint32_t op) const {
+  SourceLoc best = at;
+  uint32_t bestDistance = UINT32_MAX;
+  for (const Program::VariableRead& r : prog_.variableReads) {
+    if (r.loc.file != at.file || r.loc.line != at.line || runOperand(r.operand) != op) continue;
+    const uint32_t distance = r.loc.col > at.col ? r.loc.col - at.col : at.col - r.loc.col;
+    if (distance < bestDistance) {
+      best = r.loc;
+      bestDistance = distance;
+    }
+  }
+  return best;
+}
+
+int64_t Interpreter::statementsBegun(uint32_t pc) const {
+  if (code_.empty()) return 0;
+  int64_t n = 0;
+  for (size_t i = std::min<size_t>(pc, code_.size() - 1);; --i) {
+    const Op op = code_[i].op;
+    if (i != pc && isTransfer(op)) break;
+    if (op == Op::Line) ++n;
+    if (i == 0) break;
+  }
+  return n;
 }
 
 std::vector<VariableView> Interpreter::variables() const {
@@ -546,7 +578,7 @@ bool Interpreter::checkpoint() {
     stopStatus_ = RunStatus::Stopped;
     return false;
   }
-  chunk_ = kCheckInterval;
+  chunk_ = std::max<int64_t>(1, limits_.checkInterval);
   if (limits_.maxSteps && static_cast<uint64_t>(chunk_) > limits_.maxSteps - stepsDone_)
     chunk_ = static_cast<int64_t>(limits_.maxSteps - stepsDone_);
   stepsLeft_ = chunk_;

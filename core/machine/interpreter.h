@@ -18,6 +18,10 @@ struct RunLimits {
   double timeoutSeconds = 0;    ///< real seconds at most (0: no limit)
   uint64_t maxMemoryBytes = 0;  ///< memory rb may use at most, watched by the host (0: no limit)
   uint32_t maxCallDepth = 100000;  ///< nested gosub/call frames at most
+  /// Statements between the interpreter's checkpoints (the step limit, the clock, Host::poll).
+  /// A host that must answer quickly whatever the program does (the web page's Stop, with no
+  /// thread to interrupt the run) asks for fewer; a checkpoint costs tens of nanoseconds.
+  uint32_t checkInterval = 1 << 16;
 
   /// The limits as every host's options give them (rb run's --max-steps, --timeout and
   /// --max-memory in MiB, the page's fields); 0 is no limit.
@@ -141,6 +145,11 @@ class Interpreter {
   [[noreturn]] void tooDeep() const;
   /// Notes for a runtime error: where each active gosub and sub call came from, innermost first.
   std::vector<Diagnostic> callChain() const;
+  /// Line instructions from the last control transfer before `pc` up to `pc` (see run()).
+  int64_t statementsBegun(uint32_t pc) const;
+  /// Where the program reads variable `op` on the line of `at`, nearest `at` (an error about
+  /// the variable points there); `at` when the compiler noted none.
+  SourceLoc variableReadNear(SourceLoc at, uint32_t op) const;
   std::string slotName(uint32_t op) const;
   Value& arrayOperand(uint32_t op);
   size_t elementOffset(ArrObj& a, uint32_t arrOp, const Value* idx, uint32_t n);
@@ -171,6 +180,8 @@ class Interpreter {
   /// Where a runtime error being thrown belongs when that is not the current instruction (a
   /// sub that returned no value to an expression: the call's instruction); kNoPc otherwise.
   uint32_t errorPc_ = kNoPc;
+  /// The variable a runtime error says has no value (undefined()), or kNoOperand.
+  mutable uint32_t undefinedOp_ = kNoOperand;
 
   RunLimits limits_;
   uint64_t stepsDone_ = 0;   ///< steps counted before the current chunk

@@ -20,9 +20,9 @@ TEST_CASE("a program runs in-process with a test host", "[interpreter]") {
   auto o = runProgram("for i = 1 to 3\n  s = s + i\nnext\n");
   CHECK(o.loaded);
   CHECK(o.diagnostics ==
-        "test.bas:2:9: error: variable 's' is used before it is given a value [rb-runtime-error]\n"
+        "test.bas:2:7: error: variable 's' is used before it is given a value [rb-runtime-error]\n"
         "    2 |   s = s + i\n"
-        "      |         ^\n");
+        "      |       ^\n");
   auto ok = runProgram("s = 0\nfor i = 1 to 3\n  s = s + i\nnext\nprint s\n");
   CHECK(ok.out == "6\n");
   CHECK(ok.result.status == RunStatus::Finished);
@@ -263,7 +263,10 @@ TEST_CASE("finished code runs as the plain code does: output, errors and every s
     CHECK(traced.out == plain.out);
     CHECK(traced.diagnostics == plain.diagnostics);
     CHECK(traced.result.status == plain.result.status);
-    CHECK(traced.result.steps == plain.result.steps);
+    // After a runtime error traced code also counts the statements begun since the last
+    // transfer (its Line instructions mark them; see the next test).
+    if (plain.result.status == RunStatus::RuntimeError) CHECK(traced.result.steps >= plain.result.steps);
+    else CHECK(traced.result.steps == plain.result.steps);
     // Stopped after every number of steps, both stop at the same statement with the same output.
     for (uint64_t limit = 1; limit < plain.result.steps; ++limit) {
       RunLimits limits;
@@ -279,6 +282,36 @@ TEST_CASE("finished code runs as the plain code does: output, errors and every s
       CHECK(c.result.steps == b.result.steps);
     }
   }
+}
+
+TEST_CASE("a variable with no value is reported at its name, where rb check warns", "[interpreter]") {
+  auto o = runProgram("x = 1\nprint x + zz\n");
+  CHECK(o.result.status == RunStatus::RuntimeError);
+  REQUIRE(o.result.error);
+  CHECK(o.result.error->loc.line == 2);
+  CHECK(o.result.error->loc.col == 11);  // zz, not the + at 9
+  // The same name twice on a line: the reading nearest the operator that failed.
+  auto twice = runProgram("y = 2\nprint (y - 1) * (q + q)\n");
+  REQUIRE(twice.result.error);
+  CHECK(twice.result.error->loc.col == 18);
+  // Other errors stay at their operator.
+  auto zero = runProgram("x = 0\nprint 3 / x\n");
+  REQUIRE(zero.result.error);
+  CHECK(zero.result.error->loc.col == 9);
+}
+
+TEST_CASE("a runtime error in line-traced code counts the statements begun", "[interpreter]") {
+  // Steps are credited at control transfers: untraced, a crash in the first statements counts
+  // none; traced (the web page's runs), their Line instructions say how many began.
+  CompileOptions traced;
+  traced.lineTracing = true;
+  auto crash = runProgram("rLocate 400,300\nx = 1\nrForward 1000\nprint \"not here\"\n", {}, {}, {}, traced);
+  CHECK(crash.result.status == RunStatus::RuntimeError);
+  CHECK(crash.result.steps == 3);
+  // After a loop: the loop's statements as ever, then those begun after it.
+  auto after = runProgram("for i = 1 to 3\n  x = i\nnext\nprint 1 / 0\n", {}, {}, {}, traced);
+  CHECK(after.result.status == RunStatus::RuntimeError);
+  CHECK(after.result.steps == 1 + 3 * 2 + 1);
 }
 
 TEST_CASE("line-traced code is finished only when asked (the web page's Step)", "[interpreter]") {

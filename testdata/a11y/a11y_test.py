@@ -61,7 +61,7 @@ window.__focus = async () => {
   const cm = e.closest('.cm-editor');
   let name = e.id;
   if (cm) name = 'editor';
-  else if (e.closest('#screenBox') && e.id !== 'screen') name = 'control:' + e.dataset.name;
+  else if (e.closest('#screenBox > #controls')) name = 'control:' + e.dataset.name;  // the program's, on the page
   else if (e.closest('#diagnostics')) name = 'diagnostic';
   else if (e.tagName === 'SUMMARY') name = 'summary:' + e.parentElement.id;
   else if (e.closest('article.card')) name = 'card';
@@ -283,9 +283,18 @@ def page(s, url):
 
     # The order Tab follows, from the top: every control, the editor, the screen, the output.
     s.js("document.activeElement.blur(); window.scrollTo(0, 0); true")
-    stops = s.tab_order(13, "the page")
-    in_order(stops, ["skip", "examples", "open", "save", "share", "run", "speed", "png", "summary:limits",
-                     "summary:keys", "editor", "screen", "outputPane"], "the page")
+    stops = s.tab_order(18, "the page")
+    in_order(stops, ["skip", "programs", "summary:programMenu", "examples", "open", "save", "share", "run", "speed",
+                     "png", "summary:limits", "summary:keys", "help", "editor", "screen", "larger", "fullscreen",
+                     "outputPane"],
+             "the page")
+    # The command reference: a dialog, its search box takes the focus; Esc closes it.
+    s.js("document.getElementById('help').click(); true")
+    s.wait_for("document.querySelectorAll('#referenceList li').length > 0", "the command reference shows nothing")
+    expect(s.focus()[0] == "referenceSearch", f"the command reference's search box does not have the focus: {s.focus()}")
+    s.axe("the command reference open")
+    s.key("Escape")
+    expect(not s.js("document.getElementById('reference').open"), "Esc does not close the command reference")
     # The keys menu names the page's keys.
     keys = s.js("document.getElementById('keys').textContent")
     for k in ["Ctrl+Enter", "Ctrl+,", "Ctrl+;", "Ctrl+."]:
@@ -316,7 +325,7 @@ def page(s, url):
     s.js("document.getElementById('screen').focus(); true")
     time.sleep(4.5)
     s.key(",", CTRL)
-    s.wait_for("document.getElementById('status').textContent === 'paused'", "Ctrl+, did not pause the run")
+    s.wait_for("document.getElementById('status').textContent.startsWith('paused')", "Ctrl+, did not pause the run")
     s.axe("paused")
     s.key(";", CTRL)
     line = s.wait_for("(/^paused before line (\\d+)$/.exec(document.getElementById('status').textContent) || [])[1]",

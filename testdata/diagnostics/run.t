@@ -10,9 +10,9 @@ in the if
 [exit 0]
 
 $ rb run --color=never inputs/runtime.bas
-inputs/runtime.bas:9:19: error: variable 'real' is used before it is given a value; did you mean 'Real'? (names are case-sensitive) [rb-runtime-error]
+inputs/runtime.bas:9:14: error: variable 'real' is used before it is given a value; did you mean 'Real'? (names are case-sensitive) [rb-runtime-error]
     9 |   print n / (real - 2)
-      |                   ^
+      |              ^~~~
 inputs/runtime.bas:6:3: note: in sub 'Inner' called from line 6
     6 |   call Inner(1)
       |   ^~~~
@@ -44,9 +44,9 @@ inputs/crash_wall.bas:5:1: error: robot crashed into an obstacle: colour Black a
 
 $ rb run --color=never inputs/include_runtime.bas
 In file included from inputs/include_runtime.bas:2:
-inputs/lib_runtime.bas:3:12: error: variable 'd' is used before it is given a value [rb-runtime-error]
+inputs/lib_runtime.bas:3:14: error: variable 'd' is used before it is given a value [rb-runtime-error]
     3 |   return n / d
-      |            ^
+      |              ^
 inputs/include_runtime.bas:3:7: note: in sub 'Half' called from line 3
     3 | print Half(4)
       |       ^~~~

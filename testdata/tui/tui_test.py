@@ -241,16 +241,40 @@ def test_mouse(rb):
 
 
 def test_error(rb):
-    """A runtime error shows in the view, then on standard error in rb run's format (exit 70)."""
+    """A runtime error shows in the view, wrapped at its words, with its line marked ('!') in the
+    source pane, then on standard error in rb run's format (exit 70)."""
     s = Session(rb, "crash.bas")
     try:
         t = s.wait_for("the error", lambda t: status(t, "state") == "error")
-        check("crash.bas:5:1: error: robot crashed into an obstacle" in t, "the view lacks the error:\n" + t)
+        t = s.settled()
+        words = " ".join(" ".join(line.split()) for line in output_pane(t).split("\n") if line.strip())
+        check("crash.bas:5:1: error: robot crashed into an obstacle: colour Red at (400, 120) [rb-robot-crash]" in words,
+              "the view lacks the error, or cuts its words:\n" + t)
+        check(re.search(r"(?:^|\|)!\s*5 rForward 300", t, re.M), "the error's line is not marked:\n" + t)
         s.keys("Enter")
         code = s.exit_code()
         check(code == 70, f"exit status {code}")
         err = s.stderr()
         check("crash.bas:5:1: error: robot crashed into an obstacle" in err, "stderr: " + err)
+    finally:
+        s.close()
+
+
+def test_pause_move(rb):
+    """Paused inside a robot motion, the variables pane shows the variables as they are: the
+    loop's counter of the side being drawn, not that of the side before."""
+    s = Session(rb, "square.bas")
+    try:
+        t = s.wait_for("the second turn", lambda t: status(t, "heading") == "180.0")
+        corner = (status(t, "x"), status(t, "y"))
+        s.wait_for("the third side", lambda t: status(t, "heading") == "180.0"
+                   and (status(t, "x"), status(t, "y")) != corner)
+        s.keys("F2")
+        s.wait_for("the pause", lambda t: status(t, "state") == "paused")
+        t = s.settled()
+        check(variable(t, "n") == "3", "paused on the third side, the variables pane shows:\n" + t)
+        s.keys("F10")
+        check(s.exit_code() == 0, "exit status")
     finally:
         s.close()
 
@@ -903,6 +927,7 @@ TESTS = {
     "keyboard": test_keyboard,
     "mouse": test_mouse,
     "error": test_error,
+    "pause_move": test_pause_move,
     "quit": test_quit,
     "resize": test_resize,
     "unicode": test_unicode,

@@ -68,8 +68,10 @@ std::unique_ptr<Loaded> load(const char* source, bool lint, bool keepCode, bool 
   out->program = loadProgram(kProgramName, source, reader, standardBuiltins(), LoadOptions{}, out->diags);
   CompileOptions compile;
   compile.keepCode = keepCode;
-  compile.lineTracing = lineTracing;  // the page's runs: the host hears each statement (Step)
-  compile.finishTraced = true;        // Step shows the line, not the variables
+  // The page's live runs: the host hears each statement while the user steps, and the code is
+  // not finished, so that the debugger shows every variable as the program wrote it (as the
+  // live terminal view does).
+  compile.lineTracing = lineTracing;
   out->compiled = compileChecked(*out->program, compile, lint, out->diags);
   return out;
 }
@@ -93,6 +95,42 @@ using namespace rb;
 using namespace rb::web;
 
 extern "C" {
+
+/// The built-in table the page's help reads (completion, hover and the command reference: the
+/// rows the language server's completion and hover read, web/help.mjs): a JSON array, one object
+/// a row: name, kind (command, function, constant), group, usage, help, value (constants), and
+/// the evidence as docs/builtins.md gives it: tier (confirmed, recalled, own) and its text.
+EMSCRIPTEN_KEEPALIVE char* rb_builtins() {
+  std::string out = "[";
+  for (const Builtin& b : standardBuiltins().rows()) {
+    if (out.size() > 1) out += ',';
+    const char* kind = b.kind == BuiltinKind::Command ? "command" : b.kind == BuiltinKind::Function ? "function" : "constant";
+    out += "{\"name\":";
+    appendJsonString(out, b.name);
+    out += ",\"kind\":";
+    appendJsonString(out, kind);
+    out += ",\"group\":";
+    appendJsonString(out, b.group);
+    out += ",\"usage\":";
+    appendJsonString(out, b.usage());
+    out += ",\"help\":";
+    appendJsonString(out, b.help);
+    if (b.kind == BuiltinKind::Constant) out += ",\"value\":" + std::to_string(b.constant);
+    const Evidence& e = b.evidence;
+    out += ",\"tier\":";
+    appendJsonString(out, e.confirmed() ? "confirmed" : e.own() ? "own" : "recalled");
+    out += ",\"source\":";
+    appendJsonString(out, e.source);
+    out += ",\"recalled\":";
+    appendJsonString(out, e.recalled);
+    out += ",\"reason\":";
+    appendJsonString(out, e.reason);
+    out += ",\"instead\":";
+    appendJsonString(out, e.instead);
+    out += '}';
+  }
+  return give(out + "]");
+}
 
 /// The diagnostics `rb check` gives for the program, as a JSON array.
 EMSCRIPTEN_KEEPALIVE char* rb_check(const char* source) {
@@ -135,11 +173,14 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
   host.attachMachine(machine);
   machine.canvas().keepDisplayList(svg != 0);  // the SVG's shapes (as rb render -o OUT.svg)
   Interpreter interpreter(*l->compiled, machine);
-  RunResult result = interpreter.run(RunLimits::of(static_cast<uint64_t>(maxSteps), timeoutSeconds,
-                                                   static_cast<uint64_t>(maxMemoryMiB)));
+  host.attachInterpreter(interpreter);
+  RunLimits limits = RunLimits::of(static_cast<uint64_t>(maxSteps), timeoutSeconds, static_cast<uint64_t>(maxMemoryMiB));
+  // A live run looks at the page (Stop, Pause) at least every few milliseconds, even when its
+  // statements are slow ones (drawing, printing into a full screen, long strings).
+  if (live) limits.checkInterval = 1024;
+  RunResult result = interpreter.run(limits);
   host.flushOutput();
   host.present();
-  if (svg) host.presentSvg();
   const char* status = "finished";
   switch (result.status) {
     case RunStatus::Finished: status = "finished"; break;
@@ -157,7 +198,12 @@ EMSCRIPTEN_KEEPALIVE char* rb_run(const char* source, const char* stdinLines, co
     out += ",\"error\":";
     jsonDiagnostic(out, l->program->sources, *result.error);
   }
-  return give(out + "}");
+  out += '}';
+  // The page hears how the run ended before the SVG is made (it can take a while: the shapes of
+  // 40,000 SetPixels), which it then gets for its SVG button.
+  host.finished(out);
+  if (svg) host.presentSvg();
+  return give(out);
 }
 
 }  // extern "C"

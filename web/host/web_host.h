@@ -1,9 +1,12 @@
 #pragma once
 // The Host of a run in a browser (or in node): rb's core compiled to WebAssembly with
-// emscripten, the page's JavaScript (web/rb.js) on the other side. The run never blocks the
-// page: the host yields to the browser's event loop (emscripten's Asyncify) every few
-// milliseconds of computing, while the program waits (delay, robot motion) and while it waits
-// for input, so the page draws frames, takes keys and clicks and can stop the run at once.
+// emscripten, JavaScript (web/rb.js, web/rblive.js) on the other side. The page's live runs
+// go on in a Web Worker (web/rblive.js), never on the page's thread. There the host either
+// waits synchronously for what the page sends (the rbcore_fast build: keys, clicks, Stop and
+// Step through a SharedArrayBuffer and Atomics.wait, when the page is cross-origin isolated)
+// or yields to the worker's event loop every few milliseconds (the rbcore build, emscripten's
+// Asyncify: the page's messages arrive meanwhile). The host is the same code for both: only
+// the waiting hooks are declared async in the Asyncify build.
 //
 // Two ways of running, chosen per run:
 //   headless  what `rb run` does: a virtual clock that moves only when the program waits or
@@ -22,6 +25,7 @@
 #include "input/input_rules.h"
 #include "input/input_script.h"
 #include "machine/host.h"
+#include "machine/interpreter.h"
 #include "machine/machine.h"
 
 namespace rb::web {
@@ -31,6 +35,8 @@ class WebHost : public Host {
   WebHost(bool live, std::vector<std::string> stdinLines, InputScript script);
 
   void attachMachine(Machine& machine) override;
+  /// The running program, for the page's debugger: its variables and watches while paused.
+  void attachInterpreter(const Interpreter& interpreter) { interpreter_ = &interpreter; }
   void output(std::string_view text) override;
   std::optional<std::string> inputLine(std::string_view prompt) override;
   double clockMs() override;
@@ -71,12 +77,15 @@ class WebHost : public Host {
   /// Gives the output gathered so far to the page.
   void flushOutput();
   /// Converts the screen, with the robot drawn on top as rb render draws it, to RGBA for the
-  /// page's canvas and hands it over.
-  void present();
+  /// page's canvas and hands it over when it has changed; `force` false (while the program
+  /// computes): only when the page has drawn the frames before.
+  void present(bool force = true);
   /// The screen as `rb render -o OUT.svg` draws it, handed to the page. When the SVG must embed
   /// the screen's pixels (flip is on, a flood fill, ...), its <image> links to kScreenHref and the
   /// pixels (RGBA, without the robot) go with it: the page puts their PNG in that link's place.
   void presentSvg();
+  /// A live run has ended: how (rb_run's JSON) goes to the page at once, before the SVG.
+  void finished(const std::string& json);
   static constexpr const char* kScreenHref = "rb:screen.png";
   /// How long a robot on Web Serial has for each reply: rb run's --robot-timeout default.
   static constexpr double kRobotTimeoutSeconds = 2;
@@ -94,9 +103,19 @@ class WebHost : public Host {
   void checkLimits();
   /// After each visit to the page: a Stop, the speed and whether the page steps.
   void afterPage();
+  /// Paused (the page's Pause or Step): shows the page `where` the run stands, the variables and
+  /// the watches, and waits until the page resumes, steps or stops the run. `where`: "before"
+  /// (the statement at `loc` is next), "move" (inside a robot motion) or "delay".
+  void pauseAt(SourceLoc loc, const char* where);
+  /// What the page's debugger shows while paused, as JSON.
+  std::string debugJson(SourceLoc loc, const char* where);
+  /// Inside a statement (a robot motion, a delay): pauses there when the page has asked to.
+  void pauseInside();
   friend class WebSerialLink;
   /// The screen's pixels as RGBA in rgba_; false when there is no whole screen.
   bool toRgba(const Pixels& pixels);
+  /// 0xRRGGBB as the little-endian word of RGBA bytes, opaque.
+  static uint32_t rgbaWord(uint32_t rgb);
 
   bool live_;
   std::vector<std::string> stdin_;
@@ -106,11 +125,16 @@ class WebHost : public Host {
   InputRules rules_;
   Machine* machine_ = nullptr;
   std::string out_;
-  std::vector<uint8_t> rgba_;
+  std::vector<uint32_t> rgba_;  ///< RGBA, a pixel a word
   std::chrono::steady_clock::time_point start_;
   double lastYieldMs_ = 0;
   double lastFrameMs_ = -1000;
   bool stepping_ = false;   ///< the page asks to stop before each statement
+  /// Stepped on from a pause inside a statement (a robot motion, a delay): the statement ends
+  /// before the next pause.
+  bool finishStatement_ = false;
+  const Interpreter* interpreter_ = nullptr;
+  double pausedSeconds_ = 0;  ///< time spent paused: the run's clock leaves it out
   double sleepDebtMs_ = 0;  ///< live: waiting the run owes, slept once it is worth a timer
   WatchdogLimits limits_;
   RunAlarms* alarms_ = nullptr;
