@@ -40,7 +40,7 @@ RB_WAIT_JS(int, rb_js_pause, (const char* info, int size), {
 });
 // The page's watch expressions, one a line (malloc'ed).
 EM_JS(char*, rb_js_watches, (), {
-  const text = Module.rbHooks.watches ? Module.rbHooks.watches() : '';
+  const text = Module.rbHooks.watches ? Module.rbHooks.watches() : "";
   const size = lengthBytesUTF8(text) + 1;
   const p = _malloc(size);
   stringToUTF8(text, p, size);
