@@ -6,6 +6,7 @@
 
 #include <stdio_ext.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -493,7 +494,9 @@ class JobStreams {
         error = "cannot open " + path + ": " + std::strerror(errno);
         return;
       }
-      saved_[fd] = ::dup(fd);
+      // Kept from whatever the program may start (spawn = true): rb test's own output and
+      // report are not the program's to write.
+      saved_[fd] = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
       ::dup2(opened, fd);
       ::close(opened);
     }
@@ -534,6 +537,13 @@ grade::JobOutcome runJobInProcess(const grade::Job& job) {
   auto start = std::chrono::steady_clock::now();
   // argv: rb itself, the job's subcommand and its options, parsed as `rb test-job` parses them.
   std::vector<std::string> args(job.argv.rbegin(), job.argv.rend() - 1);
+  if (std::find(args.begin(), args.end(), "--allow-spawn") != args.end()) {
+    // rb's own rules stop a program's own file access at its folder; what it starts, only the
+    // kernel's rules confine.
+    outcome.error = "rb test --in-process runs no program that may start others (spawn = true): "
+                    "only the kernel's confinement holds what they start";
+    return outcome;
+  }
   int code = 0;
   {
     JobStreams streams(job);
