@@ -45,6 +45,7 @@ struct TestOptions {
   std::vector<std::string> similarityIgnore;
   bool quiet = false;
   bool requireSandbox = false;
+  bool inProcess = false;
   std::vector<std::string> merge, mergePictures;
 };
 
@@ -183,6 +184,13 @@ int executeTest(const TestOptions& opts) {
   g.compileProgram = firstError;
   g.includedFiles = includedFiles;
   g.requireSandbox = opts.requireSandbox;
+  if (opts.inProcess) {
+    if (opts.requireSandbox) {
+      std::fprintf(stderr, "rb test: --in-process runs the programs without the kernel's confinement: leave out --require-sandbox\n");
+      return run::exitcode::kUsage;
+    }
+    g.runJob = runJobInProcess;
+  }
   if (opts.requireSandbox) {
     if (std::string gap = run::kernelConfinementGap(); !gap.empty()) {
       std::fprintf(stderr, "rb test: --require-sandbox: %s\n", gap.c_str());
@@ -406,6 +414,9 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
   test->add_flag("--require-sandbox", opts->requireSandbox,
                  "Refuse to grade when the kernel cannot confine the programs (no Landlock or seccomp), "
                  "instead of saying so in every report");
+  test->add_flag("--in-process", opts->inProcess,
+                 "Run each program inside rb itself, one at a time, as the web page grades: rb's own "
+                 "rules confine it (its folder, no other programs), not the kernel's");
   test->footer(
       "Each program runs in a child process of its own (rb itself), with a time and memory "
       "limit, so a crash or a hang fails that program alone. Exit status: 0 every program "
@@ -426,7 +437,7 @@ void addTestCommand(CLI::App& app, int& exitCode, bool withOptions) {
     std::vector<std::string> grading;
     if (!opts->paths.empty()) grading.push_back("the paths to grade (" + opts->paths.front() + ")");
     for (const char* name : {"--assignment", "--jobs", "--shard", "--seed", "--max-steps", "--timeout", "--replays",
-                             "--include", "--roster", "--trust-comments", "--require-sandbox", "--student"})
+                             "--include", "--roster", "--trust-comments", "--require-sandbox", "--in-process", "--student"})
       if (test->count(name)) grading.push_back(name);
     exitCode = executeMerge(*opts, grading);
   });

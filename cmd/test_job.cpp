@@ -4,7 +4,11 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <stdio_ext.h>
+
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -246,7 +250,13 @@ RunResult runTeacherProgram(const TeacherProgram& p, run::HeadlessRun& run, cons
   return interpreter.run(run::runLimits(opts));
 }
 
-int executeJob(JobOptions opts) {
+/// The record's confinement for a job run in rb's own process (rb test --in-process): the
+/// kernel's rules would confine rb itself, so only rb's own hold.
+constexpr const char* kInProcessConfinement =
+    "each program ran inside rb's own process: rb's own rules confined it (its folder, no other "
+    "programs), not the kernel's";
+
+int executeJob(JobOptions opts, bool inProcess) {
   opts.run.quiet = true;  // rb check's part of the record has the warnings
   opts.run.noPorts = !opts.ports;
   // What the job writes for rb test, and what the teacher's programs are, is opened and read
@@ -264,10 +274,12 @@ int executeJob(JobOptions opts) {
   run::HeadlessRun run;
   run.memory = std::make_shared<run::ResidentMemory>();
   record::RunRecord rec;
-  run::KernelStatus kernel = run::confineProcess(jobRules(opts));
+  run::KernelStatus kernel;
+  if (inProcess) kernel.problem = kInProcessConfinement;
+  else kernel = run::confineProcess(jobRules(opts));
   opts.run.confined = true;
   rec.confinement = kernel.problem;
-  if (!kernel.complete() && opts.run.requireSandbox) {
+  if ((inProcess || !kernel.complete()) && opts.run.requireSandbox) {
     std::fprintf(stderr, "rb run: --require-sandbox: the kernel cannot confine this run: %s\n", kernel.problem.c_str());
     rec.complete = true;
     rec.exitCode = run::exitcode::kRuntime;
@@ -444,7 +456,9 @@ int executeJob(JobOptions opts) {
 
 }  // namespace
 
-void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
+namespace {
+
+void addJobCommand(CLI::App& app, int& exitCode, bool withOptions, bool inProcess) {
   auto opts = std::make_shared<JobOptions>();
   CLI::App* job = app.add_subcommand(kTestJobCommand, "Run one program for rb test (internal)");
   job->group("");  // hidden from rb --help
@@ -464,7 +478,96 @@ void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
   job->add_option("--replay", opts->replay, "Write the run's replay here (.gif, .svg or .html)");
   job->add_flag("--ports,!--no-ports", opts->ports, "Let the program open serial ports (default: not)");
   job->add_option("--box", opts->box, "rb test's scratch folder for this run: the only folder the program may change");
-  job->callback([opts, &exitCode] { exitCode = executeJob(*opts); });
+  job->callback([opts, &exitCode, inProcess] { exitCode = executeJob(*opts, inProcess); });
+}
+
+/// The job's standard input, output and error and its working folder, set in this process for
+/// the time of one job and put back after it.
+class JobStreams {
+ public:
+  explicit JobStreams(const grade::Job& job) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const std::string* paths[3] = {&job.stdinPath, &job.stdoutPath, &job.stderrPath};
+    for (int fd = 0; fd < 3; ++fd) {
+      const std::string& path = paths[fd]->empty() ? devNull_ : *paths[fd];
+      int flags = fd == 0 ? O_RDONLY : O_WRONLY | O_CREAT | O_TRUNC;
+      int opened = ::open(path.c_str(), flags | O_CLOEXEC | O_NOFOLLOW, 0600);
+      if (opened < 0) {
+        error = "cannot open " + path + ": " + std::strerror(errno);
+        return;
+      }
+      // Kept from whatever the program may start (spawn = true): rb test's own output and
+      // report are not the program's to write.
+      saved_[fd] = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
+      ::dup2(opened, fd);
+      ::close(opened);
+    }
+    char cwd[4096];
+    if (::getcwd(cwd, sizeof cwd)) cwd_ = cwd;
+    if (!job.cwd.empty() && ::chdir(job.cwd.c_str()) != 0) error = "cannot enter " + job.cwd + ": " + std::strerror(errno);
+  }
+  JobStreams(const JobStreams&) = delete;
+  JobStreams& operator=(const JobStreams&) = delete;
+  ~JobStreams() {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    for (int fd = 0; fd < 3; ++fd)
+      if (saved_[fd] >= 0) {
+        ::dup2(saved_[fd], fd);
+        ::close(saved_[fd]);
+      }
+    __fpurge(stdin);
+    std::clearerr(stdin);
+    if (!cwd_.empty() && ::chdir(cwd_.c_str()) != 0) std::fprintf(stderr, "rb test: cannot go back to %s\n", cwd_.c_str());
+  }
+  std::string error;
+
+ private:
+  const std::string devNull_ = "/dev/null";
+  int saved_[3] = {-1, -1, -1};
+  std::string cwd_;
+};
+
+}  // namespace
+
+void addTestJobCommand(CLI::App& app, int& exitCode, bool withOptions) {
+  addJobCommand(app, exitCode, withOptions, false);
+}
+
+grade::JobOutcome runJobInProcess(const grade::Job& job) {
+  grade::JobOutcome outcome;
+  auto start = std::chrono::steady_clock::now();
+  // argv: rb itself, the job's subcommand and its options, parsed as `rb test-job` parses them.
+  std::vector<std::string> args(job.argv.rbegin(), job.argv.rend() - 1);
+  if (std::find(args.begin(), args.end(), "--allow-spawn") != args.end()) {
+    // rb's own rules stop a program's own file access at its folder; what it starts, only the
+    // kernel's rules confine.
+    outcome.error = "rb test --in-process runs no program that may start others (spawn = true): "
+                    "only the kernel's confinement holds what they start";
+    return outcome;
+  }
+  int code = 0;
+  {
+    JobStreams streams(job);
+    if (!streams.error.empty()) {
+      outcome.error = streams.error;
+      return outcome;
+    }
+    try {
+      CLI::App app("rb");
+      addJobCommand(app, code, true, true);
+      app.parse(args);
+      outcome.kind = grade::JobOutcome::Exited;
+      outcome.code = code;
+    } catch (const CLI::ParseError& e) {
+      outcome.error = std::string("rb test-job: ") + e.what();
+    } catch (const std::exception& e) {
+      outcome.error = std::string("rb failed: ") + e.what();
+    }
+  }
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
 }
 
 }  // namespace rb::cli

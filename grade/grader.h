@@ -51,6 +51,11 @@ struct GradeOptions {
   bool requireSandbox = false;
   /// How to start a child that runs one program: rb itself and the hidden subcommand.
   std::vector<std::string> childCommand;
+  /// Set: each job runs through it, one at a time, in the grading process itself, with the job's
+  /// files as a child would have them (rb test --in-process, the browser's way: a page has no
+  /// processes). Only rb's own rules confine such runs (run/sandbox.h), not the kernel's; the
+  /// report's confinement says so. Unset: each job runs in a child process (pool.h).
+  std::function<JobOutcome(const Job& job)> runJob;
   /// Called as each program is graded (in the order they finish).
   std::function<void(size_t done, size_t total)> progress;
 };

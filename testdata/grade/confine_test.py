@@ -338,6 +338,24 @@ def case_spawn_confined(env):
     expect(not os.path.exists(os.path.join(teacher, "planted.txt")), "a file was planted in the teacher's folder")
 
 
+# rb test --in-process (the web page's way: no child processes) has rb's own rules alone, which
+# cannot confine what a program starts: a program that may start others (spawn = true) is not
+# run, and nothing it would have started reaches the teacher's folder or rb test's own output.
+def case_in_process_spawn(env):
+    teacher = env.teacher()
+    os.makedirs(env.path("class"))
+    env.write("class/spy.bas",
+              f'print "write: " + Spawn("echo x > {teacher}/planted.txt", 0)\n'
+              'print "out: " + Spawn("for fd in 1 2 3 4 5 6 7 8 9; do echo INJECTED >&$fd; done", 0)\n')
+    a = assignment(env, '[run]\nspawn = true\n[[check]]\nkind = "no-error"\n')
+    r = subprocess.run([env.rb, "test", "--in-process", "--format", "json", "-a", a, env.path("class")],
+                       capture_output=True, text=True, timeout=60)
+    p = programs(json.loads(r.stdout))["spy.bas"]
+    expect(p["result"] == "error" and "spawn = true" in p["reason"], "a program that may start others is not run", p)
+    expect(not os.path.exists(os.path.join(teacher, "planted.txt")), "a file was planted in the teacher's folder")
+    expect("INJECTED" not in r.stdout + r.stderr, "a started program wrote to rb test's output", r.stdout, r.stderr)
+
+
 def landlock():
     """The kernel's Landlock ABI version, 0 without it (landlock_create_ruleset's version query)."""
     import ctypes

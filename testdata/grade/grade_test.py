@@ -1122,6 +1122,88 @@ def case_merge_roster(env):
         expect(("detour.bas", "zz_copy.bas") not in found, f"{s} found the pair across shards", found)
 
 
+CHALLENGES = os.path.join(HERE, "..", "..", "web", "challenges")
+
+
+def grade_both(env, assignment, folder, *args):
+    """The same class graded by rb test --format json with a child per run and --in-process (the
+    web page's way): both documents, without their times."""
+    docs = []
+    for extra in ([], ["--in-process"]):
+        r = env.rb_run("test", "--format", "json", "-a", assignment, *extra, *args, folder)
+        try:
+            doc = strip_times(json.loads(r.stdout))
+        except json.JSONDecodeError:
+            raise Failure(f"rb test {' '.join(extra)} printed no JSON (exit {r.returncode})\n{r.stdout}\n{r.stderr}")
+        # Where a run stopped by the time limit got depends on the machine's speed, in any two
+        # gradings alike (and a post program after it races the deadline's alarm): of such a
+        # program, the verdict, its reason and which checks there are.
+        timed = re.compile(r"after [0-9]+ steps, the time limit")
+        for n, p in enumerate(doc["programs"]):
+            if timed.search(p["reason"]):
+                doc["programs"][n] = {"program": p["program"], "result": p["result"],
+                                      "reason": timed.sub("after N steps, the time limit", p["reason"]),
+                                      "checks": [c["name"] for c in p["checks"]]}
+        docs.append(doc)
+    return docs
+
+
+def same_grading(env, assignment, folder, student=True):
+    """Child processes and --in-process grade alike: the teacher's report but for what confined
+    the runs (the kernel, or rb's own rules in its own process), and (`student`) the students'
+    report whole."""
+    child, inproc = grade_both(env, assignment, folder)
+    expect("rb's own process" in inproc.get("confinement", ""), "--in-process says how it was confined",
+           inproc.get("confinement"))
+    child.pop("confinement", None)
+    inproc.pop("confinement")
+    expect(child == inproc, f"{folder}: --in-process grades differently",
+           json.dumps(child, indent=1), json.dumps(inproc, indent=1))
+    if student:
+        child, inproc = grade_both(env, assignment, folder, "--student")
+        expect(child == inproc, f"{folder}: --in-process --student grades differently",
+               json.dumps(child, indent=1), json.dumps(inproc, indent=1))
+    return {os.path.basename(p["program"]): p for p in child["programs"]}
+
+
+def case_in_process(env):
+    # Pass, fail, a crash, the step limit, a program that does not compile (the square), the
+    # time limit and input (the yard), a world program and a hidden post check (the maze).
+    programs = same_grading(env, ASSIGNMENT, CLASS)
+    expect(programs["looping.bas"]["steps"] == 100000, "the step limit", programs["looping.bas"])
+    for folder in ("yard", "maze"):
+        same_grading(env, os.path.join(HERE, folder, "assignment.toml"), os.path.join(HERE, folder, "class"), student=False)
+    # A student's program that includes the solution from the folder above its own is refused.
+    os.makedirs(env.path("escape/class"))
+    shutil.copy(os.path.join(SQUARE, "solution.bas"), env.path("escape/solution.bas"))
+    shutil.copy(ASSIGNMENT, env.path("escape/assignment.toml"))
+    env.write("escape/class/cheat.bas", '#include "../solution.bas"\n')
+    programs = same_grading(env, env.path("escape/assignment.toml"), env.path("escape/class"))
+    cheat = programs["cheat.bas"]
+    expect(cheat["result"] == "fail" and "../solution.bas' not found" in cheat["reason"] and cheat["points"] == 0,
+           "the include of ../solution.bas is refused", cheat)
+    # --in-process is rb's own confinement alone: never with --require-sandbox.
+    r = env.rb_run("test", "--in-process", "--require-sandbox", "-a", ASSIGNMENT, CLASS)
+    expect(r.returncode == 64 and "--in-process" in r.stderr, f"exit {r.returncode}", r.stderr)
+
+
+def case_challenges(env):
+    # Each challenge the web page ships: its solution passes with every point, the program the
+    # page starts the student with fails, and --in-process grades both alike.
+    names = sorted(os.listdir(CHALLENGES))
+    expect(len(names) >= 3, "at least three challenges", names)
+    for name in names:
+        folder = os.path.join(CHALLENGES, name)
+        klass = env.path(name)
+        os.makedirs(klass)
+        shutil.copy(os.path.join(folder, "solution.bas"), os.path.join(klass, "ok.bas"))
+        shutil.copy(os.path.join(folder, "start.bas"), os.path.join(klass, "start.bas"))
+        programs = same_grading(env, os.path.join(folder, "assignment.toml"), klass)
+        ok, start = programs["ok.bas"], programs["start.bas"]
+        expect(ok["result"] == "pass" and ok["points"] == ok["max_points"], f"{name}: the solution passes", ok)
+        expect(start["result"] == "fail" and start["points"] < start["max_points"], f"{name}: the start fails", start)
+
+
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 
