@@ -1170,7 +1170,7 @@ def case_in_process(env):
     # Pass, fail, a crash, the step limit, a program that does not compile (the square), the
     # time limit and input (the yard), a world program and a hidden post check (the maze).
     programs = same_grading(env, ASSIGNMENT, CLASS)
-    expect(programs["looping.bas"]["steps"] == 100000, "the step limit", programs["looping.bas"])
+    expect(programs["looping.bas"]["steps"] == 25000, "the step limit", programs["looping.bas"])
     for folder in ("yard", "maze"):
         same_grading(env, os.path.join(HERE, folder, "assignment.toml"), os.path.join(HERE, folder, "class"), student=False)
     # A student's program that includes the solution from the folder above its own is refused.
