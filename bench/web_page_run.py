@@ -27,7 +27,7 @@ from web_page import HERE, RB, SITE
 
 sys.path.insert(0, os.path.join(HERE, "..", "testdata", "web"))
 sys.path.insert(0, os.path.join(HERE, "..", "testdata", "render"))
-from page_test import Env  # noqa: E402
+from page_test import TICKER_JS, Env  # noqa: E402
 from replay_browser import find_chromium  # noqa: E402
 
 PROGRAMS = {
@@ -36,36 +36,10 @@ PROGRAMS = {
     "30,000 prints": "for i = 1 to 30000\n  print i\nnext\n",
 }
 
-RUN_JS = """
-(async () => {
-  rbPage.setSource(%(source)s);
-  const lates = [];
-  let on = true;
-  const ticker = (async () => {
-    while (on) {
-      const t = performance.now();
-      await new Promise((r) => setTimeout(r, 50));
-      lates.push(performance.now() - t - 50);
-    }
-  })();
-  const t = performance.now();
-  const done = rbPage.runProgram();
-  let stop = null;
-  if (%(stopAfter)s > 0) {
-    await new Promise((r) => setTimeout(r, %(stopAfter)s));
-    const s = performance.now();
-    rbPage.stopProgram();
-    await done;
-    stop = performance.now() - s;
-  }
-  await done;
-  const seconds = (performance.now() - t) / 1000;
-  on = false;
-  await ticker;
-  return {seconds, stop, late: Math.max(0, ...lates), status: rbLastRun.status,
-          output: rbLastRun.output.length};
-})()
-"""
+def run(b, source, stop_after=0):
+    """The page's Run of `source` with TICKER_JS (stopped after `stop_after` seconds when > 0)."""
+    b.js(f"rbPage.setSource({json.dumps(source)}); true")
+    return b.js(TICKER_JS % {"seconds": stop_after}, timeout=600)
 
 
 def main():
@@ -98,7 +72,7 @@ def main():
             env.open()
             b.js("document.getElementById('speed').value = '10'; "
                  "document.getElementById('speed').dispatchEvent(new Event('input')); true")
-            b.js(RUN_JS % {"source": json.dumps(square), "stopAfter": 0})
+            run(b, square)
             firsts.append(time.monotonic() - t)
         print(f"Chromium: {b.js('navigator.userAgent')}")
         print(f"live mode: {b.js('rb.liveMode')}; open the page to the end of a first run of the square: "
@@ -113,16 +87,16 @@ def main():
                 t = time.monotonic()
                 subprocess.run([a.rb, "run", "--seed", "1", path], stdout=subprocess.DEVNULL, check=True)
                 native.append(time.monotonic() - t)
-                r = b.js(RUN_JS % {"source": json.dumps(source), "stopAfter": 0}, timeout=600)
+                r = run(b, source)
                 if r["status"] != "finished":
                     raise SystemExit(f"{name}: the page's run ended {r['status']}")
                 page.append(r["seconds"])
-                late.append(r["late"])
+                late.append(r["worst"])
             for _ in range(a.n):
-                stop_after = max(20, int(statistics.median(page) * 1000 / 5))
-                r = b.js(RUN_JS % {"source": json.dumps(source), "stopAfter": stop_after}, timeout=600)
+                stop_after = max(0.02, statistics.median(page) / 5)
+                r = run(b, source, stop_after)
                 stops.append(r["stop"])
-                late.append(r["late"])
+                late.append(r["worst"])
             n, p = statistics.median(native), statistics.median(page)
             print(f"{name:18} {n:8.3f} {p:8.3f}   {p / n:8.2f}      {max(late):8.0f}      {statistics.median(stops):5.0f}"
                   f" (max {max(stops):.0f})")
