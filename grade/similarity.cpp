@@ -450,59 +450,13 @@ class QuickScan {
           p = q + 1;
           continue;
         }
-        case '(': one(Tok::LParen); continue;
-        case ')': one(Tok::RParen); continue;
-        case '[': one(Tok::LBracket); continue;
-        case ']': one(Tok::RBracket); continue;
-        case ',': one(Tok::Comma); continue;
-        case ';': one(Tok::Semicolon); continue;
-        case ':': one(Tok::Colon); continue;
-        case '#': one(Tok::Hash); continue;
-        case '%': one(Tok::Percent); continue;
-        case '^': one(Tok::Caret); continue;
-        case '~': one(Tok::Tilde); continue;
-        case '+':
-          if (next(1) == '+') two(Tok::PlusPlus);
-          else if (next(1) == '=') two(Tok::PlusAssign);
-          else one(Tok::Plus);
-          continue;
-        case '-':
-          if (next(1) == '-') two(Tok::MinusMinus);
-          else if (next(1) == '=') two(Tok::MinusAssign);
-          else one(Tok::Minus);
-          continue;
-        case '*':
-          if (next(1) == '=') two(Tok::StarAssign);
-          else one(Tok::Star);
-          continue;
-        case '&':
-          if (next(1) == '&') two(Tok::AndAnd);
-          else one(Tok::Amp);
-          continue;
-        case '|':
-          if (next(1) == '|') two(Tok::OrOr);
-          else one(Tok::Pipe);
-          continue;
-        case '!':
-          if (next(1) == '=') two(Tok::NotEq);
-          else one(Tok::Bang);
-          continue;
-        case '=':
-          if (next(1) == '=') two(Tok::EqEq);
-          else one(Tok::Assign);
-          continue;
-        case '<':
-          if (next(1) == '>') two(Tok::NotEq);
-          else if (next(1) == '=') two(Tok::LessEq);
-          else if (next(1) == '<') two(Tok::Shl);
-          else one(Tok::Less);
-          continue;
-        case '>':
-          if (next(1) == '=') two(Tok::GreaterEq);
-          else if (next(1) == '>') two(Tok::Shr);
-          else one(Tok::Greater);
-          continue;
-        default: break;
+        default:
+          if (const OperatorToken t = operatorAt(c, next(1)); t.length != 0) {
+            if (t.length == 2) two(t.kind);
+            else one(t.kind);
+            continue;
+          }
+          break;
       }
       if (digit(c) || (c == '.' && digit(next(1)))) {
         if (c == '0') {

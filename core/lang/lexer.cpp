@@ -258,67 +258,11 @@ class Lexer {
     push(out, kind, start, word.size());
   }
   bool op(std::vector<Token>& out) {
-    char c = text_[pos_];
-    char n = peek(1);
-    auto two = [&](Tok k) {
-      push(out, k, pos_, 2);
-      pos_ += 2;
-      return true;
-    };
-    auto one = [&](Tok k) {
-      push(out, k, pos_, 1);
-      pos_ += 1;
-      return true;
-    };
-    switch (c) {
-      case '(': return one(Tok::LParen);
-      case ')': return one(Tok::RParen);
-      case '[': return one(Tok::LBracket);
-      case ']': return one(Tok::RBracket);
-      case ',': return one(Tok::Comma);
-      case ';': return one(Tok::Semicolon);
-      case ':': return one(Tok::Colon);
-      case '#': return one(Tok::Hash);
-      case '+':
-        if (n == '+') return two(Tok::PlusPlus);
-        if (n == '=') return two(Tok::PlusAssign);
-        return one(Tok::Plus);
-      case '-':
-        if (n == '-') return two(Tok::MinusMinus);
-        if (n == '=') return two(Tok::MinusAssign);
-        return one(Tok::Minus);
-      case '*':
-        if (n == '=') return two(Tok::StarAssign);
-        return one(Tok::Star);
-      case '/':
-        if (n == '=') return two(Tok::SlashAssign);
-        return one(Tok::Slash);
-      case '%': return one(Tok::Percent);
-      case '^': return one(Tok::Caret);
-      case '~': return one(Tok::Tilde);
-      case '&':
-        if (n == '&') return two(Tok::AndAnd);
-        return one(Tok::Amp);
-      case '|':
-        if (n == '|') return two(Tok::OrOr);
-        return one(Tok::Pipe);
-      case '!':
-        if (n == '=') return two(Tok::NotEq);
-        return one(Tok::Bang);
-      case '=':
-        if (n == '=') return two(Tok::EqEq);
-        return one(Tok::Assign);
-      case '<':
-        if (n == '>') return two(Tok::NotEq);
-        if (n == '=') return two(Tok::LessEq);
-        if (n == '<') return two(Tok::Shl);
-        return one(Tok::Less);
-      case '>':
-        if (n == '=') return two(Tok::GreaterEq);
-        if (n == '>') return two(Tok::Shr);
-        return one(Tok::Greater);
-      default: return false;
-    }
+    const OperatorToken t = operatorAt(text_[pos_], peek(1));
+    if (t.length == 0) return false;
+    push(out, t.kind, pos_, static_cast<size_t>(t.length));
+    pos_ += static_cast<size_t>(t.length);
+    return true;
   }
 
   std::string_view text_;  // a view, so that writing pos_ never makes the compiler read it again
