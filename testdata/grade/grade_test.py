@@ -1137,12 +1137,14 @@ def grade_both(env, assignment, folder, *args):
             raise Failure(f"rb test {' '.join(extra)} printed no JSON (exit {r.returncode})\n{r.stdout}\n{r.stderr}")
         # Where a run stopped by the time limit got depends on the machine's speed, in any two
         # gradings alike (and a post program after it races the deadline's alarm): of such a
-        # program, the verdict, its reason and which checks there are.
+        # program, the verdict, its reason (but the statement and the step it stopped at) and
+        # which checks there are.
         timed = re.compile(r"after [0-9]+ steps, the time limit")
         for n, p in enumerate(doc["programs"]):
             if timed.search(p["reason"]):
-                doc["programs"][n] = {"program": p["program"], "result": p["result"],
-                                      "reason": timed.sub("after N steps, the time limit", p["reason"]),
+                reason = timed.sub("after N steps, the time limit", p["reason"])
+                reason = re.sub(r"stopped at (\S+):[0-9]+:[0-9]+ ", r"stopped at \1:L:C ", reason)
+                doc["programs"][n] = {"program": p["program"], "result": p["result"], "reason": reason,
                                       "checks": [c["name"] for c in p["checks"]]}
         docs.append(doc)
     return docs
